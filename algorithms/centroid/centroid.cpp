@@ -1,0 +1,70 @@
+#include "algorithms/centroid/centroid.h"
+
+#include "harness/sort/radix_sort.h"
+
+namespace vob {
+namespace {
+
+class CentroidOrderer final : public Orderer {
+ public:
+  explicit CentroidOrderer(bool view_key) : view_key_(view_key) {}
+  std::string name() const override { return "centroid"; }
+  SceneKind scene_kind() const override { return SceneKind::Cells; }
+  Claims claims() const override { return {}; }
+  nlohmann::json parameters() const override { return {{"key", view_key_ ? "view" : "eye"}}; }
+
+  void prepare(const Scene& scene, PhaseClock& clock) override {
+    auto p = clock.phase("centroids");
+    centroids_ = &scene.cell_centroids().points;
+  }
+
+  Ordering order(const Camera& view, PhaseClock& clock) override {
+    const size_t n = centroids_->size();
+    {
+      auto p = clock.phase("keys");
+      keys_.resize(n);
+      ids_.resize(n);
+      const Vec3 f = view.forward();
+      const bool by_view = view_key_ || view.ortho;  // orthographic: eye distance is view depth
+      for (size_t i = 0; i < n; ++i) {
+        const Vec3 d = (*centroids_)[i] - view.eye;
+        // Descending distance = ascending negated key.
+        keys_[i] = static_cast<float>(-(by_view ? dot(d, f) : length(d)));
+        ids_[i] = static_cast<int32_t>(i);
+      }
+    }
+    Ordering out;
+    {
+      auto p = clock.phase("radix sort");
+      radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
+      out.order = ids_;
+    }
+    return out;
+  }
+
+  size_t bytes() const override {
+    return keys_.capacity() * 4 + ids_.capacity() * 4 + scratch_keys_.capacity() * 4 +
+           scratch_ids_.capacity() * 4;
+  }
+
+ private:
+  bool view_key_;
+  const std::vector<Vec3>* centroids_ = nullptr;
+  std::vector<float> keys_;
+  std::vector<int32_t> ids_, scratch_ids_;
+  std::vector<uint32_t> scratch_keys_;
+};
+
+}  // namespace
+
+OrdererInfo centroid_orderer_info() {
+  return {"centroid", SceneKind::Cells,
+          "cell centroids sorted back to front with an LSD radix sort (heuristic)",
+          "key=eye|view (eye): distance to the eye, or depth along the view direction",
+          [](Params& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<CentroidOrderer>(p.get_choice("key", "eye", {"eye", "view"}) ==
+                                                     "view");
+          }};
+}
+
+}  // namespace vob

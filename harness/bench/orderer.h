@@ -1,0 +1,53 @@
+// The Orderer API: what every visibility-ordering plugin implements (DESIGN.md).
+// prepare() does the view-independent work once per scene; order() runs per frame and
+// returns a complete back-to-front permutation of the scene's primitives, even when the
+// scene has a visibility cycle (the cycle is reported in the Ordering and broken).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/bench/phase_clock.h"
+#include "harness/scene/scene.h"
+#include "harness/view/camera.h"
+
+namespace vob {
+
+struct Claims {
+  bool object_exact = false;  // exact for every ray (any resolution)
+  bool image_exact = false;   // exact at the pixel centres of the view it was given
+  bool heuristic() const { return !object_exact && !image_exact; }
+};
+
+struct CycleReport {
+  int64_t cycles = 0;                 // back edges met (each one broken)
+  std::vector<int32_t> primitives;    // primitives involved (capped at kMaxReported)
+  static constexpr size_t kMaxReported = 1000;
+  void add(const std::vector<int32_t>& cycle_members);
+};
+
+struct Ordering {
+  std::vector<int32_t> order;             // back-to-front primitive ids (voxels: voxel ids)
+  CycleReport cycles;
+  std::map<std::string, double> counters;  // plugin-specific counts (arrows, exact calls, ...)
+  std::vector<int32_t> layers;            // optional: a layer per primitive (stencil)
+  nlohmann::json extras;                  // optional plugin output
+};
+
+class Orderer {
+ public:
+  virtual ~Orderer() = default;
+  virtual std::string name() const = 0;     // registry name
+  virtual SceneKind scene_kind() const = 0;
+  virtual Claims claims() const = 0;
+  virtual nlohmann::json parameters() const { return nlohmann::json::object(); }
+  virtual void prepare(const Scene& scene, PhaseClock& clock) = 0;
+  virtual Ordering order(const Camera& view, PhaseClock& clock) = 0;
+  virtual size_t bytes() const = 0;         // memory the plugin holds after prepare/order
+};
+
+}  // namespace vob

@@ -1,0 +1,32 @@
+// The one file that includes plugin headers. Add a plugin: include its header, add a line.
+#include "harness/bench/registry.h"
+
+#include "algorithms/centroid/centroid.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+const std::vector<OrdererInfo>& orderer_registry() {
+  static const std::vector<OrdererInfo> registry = {
+      centroid_orderer_info(),
+  };
+  return registry;
+}
+
+const OrdererInfo& find_orderer(const std::string& name) {
+  for (const auto& info : orderer_registry())
+    if (info.name == name) return info;
+  std::string all;
+  for (const auto& info : orderer_registry()) all += (all.empty() ? "" : ", ") + info.name;
+  throw InputError("--algorithm", name, "unknown orderer (known: " + all + ")");
+}
+
+std::unique_ptr<Orderer> make_orderer(const std::string& spec) {
+  auto [name, params] = Params::parse_spec(spec);
+  const OrdererInfo& info = find_orderer(name);
+  auto orderer = info.make(params);
+  params.check_all_used();
+  return orderer;
+}
+
+}  // namespace vob

@@ -1,0 +1,38 @@
+// A minimal emission-absorption compositor: renders a scene in a given back-to-front order
+// and in the exact per-pixel order, and measures what ordering errors do to the image.
+#pragma once
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/scene/scene.h"
+#include "harness/view/camera.h"
+
+namespace vob {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // row 0 at the bottom (window convention), 3 floats per pixel in [0,1]
+};
+
+struct ImageError {
+  double rmse = 0, max_error = 0;
+  int64_t pixels_off = 0;  // pixels with some channel off by more than 1/255
+  nlohmann::json to_json() const;  // keys: rmse, max_error, pixels_off
+};
+
+struct RenderOptions {
+  double splat_radius_px = 0;  // voxels; 0 = projected voxel size
+};
+
+Image render_in_order(const Scene& scene, const Camera& view, const std::vector<int32_t>& order,
+                      const RenderOptions& opt = {});
+Image render_exact(const Scene& scene, const Camera& view, const RenderOptions& opt = {});
+ImageError image_error(const Image& a, const Image& b);
+// White where a and b differ by more than 1/255, the exact image dimmed elsewhere.
+Image difference_image(const Image& test, const Image& exact);
+// PNG through VTK's writer; written atomically (temporary file, then rename).
+void write_png(const Image& img, const std::string& path);
+
+}  // namespace vob

@@ -1,0 +1,69 @@
+#include "harness/sort/radix_sort.h"
+
+#include <algorithm>
+
+namespace vob {
+
+void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
+                       std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values) {
+  const size_t n = keys.size();
+  std::vector<uint32_t> k(n);
+  for (size_t i = 0; i < n; ++i) k[i] = float_sort_key(keys[i]);
+  scratch_keys.resize(n);
+  scratch_values.resize(n);
+  // One counting pass for all four digit histograms.
+  uint32_t hist[4][256] = {};
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t x = k[i];
+    ++hist[0][x & 0xff];
+    ++hist[1][(x >> 8) & 0xff];
+    ++hist[2][(x >> 16) & 0xff];
+    ++hist[3][x >> 24];
+  }
+  uint32_t* src_k = k.data();
+  uint32_t* dst_k = scratch_keys.data();
+  int32_t* src_v = values.data();
+  int32_t* dst_v = scratch_values.data();
+  bool in_values = true;
+  for (int pass = 0; pass < 4; ++pass) {
+    uint32_t* h = hist[pass];
+    if (n == 0 || h[(src_k[0] >> (8 * pass)) & 0xff] == n) continue;  // digit constant
+    uint32_t sum = 0;
+    for (int d = 0; d < 256; ++d) {
+      const uint32_t c = h[d];
+      h[d] = sum;
+      sum += c;
+    }
+    const int shift = 8 * pass;
+    for (size_t i = 0; i < n; ++i) {
+      const uint32_t pos = h[(src_k[i] >> shift) & 0xff]++;
+      dst_k[pos] = src_k[i];
+      dst_v[pos] = src_v[i];
+    }
+    std::swap(src_k, dst_k);
+    std::swap(src_v, dst_v);
+    in_values = !in_values;
+  }
+  if (!in_values) std::copy(src_v, src_v + n, values.data());
+  // Keys back to floats in sorted order (inverse transform).
+  for (size_t i = 0; i < n; ++i) {
+    uint32_t u = src_k[i];
+    u = (u & 0x80000000u) ? (u & 0x7fffffffu) : ~u;
+    std::memcpy(&keys[i], &u, 4);
+  }
+}
+
+std::vector<int32_t> radix_argsort_descending(const std::vector<float>& keys) {
+  std::vector<float> k(keys.size());
+  std::vector<int32_t> v(keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) {
+    k[i] = -keys[i];
+    v[i] = static_cast<int32_t>(i);
+  }
+  std::vector<uint32_t> sk;
+  std::vector<int32_t> sv;
+  radix_sort_by_key(k, v, sk, sv);
+  return v;
+}
+
+}  // namespace vob

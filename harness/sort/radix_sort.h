@@ -1,0 +1,26 @@
+// LSD radix sort of (float key, int32 value) pairs: four 8-bit passes over the
+// order-preserving transform of the float bits (sign bit flipped for positives, all bits for
+// negatives), all four histograms counted in one pass, passes whose digit is constant
+// skipped. Shared by the centroid sort, HAVS and the voxel distance sort.
+#pragma once
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace vob {
+
+inline uint32_t float_sort_key(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, 4);
+  return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+
+// Sorts `values` by ascending `keys` (stable). Both vectors are permuted in place;
+// `scratch_keys` / `scratch_values` are reused buffers (resized as needed).
+void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
+                       std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values);
+
+// Convenience: the permutation of [0, keys.size()) sorted by descending key.
+std::vector<int32_t> radix_argsort_descending(const std::vector<float>& keys);
+
+}  // namespace vob
