@@ -6,6 +6,7 @@
 
 #include "harness/bench/params.h"
 #include "harness/scene/scene.h"
+#include "harness/view/camera.h"
 
 namespace vob {
 
@@ -16,12 +17,16 @@ struct DatasetInfo {
   std::string parameters;  // "nx=50 ny=50 nz=100 gaps=0: ..." ; empty if none
   bool hard_case = false;  // part of the hard-case suite
   std::function<Scene(Params&)> make;
+  // Hard cases that are about a view (eye in a face plane, eye inside the mesh, faces
+  // edge-on in an orthographic view) give their own cameras; null: use the view set.
+  std::function<std::vector<Camera>(const Scene&, int width, int height)> views;
 };
 
 const std::vector<DatasetInfo>& dataset_registry();
 // Generates dataset `name` with `params` (every key must be known, values in range), then
 // validates it. Deterministic for its parameters. InputError on anything bad.
 Scene make_dataset(const std::string& name, Params params);
+const DatasetInfo& find_dataset(const std::string& name);  // InputError if unknown
 
 struct InputOptions {
   bool tetrahedralize = false;  // .off: mesh the closed surface with TetGen (else triangles)
@@ -29,5 +34,9 @@ struct InputOptions {
 };
 // Reads .vtu/.vtk/.vti (VTK), .node (+ .ele beside it; TetGen), .inr, .off. Validates.
 Scene load_input(const std::string& path, const InputOptions& opt = {});
+
+// Writes a scene: cells to .vtu or .vtk, triangles to .off, voxels to .vti; atomically
+// (temporary file, then rename). InputError for an extension that does not fit the kind.
+void write_scene(const Scene& scene, const std::string& path);
 
 }  // namespace vob
