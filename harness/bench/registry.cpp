@@ -2,6 +2,8 @@
 #include "harness/bench/registry.h"
 
 #include "algorithms/centroid/centroid.h"
+#include "algorithms/centroid/vtk_centroid.h"
+#include "algorithms/mpvo/mpvo.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -9,6 +11,9 @@ namespace vob {
 const std::vector<OrdererInfo>& orderer_registry() {
   static const std::vector<OrdererInfo> registry = {
       centroid_orderer_info(),
+      vtk_centroid_orderer_info(),
+      mpvo_orderer_info(),
+      mpvonc_orderer_info(),
   };
   return registry;
 }

@@ -1,0 +1,135 @@
+#include "algorithms/mpvo/mpvo.h"
+
+#include "algorithms/mpvo/mpvo_core.h"
+#include "harness/sort/radix_sort.h"
+
+namespace vob {
+namespace {
+
+Claims mpvo_claims() {
+  Claims c;
+  c.reports_cycles = true;
+  return c;
+}
+
+class MpvoOrderer final : public Orderer {
+ public:
+  std::string name() const override { return "mpvo"; }
+  SceneKind scene_kind() const override { return SceneKind::Cells; }
+  Claims claims() const override { return mpvo_claims(); }
+
+  void prepare(const Scene& scene, PhaseClock& clock) override {
+    { auto p = clock.phase("unique faces"); scene.faces(); }
+    { auto p = clock.phase("face planes"); scene.face_planes(); }
+    core_.bind(scene);
+  }
+
+  Ordering order(const Camera& view, PhaseClock& clock) override {
+    Ordering out;
+    {
+      auto p = clock.phase("I create partial order");
+      core_.create_partial_order(view);
+    }
+    {
+      auto p = clock.phase("II DFS");
+      core_.begin_dfs(out);
+      core_.dfs_sinks(out);
+      core_.dfs_unvisited(out);
+    }
+    core_.add_counters(out);
+    return out;
+  }
+
+  size_t bytes() const override { return core_.bytes(); }
+
+ private:
+  mpvo::MpvoCore core_;
+};
+
+class MpvoncOrderer final : public Orderer {
+ public:
+  std::string name() const override { return "mpvonc"; }
+  SceneKind scene_kind() const override { return SceneKind::Cells; }
+  Claims claims() const override { return mpvo_claims(); }
+
+  void prepare(const Scene& scene, PhaseClock& clock) override {
+    { auto p = clock.phase("unique faces"); scene.faces(); }
+    { auto p = clock.phase("face planes"); scene.face_planes(); }
+    { auto p = clock.phase("cell centroids"); centroids_ = &scene.cell_centroids().points; }
+    core_.bind(scene);
+    marked_.assign(scene.mesh().num_cells(), 0);
+  }
+
+  Ordering order(const Camera& view, PhaseClock& clock) override {
+    Ordering out;
+    {
+      auto p = clock.phase("I create partial order");
+      core_.create_partial_order(view);
+    }
+    {
+      auto p = clock.phase("II sort exterior cells");
+      sort_exterior_cells(view);
+    }
+    {
+      auto p = clock.phase("III DFS");
+      core_.begin_dfs(out);
+      for (int32_t c : ids_) core_.dfs_from(c, out);
+      core_.dfs_sinks(out);
+      core_.dfs_unvisited(out);
+    }
+    core_.add_counters(out);
+    out.counters["exterior_cells"] = static_cast<double>(ids_.size());
+    return out;
+  }
+
+  size_t bytes() const override {
+    return core_.bytes() + marked_.capacity() + (keys_.capacity() + ids_.capacity() +
+                                                 scratch_keys_.capacity() +
+                                                 scratch_ids_.capacity()) * 4;
+  }
+
+ private:
+  // Cells owning a front-facing boundary face, farthest centroid first.
+  void sort_exterior_cells(const Camera& view) {
+    const MeshFaces& faces = core_.faces();
+    const Vec3 eye = view.eye, dir = view.forward();
+    keys_.clear();
+    ids_.clear();
+    for (int32_t f : faces.boundary) {
+      if (!core_.front_facing_boundary(f)) continue;
+      const int32_t c = faces.cell0[f];
+      if (marked_[c]) continue;  // a cell may own several front-facing faces
+      marked_[c] = 1;
+      const Vec3 d = (*centroids_)[c] - eye;
+      const double depth = view.ortho ? dot(d, dir) : length(d);
+      keys_.push_back(static_cast<float>(-depth));  // ascending key = decreasing depth
+      ids_.push_back(c);
+    }
+    for (int32_t c : ids_) marked_[c] = 0;
+    radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
+  }
+
+  mpvo::MpvoCore core_;
+  const std::vector<Vec3>* centroids_ = nullptr;
+  std::vector<uint8_t> marked_;
+  std::vector<float> keys_;
+  std::vector<int32_t> ids_, scratch_ids_;
+  std::vector<uint32_t> scratch_keys_;
+};
+
+}  // namespace
+
+OrdererInfo mpvo_orderer_info() {
+  return {"mpvo", SceneKind::Cells,
+          "Williams' MPVO: face arrows and a DFS from the sink cells (exact on convex meshes)",
+          "", [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoOrderer>(); }};
+}
+
+OrdererInfo mpvonc_orderer_info() {
+  return {"mpvonc", SceneKind::Cells,
+          "Williams' MPVONC: MPVO with a DFS first from exterior cells by decreasing centroid "
+          "distance (heuristic)",
+          "", [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoncOrderer>(); }};
+}
+
+}  // namespace vob

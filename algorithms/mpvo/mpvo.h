@@ -1,0 +1,27 @@
+// Plugins `mpvo` and `mpvonc`: Williams' Meshed Polyhedra Visibility Ordering and its
+// nonconvex heuristic (Cook et al., SXMPVO paper, sections 3.2 and 3.3), on MpvoCore.
+//
+// mpvo      no parameters.
+//           Phases "I create partial order" (face arrows, sink cells), "II DFS" (from
+//           each sink cell in cell-id order, then from cells left unvisited by cycles).
+//           Exact on convex, acyclic meshes. Across the gaps of a nonconvex or disconnected
+//           mesh it knows no relation, so its error there is what the oracle measures.
+// mpvonc    no parameters.
+//           Phases "I create partial order", "II sort exterior cells" (cells owning a
+//           front-facing boundary face, by decreasing centroid depth: distance to the eye,
+//           or depth along the view direction for orthographic views; LSD radix sort),
+//           "III DFS" (from those cells in that order, then the remaining sinks, then
+//           cells left unvisited by cycles). A heuristic on nonconvex meshes.
+//
+// Both claim nothing (Claims{} = heuristic): a claim holds for every scene and most
+// scenes are not convex. Both report and break visibility cycles (reports_cycles).
+// Counters: exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots
+// (DFS roots needed after the sinks: cells whose front paths all end in cycles), and for
+// mpvonc exterior_cells.
+#pragma once
+#include "harness/bench/registry.h"
+
+namespace vob {
+OrdererInfo mpvo_orderer_info();
+OrdererInfo mpvonc_orderer_info();
+}  // namespace vob

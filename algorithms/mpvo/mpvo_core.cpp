@@ -1,0 +1,221 @@
+#include "algorithms/mpvo/mpvo_core.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "harness/geometry/predicates.h"
+
+namespace vob::mpvo {
+
+void ExtraRelations::build_from_pairs(size_t cells,
+                                      const std::vector<std::pair<int32_t, int32_t>>& pairs) {
+  offsets.assign(cells + 1, 0);
+  not_sink.assign(cells, 0);
+  for (const auto& [front, behind_cell] : pairs) {
+    if (front < 0 || static_cast<size_t>(front) >= cells || behind_cell < 0 ||
+        static_cast<size_t>(behind_cell) >= cells)
+      throw std::out_of_range("ExtraRelations: cell id out of range");
+    ++offsets[front + 1];
+    not_sink[behind_cell] = 1;
+  }
+  for (size_t c = 0; c < cells; ++c) offsets[c + 1] += offsets[c];
+  behind.resize(pairs.size());
+  std::vector<int32_t> fill(offsets.begin(), offsets.end() - 1);
+  for (const auto& [front, behind_cell] : pairs) behind[fill[front]++] = behind_cell;
+}
+
+void ExtraRelations::clear() {
+  offsets.clear();
+  behind.clear();
+  not_sink.clear();
+}
+
+size_t ExtraRelations::bytes() const {
+  return offsets.capacity() * sizeof(int32_t) + behind.capacity() * sizeof(int32_t) +
+         not_sink.capacity();
+}
+
+void MpvoCore::bind(const Scene& scene) {
+  mesh_ = &scene.mesh();
+  faces_ = &scene.faces();
+  planes_ = &scene.face_planes();
+  const Aabb box = mesh_->bounds();
+  coord_bound_ = box.empty() ? 0.0
+                             : length(Vec3{std::max(std::fabs(box.lo.x), std::fabs(box.hi.x)),
+                                           std::max(std::fabs(box.lo.y), std::fabs(box.hi.y)),
+                                           std::max(std::fabs(box.lo.z), std::fabs(box.hi.z))});
+  sign_.assign(faces_->num_faces(), 0);
+  outbound_.assign(mesh_->num_cells(), 0);
+  state_.assign(mesh_->num_cells(), kNew);
+  stack_.clear();
+  extra_ = nullptr;
+}
+
+int MpvoCore::exact_sign(int32_t f, const Camera& view, Vec3 dir) const {
+  const int32_t* v = faces_->face_points(f);
+  const Vec3 a = mesh_->points[v[0]], b = mesh_->points[v[1]], c = mesh_->points[v[2]];
+  // Eye at infinity behind the view direction: its side is the side of -dir.
+  return view.ortho ? -orient_direction(a, b, c, dir) : orient3d(a, b, c, view.eye);
+}
+
+void MpvoCore::create_partial_order(const Camera& view) {
+  if (!faces_) throw std::logic_error("MpvoCore: create_partial_order before bind");
+  const size_t nf = faces_->num_faces();
+  std::fill(outbound_.begin(), outbound_.end(), 0);
+  exact_calls_ = double_wrong_ = arrows_ = 0;
+  const Vec3* normal = planes_->normal.data();
+  const double* offset = planes_->offset.data();
+  const int32_t* cell0 = faces_->cell0.data();
+  const int32_t* cell1 = faces_->cell1.data();
+  int8_t* sign = sign_.data();
+  uint8_t* outbound = outbound_.data();
+
+  // Perspective: s = sign(n.eye + d). Orthographic: the eye is at infinity along -dir,
+  // s = sign(-n.dir). Both: value = n.w + w0 with w, w0 fixed per view.
+  const Vec3 dir = view.forward();
+  const Vec3 w = view.ortho ? -dir : view.eye;
+  const double w0_scale = view.ortho ? 0.0 : 1.0;
+  const double k = kRelativeBound * (view.ortho ? length(dir) : length(view.eye) + coord_bound_);
+
+  for (size_t f = 0; f < nf; ++f) {
+    const Vec3 n = normal[f];
+    const double value = n.x * w.x + n.y * w.y + n.z * w.z + w0_scale * offset[f];
+    const double bound = (std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z)) * k;
+    int s;
+    if (std::fabs(value) > bound) {
+      s = value > 0 ? 1 : -1;
+    } else {
+      s = exact_sign(static_cast<int32_t>(f), view, dir);
+      ++exact_calls_;
+      const int ds = (value > 0) - (value < 0);
+      double_wrong_ += (ds != s);
+    }
+    sign[f] = static_cast<int8_t>(s);
+    const int32_t c1 = cell1[f];
+    if (c1 >= 0 && s != 0) {
+      // s > 0: eye on cell1's side, cell1 in front, the arrow leaves cell0.
+      ++outbound[s > 0 ? cell0[f] : c1];
+      ++arrows_;
+    }
+  }
+}
+
+void MpvoCore::begin_dfs(Ordering& out, const ExtraRelations* extra) {
+  if (!faces_) throw std::logic_error("MpvoCore: begin_dfs before bind");
+  const size_t n = num_cells();
+  if (extra && !extra->offsets.empty() && extra->offsets.size() != n + 1)
+    throw std::invalid_argument("ExtraRelations: offsets must have cells+1 entries");
+  if (extra && !extra->not_sink.empty() && extra->not_sink.size() != n)
+    throw std::invalid_argument("ExtraRelations: not_sink must have one entry per cell");
+  extra_ = extra;
+  std::fill(state_.begin(), state_.end(), kNew);
+  out.order.clear();
+  out.order.reserve(n);
+  sinks_ = cycle_roots_ = 0;
+}
+
+void MpvoCore::report_cycle(int32_t closing, Ordering& out) {
+  // The cycle is the stack slice from `closing` to the top. Walk it only while the report
+  // has room, so a long stack costs at most kMaxReported steps per cycle.
+  const size_t room = out.cycles.primitives.size() < CycleReport::kMaxReported
+                          ? CycleReport::kMaxReported - out.cycles.primitives.size()
+                          : 0;
+  std::vector<int32_t> members;
+  for (size_t i = stack_.size(); i-- > 0 && members.size() < room;) {
+    members.push_back(stack_[i].cell);
+    if (stack_[i].cell == closing) break;
+  }
+  std::reverse(members.begin(), members.end());
+  out.cycles.add(members);
+}
+
+bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
+  if (state_[root] != kNew) return false;
+  const int32_t* cfo = faces_->cell_face_offsets.data();
+  const int32_t* cf = faces_->cell_faces.data();
+  const int32_t* cell0 = faces_->cell0.data();
+  const int32_t* cell1 = faces_->cell1.data();
+  const int8_t* sign = sign_.data();
+  const bool has_extra = extra_ && !extra_->offsets.empty();
+  const int32_t* xoff = has_extra ? extra_->offsets.data() : nullptr;
+  const int32_t* xbehind = has_extra ? extra_->behind.data() : nullptr;
+
+  stack_.clear();
+  stack_.push_back({root, 0});
+  state_[root] = kOnStack;
+  while (!stack_.empty()) {
+    const int32_t c = stack_.back().cell;
+    int32_t next = stack_.back().next;
+    const int32_t nfaces = cfo[c + 1] - cfo[c];
+    const int32_t nslots = nfaces + (has_extra ? xoff[c + 1] - xoff[c] : 0);
+    int32_t child = -1;
+    while (next < nslots) {
+      const int32_t slot = next++;
+      int32_t nb;
+      if (slot < nfaces) {
+        const int32_t f = cf[cfo[c] + slot];
+        const int s = sign[f];
+        const int32_t c1 = cell1[f];
+        if (s == 0 || c1 < 0) continue;
+        // The neighbour is behind c when the eye is on c's side of the face.
+        if (c == cell0[f]) {
+          if (s > 0) continue;
+          nb = c1;
+        } else {
+          if (s < 0) continue;
+          nb = cell0[f];
+        }
+      } else {
+        nb = xbehind[xoff[c] + (slot - nfaces)];
+      }
+      const uint8_t st = state_[nb];
+      if (st == kNew) {
+        child = nb;
+        break;
+      }
+      if (st == kOnStack) report_cycle(nb, out);  // back edge: ignore it, keep going
+    }
+    if (child >= 0) {
+      stack_.back().next = next;
+      state_[child] = kOnStack;
+      stack_.push_back({child, 0});
+    } else {
+      out.order.push_back(c);
+      state_[c] = kDone;
+      stack_.pop_back();
+    }
+  }
+  return true;
+}
+
+void MpvoCore::dfs_sinks(Ordering& out) {
+  const int32_t n = static_cast<int32_t>(num_cells());
+  for (int32_t c = 0; c < n; ++c)
+    if (is_sink(c)) {
+      ++sinks_;
+      dfs_from(c, out);
+    }
+}
+
+void MpvoCore::dfs_unvisited(Ordering& out) {
+  const int32_t n = static_cast<int32_t>(num_cells());
+  for (int32_t c = 0; c < n; ++c)
+    if (dfs_from(c, out)) ++cycle_roots_;
+}
+
+void MpvoCore::add_counters(Ordering& out) const {
+  out.counters["exact_sign_calls"] = static_cast<double>(exact_calls_);
+  out.counters["double_sign_wrong"] = static_cast<double>(double_wrong_);
+  out.counters["arrows"] = static_cast<double>(arrows_);
+  out.counters["sink_cells"] = static_cast<double>(sinks_);
+  out.counters["cycle_roots"] = static_cast<double>(cycle_roots_);
+}
+
+size_t MpvoCore::bytes() const {
+  return sign_.capacity() + outbound_.capacity() + state_.capacity() +
+         stack_.capacity() * sizeof(Frame);
+}
+
+}  // namespace vob::mpvo

@@ -1,0 +1,124 @@
+// MpvoCore: the two phases of Williams' MPVO (Cook et al., SXMPVO paper, section 3.2) as a
+// library for the MPVO family (MPVO, MPVONC, SXMPVO, XMPVO, stencil-XMPVO).
+//
+// Phase I (create_partial_order): every face gets a sign per view, +1 when the eye is on the
+// side its plane normal points to (out of cell0: into cell1, or out of the mesh for a
+// boundary face), -1 on the other side, 0 exactly on the plane. For a shared face the sign
+// is the MPVO arrow: +1 means cell1 is in front of cell0. The double sign n.eye + d (or
+// -n.dir for orthographic views) is trusted when it clears an error bound; otherwise the
+// exact predicate decides on the face's first three vertices, which both cells share since
+// faces are stored once. Per cell the number of outbound arrows (neighbours in front) is
+// kept; cells with none are MPVO's sink cells.
+//
+// Phase II (dfs_*): iterative depth-first search against the arrows. The eligible
+// neighbours of a cell are the cells behind it: across shared faces, plus the caller's
+// ExtraRelations (SXMPVO pseudo-neighbours, XMPVO exterior-face relations). Post-order
+// output is back to front. An eligible neighbour that is still on the stack closes a
+// visibility cycle: the cycle is reported in Ordering::cycles and broken by ignoring that
+// edge. dfs_unvisited() finishes with every cell not yet output, so the result is always
+// a complete permutation.
+//
+// Typical frame:
+//   core.create_partial_order(view);                 // phase I
+//   Ordering out;
+//   core.begin_dfs(out, &extra_or_null);             // phase II (or III, IV, ...)
+//   for (int32_t c : my_start_cells) core.dfs_from(c, out);
+//   core.dfs_sinks(out);
+//   core.dfs_unvisited(out);
+//   core.add_counters(out);  // exact_sign_calls, double_sign_wrong, arrows, sink_cells, ...
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "harness/bench/orderer.h"
+#include "harness/scene/scene.h"
+#include "harness/view/camera.h"
+
+namespace vob::mpvo {
+
+// Relations beyond the face arrows, in CSR form. behind[offsets[c] .. offsets[c+1]) are
+// cells that must be drawn before c (eligible neighbours of c); not_sink[c] != 0 marks a
+// cell that has something in front of it through such a relation.
+struct ExtraRelations {
+  std::vector<int32_t> offsets;   // cells+1 entries, or empty for none
+  std::vector<int32_t> behind;
+  std::vector<uint8_t> not_sink;  // one per cell, or empty for none
+
+  // Builds the CSR and the not_sink flags from (front, behind) pairs; each pair means
+  // `behind` must be drawn before `front`. Ids must be in [0, cells).
+  void build_from_pairs(size_t cells, const std::vector<std::pair<int32_t, int32_t>>& pairs);
+  void clear();
+  size_t bytes() const;
+};
+
+class MpvoCore {
+ public:
+  // Relative error bound of the double sign test, as a fraction of the magnitudes of the
+  // summands: |n.eye + d| <= kRelativeBound * |n|_1 * (|eye| + R), R bounding every face
+  // point. It is conservative while face edges are longer than ~1e-6 of R (the Newell
+  // normal's rounding grows with R / edge length); generous otherwise.
+  static constexpr double kRelativeBound = 1e-9;
+
+  // Binds the scene's unique faces and face planes; builds them if the caller has not
+  // (callers build them first inside their own prepare phases so the time is attributed).
+  void bind(const Scene& scene);
+  size_t num_cells() const { return outbound_.size(); }
+  const MeshFaces& faces() const { return *faces_; }
+
+  // ---- Phase I ----
+  void create_partial_order(const Camera& view);
+  int face_sign(int32_t f) const { return sign_[f]; }
+  const std::vector<int8_t>& face_signs() const { return sign_; }
+  // Boundary face whose outside faces the eye.
+  bool front_facing_boundary(int32_t f) const { return faces_->cell1[f] < 0 && sign_[f] > 0; }
+  int outbound_arrows(int32_t c) const { return outbound_[c]; }
+  int64_t exact_sign_calls() const { return exact_calls_; }
+  int64_t double_sign_wrong() const { return double_wrong_; }
+  int64_t arrows() const { return arrows_; }
+
+  // ---- Phase II ----
+  // Starts a traversal writing into out.order / out.cycles. `extra` (may be null) must
+  // stay alive and unchanged until the traversal's last dfs_* call.
+  void begin_dfs(Ordering& out, const ExtraRelations* extra = nullptr);
+  // Sink: no outbound arrow and not marked not_sink by the extra relations.
+  bool is_sink(int32_t c) const {
+    return outbound_[c] == 0 && !(extra_ && !extra_->not_sink.empty() && extra_->not_sink[c]);
+  }
+  bool visited(int32_t c) const { return state_[c] != kNew; }
+  // DFS from `root` unless it was already visited; returns whether a search started.
+  bool dfs_from(int32_t root, Ordering& out);
+  void dfs_sinks(Ordering& out);      // every sink, in cell-id order
+  void dfs_unvisited(Ordering& out);  // every cell not yet output (cycles without a sink)
+  // Adds exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots.
+  void add_counters(Ordering& out) const;
+
+  // Memory held per view: face signs, outbound counts, DFS flags and stack.
+  size_t bytes() const;
+
+ private:
+  enum : uint8_t { kNew = 0, kOnStack = 1, kDone = 2 };
+  struct Frame {
+    int32_t cell;
+    int32_t next;  // next eligible-neighbour slot: faces first, then extra relations
+  };
+  int exact_sign(int32_t f, const Camera& view, Vec3 dir) const;
+  void report_cycle(int32_t closing, Ordering& out);
+
+  const CellMesh* mesh_ = nullptr;
+  const MeshFaces* faces_ = nullptr;
+  const FacePlanes* planes_ = nullptr;
+  double coord_bound_ = 0;  // R: bounds |p| for every mesh point
+
+  std::vector<int8_t> sign_;       // per face, per view
+  std::vector<uint8_t> outbound_;  // per cell: arrows to neighbours in front
+  int64_t exact_calls_ = 0, double_wrong_ = 0, arrows_ = 0;
+
+  const ExtraRelations* extra_ = nullptr;
+  std::vector<uint8_t> state_;  // kNew / kOnStack / kDone
+  std::vector<Frame> stack_;
+  int64_t sinks_ = 0, cycle_roots_ = 0;
+};
+
+}  // namespace vob::mpvo

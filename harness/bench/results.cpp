@@ -1,0 +1,45 @@
+#include "harness/bench/results.h"
+
+#include <filesystem>
+#include <fstream>
+
+#include "harness/bench/atomic_file.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+std::vector<nlohmann::json> ResultsFile::read_all(const std::string& path) {
+  std::vector<nlohmann::json> out;
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "results", "cannot be read");
+  std::string line;
+  size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty()) continue;
+    try {
+      out.push_back(nlohmann::json::parse(line));
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(path, "line " + std::to_string(n), std::string("not JSON: ") + e.what());
+    }
+  }
+  return out;
+}
+
+ResultsFile::ResultsFile(std::string path) : path_(std::move(path)) {
+  if (!std::filesystem::exists(path_)) return;
+  for (const auto& r : read_all(path_)) {
+    lines_.push_back(r.dump());
+    if (r.contains("key")) keys_.insert(r["key"].get<std::string>());
+  }
+}
+
+void ResultsFile::append(const nlohmann::json& record) {
+  lines_.push_back(record.dump());
+  keys_.insert(record.at("key").get<std::string>());
+  std::string content;
+  for (const auto& l : lines_) content += l + "\n";
+  write_file_atomically(path_, content);
+}
+
+}  // namespace vob

@@ -1,0 +1,60 @@
+// vobench order: run one orderer for one view and write ORDER.json, enough for another
+// program to verify the order independently.
+#include <iostream>
+
+#include "harness/bench/atomic_file.h"
+#include "harness/bench/runner.h"
+#include "harness/cli/commands.h"
+#include "harness/cli/scene_args.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+Command add_order_command(CLI::App& app) {
+  auto* cmd = app.add_subcommand("order", "order one view and write ORDER.json");
+  auto scene_args = std::make_shared<SceneArgs>();
+  auto view_args = std::make_shared<ViewArgs>();
+  auto algorithm = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  auto check = std::make_shared<bool>(false);
+  cmd->add_option("--algorithm,-a", *algorithm, "orderer NAME[:k=v,...]")->required();
+  scene_args->add_to(*cmd);
+  view_args->add_to(*cmd);
+  cmd->add_option("-o,--output", *out, "ORDER.json")->required();
+  cmd->add_flag("--check", *check, "also run the oracle and store its counts");
+  return [=]() {
+    const DatasetSpec spec = scene_args->spec();
+    const Scene scene = make_scene(spec);
+    const auto cams = view_args->cameras(spec, scene);
+    if (cams.size() != 1)
+      throw InputError("order", "view", "writes one view: give --view-index I or an explicit camera");
+    const Camera& cam = cams[0].second;
+    PreparedOrderer p = prepare_orderer(*algorithm, scene);
+    FrameMeasurement m = measure_frame(p, cam, 0, 1);
+    check_complete(scene, m.ordering, *algorithm);
+    nlohmann::json j;
+    j["algorithm"] = *algorithm;
+    j["parameters"] = p.orderer->parameters();
+    j["dataset"] = spec.to_json();
+    j["primitive_kind"] = scene_kind_name(scene.kind());
+    j["primitives"] = scene.num_primitives();
+    j["camera"] = cam.to_json();
+    j["view_index"] = cams[0].first;
+    j["order"] = m.ordering.order;
+    j["cycles"] = {{"count", m.ordering.cycles.cycles}, {"primitives", m.ordering.cycles.primitives}};
+    nlohmann::json prep = nlohmann::json::object(), phases = nlohmann::json::object();
+    for (const auto& [n, s] : p.prepare_clock.phases()) prep[n] = s;
+    for (const auto& [n, s] : m.repeats.back()) phases[n] = s;
+    j["prepare_phases"] = prep;
+    j["phases"] = phases;
+    j["counters"] = m.ordering.counters;
+    if (!m.ordering.layers.empty()) j["layers"] = m.ordering.layers;
+    if (*check) j["oracle"] = check_ordering(scene, cam, m.ordering.order).to_json();
+    write_file_atomically(*out, j.dump() + "\n");
+    std::cerr << "wrote " << *out << ": " << m.ordering.order.size() << " "
+              << scene_kind_name(scene.kind()) << ", " << m.total_median() * 1e3 << " ms\n";
+    return 0;
+  };
+}
+
+}  // namespace vob

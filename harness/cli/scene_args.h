@@ -1,0 +1,37 @@
+// Command-line options that choose a scene (--dataset/--set or --input) and views
+// (--views/--view-index, an orbit, or an explicit camera), shared by the subcommands.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "harness/bench/suite.h"
+#include "harness/view/camera.h"
+
+namespace vob {
+
+struct SceneArgs {
+  std::string dataset, input;
+  std::vector<std::string> sets;  // k=v
+  bool tetrahedralize = false;
+  void add_to(CLI::App& cmd);
+  DatasetSpec spec() const;  // InputError unless exactly one of --dataset / --input
+};
+
+struct ViewArgs {
+  int views = 14;
+  int view_index = -1;
+  int orbit = 0;  // frames of an orbit path instead of the Fibonacci set
+  std::string eye, target, up = "0,0,1";
+  double fov = 40.0, ortho = 0.0, zoom = 1.0;
+  bool ortho_views = false;
+  std::string size = "512x512";
+  void add_to(CLI::App& cmd);
+  // (view index, camera) pairs for the scene; the view index is -1 for an explicit camera.
+  std::vector<std::pair<int, Camera>> cameras(const DatasetSpec& spec, const Scene& scene) const;
+  nlohmann::json describe() const;
+};
+
+}  // namespace vob
