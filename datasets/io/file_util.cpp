@@ -1,0 +1,62 @@
+#include "datasets/io/file_util.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <system_error>
+#include <vector>
+
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+void write_atomically(const std::string& path,
+                      const std::function<void(const std::string& tmp)>& write) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  std::error_code ec;
+  if (target.has_parent_path()) {
+    fs::create_directories(target.parent_path(), ec);
+    if (ec) throw InputError(path, "folder", "cannot be created: " + ec.message());
+  }
+  std::string pattern = path + ".tmp-XXXXXX";
+  std::vector<char> buf(pattern.begin(), pattern.end());
+  buf.push_back('\0');
+  const int fd = mkstemp(buf.data());
+  if (fd < 0) throw InputError(path, "file", std::string("cannot be written: ") + std::strerror(errno));
+  close(fd);
+  const std::string tmp(buf.data());
+  try {
+    write(tmp);
+  } catch (...) {
+    fs::remove(tmp, ec);
+    throw;
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    fs::remove(tmp, ec);
+    throw InputError(path, "file", "cannot be renamed into place: " + why);
+  }
+}
+
+void require_readable_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const auto st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) throw InputError(path, "file", "does not exist");
+  if (!fs::is_regular_file(st)) throw InputError(path, "file", "is not a regular file");
+  if (access(path.c_str(), R_OK) != 0)
+    throw InputError(path, "file", std::string("cannot be read: ") + std::strerror(errno));
+}
+
+std::string file_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+}  // namespace vob

@@ -1,0 +1,21 @@
+// VTK files through VTK's own readers and writers.
+//   .vtu  XML unstructured grid -> cells (tetra, pyramid, wedge, hexahedron only).
+//   .vtk  legacy: an unstructured grid -> cells; structured points -> voxels.
+//   .vti  XML image data -> voxels.
+// Point scalars: the active scalars, else the first point-data array (component 0).
+// Voxels: image points are voxel centres (point data), or image cells are voxels when the
+// file has only cell data. The significance threshold is read from the field-data array
+// "vobench_threshold" (written by write_vti), else 0: values > 0 are significant.
+#pragma once
+#include <string>
+
+#include "harness/scene/scene.h"
+
+namespace vob {
+
+Scene read_vtk_file(const std::string& path);
+void write_vtu(const CellMesh& m, const std::string& path);
+void write_vtk_legacy(const CellMesh& m, const std::string& path);  // binary, exact doubles
+void write_vti(const VoxelGrid& g, const std::string& path);
+
+}  // namespace vob
