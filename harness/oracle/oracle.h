@@ -1,8 +1,10 @@
 // The z-buffer oracle (DESIGN.md "The oracle"). Draws the primitives in the given
 // back-to-front order at the pixel centres (or S x S samples per pixel); per sample it keeps
 // the nearest depth drawn so far; a fragment that lands behind it is a violation.
-// Fragments: cells -> ray segment [t_in, t_out] of positive length; triangles -> hit depth;
-// voxels -> splat footprint at the eye distance of the voxel centre.
+// Fragments (harness/raster): cells -> ray segment [t_in, t_out] at t >= 0 longer than
+// kMinSegmentRelative of the scene radius (cell_clip.h); triangles -> hit depth at covered
+// samples, top-left fill rule (polygon_raster.h); voxels -> splat footprint at the eye
+// distance of the voxel centre (splat.h).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -21,6 +23,7 @@ struct OracleOptions {
 };
 
 struct OracleResult {
+  int supersample = 1;              // S
   int64_t samples = 0;              // w*h*S*S
   int64_t fragments = 0;
   int64_t covered_pixels = 0;       // samples with at least one fragment
@@ -40,7 +43,22 @@ struct OracleResult {
 };
 
 // `order` lists primitive ids back to front (voxels: voxel ids of significant voxels).
-// Ids missing from `order` are simply not drawn; out-of-range ids throw InputError.
+// Ids missing from `order` are simply not drawn; out-of-range ids (and voxels that are not
+// significant) throw InputError. An id listed twice is drawn twice (and then violates).
+//
+// Violation rules (k_metric.h counts k with the same comparisons, so k > 0 <=> violation):
+// - cells: a fragment violates when its segment midpoint lies behind the nearest t_in drawn
+//   so far at the sample. Segments of non-overlapping convex cells do not overlap, so the
+//   midpoint separates them with a margin of half a segment (>= kMinSegmentRelative / 2
+//   of the scene radius), far above rounding noise.
+// - triangles and voxels: a fragment violates when its depth exceeds the nearest depth drawn
+//   so far by more than kDepthTieRelative * (scene radius + eye distance to its centre).
+//   Equal depths (coplanar triangles, voxels at the same distance) are ties, not violations:
+//   no order between them is more correct than another.
+// The blocking primitive of a violation is the one holding the nearest depth (or t_in).
+// Samples are processed in bands of rows in parallel; results do not depend on threads.
+constexpr double kDepthTieRelative = 1e-9;
+
 OracleResult check_ordering(const Scene& scene, const Camera& view,
                             const std::vector<int32_t>& order, const OracleOptions& opt = {});
 

@@ -1,0 +1,185 @@
+#include "harness/oracle/oracle.h"
+
+#include <algorithm>
+#include <limits>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "harness/oracle/k_metric.h"
+#include "harness/raster/fragments.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+int64_t OracleResult::samples_with_k_above(int k) const {
+  int64_t n = 0;
+  for (size_t i = std::max(0, k + 1); i < k_histogram.size(); ++i) n += k_histogram[i];
+  return n;
+}
+
+nlohmann::json OracleResult::to_json() const {
+  return {{"supersample", supersample},
+          {"samples", samples},
+          {"fragments", fragments},
+          {"covered_pixels", covered_pixels},
+          {"violating_pixels", violating_pixels},
+          {"violating_fragments", violating_fragments},
+          {"violating_pairs", violating_pairs},
+          {"max_k", max_k},
+          {"max_list", max_list},
+          {"k_histogram", k_histogram},
+          {"examples", examples}};
+}
+
+namespace {
+
+struct Example {
+  int sx, sy;
+  Fragment late, blocker;
+};
+
+struct BandStats {
+  int64_t fragments = 0, covered = 0, violating_samples = 0, violating_fragments = 0;
+  int max_list = 0;
+  std::vector<int64_t> khist{0};
+  std::vector<uint64_t> pairs;  // (late << 32) | blocker
+  std::vector<Example> examples;
+};
+
+// Neighbouring samples repeat the same pairs; a small direct-mapped table of recent pairs
+// drops most repeats before the exact sort-and-unique of each band.
+class PairFilter {
+ public:
+  bool fresh(uint64_t pair) {
+    uint64_t& slot = table_[(pair * 0x9E3779B97F4A7C15ull) >> (64 - kBits)];
+    if (slot == pair + 1) return false;
+    slot = pair + 1;  // 0 marks an empty slot
+    return true;
+  }
+  void clear() { std::fill(std::begin(table_), std::end(table_), 0); }
+
+ private:
+  static constexpr int kBits = 12;
+  uint64_t table_[1 << kBits] = {};
+};
+
+struct Scratch {
+  FragmentLists lists;
+  KCounter counter;
+  PairFilter pairs;
+  std::vector<double> in, query;
+};
+
+nlohmann::json depth_json(const Fragment& f, bool cells) {
+  if (cells) return nlohmann::json::array({f.t_in, f.t_out});
+  return f.t_in;
+}
+
+}  // namespace
+
+OracleResult check_ordering(const Scene& scene, const Camera& view,
+                            const std::vector<int32_t>& order, const OracleOptions& opt) {
+  if (opt.max_examples < 0) throw InputError("oracle", "max_examples", "must be >= 0");
+  CollectOptions co;
+  co.supersample = opt.supersample;
+  co.splat_radius_px = opt.splat_radius_px;
+  const FragmentCollector collector(scene, view, order, co);
+  const SampleFrame& frame = collector.frame();
+  const bool cells = scene.kind() == SceneKind::Cells;
+  const double tie = kDepthTieRelative *
+                     (scene.bounds().radius() + length(view.eye - scene.bounds().center()));
+  const size_t max_examples = static_cast<size_t>(opt.max_examples);
+
+  const int nb = collector.num_bands();
+  std::vector<BandStats> bands(nb);
+  tbb::enumerable_thread_specific<Scratch> scratch;
+  tbb::parallel_for(0, nb, [&](int b) {
+    Scratch& s = scratch.local();
+    BandStats& st = bands[b];
+    collector.collect_band(b, s.lists);
+    s.pairs.clear();
+    const FragmentLists& fl = s.lists;
+    st.fragments = int64_t(fl.fragments.size());
+    for (int64_t i = 0; i < fl.num_samples(); ++i) {
+      const auto frags = fl.local(i);
+      const int n = int(frags.size());
+      if (n == 0) {
+        ++st.khist[0];
+        continue;
+      }
+      ++st.covered;
+      st.max_list = std::max(st.max_list, n);
+      s.in.resize(n);
+      s.query.resize(n);
+      for (int j = 0; j < n; ++j) {
+        s.in[j] = frags[j].t_in;
+        s.query[j] = cells ? frags[j].mid() : frags[j].t_in - tie;
+      }
+      // z-buffer pass: nearest key drawn so far and who holds it.
+      double nearest = std::numeric_limits<double>::infinity();
+      int holder = -1;
+      bool violated = false;
+      for (int j = 0; j < n; ++j) {
+        if (s.query[j] > nearest) {
+          violated = true;
+          ++st.violating_fragments;
+          const uint64_t pair = uint64_t(uint32_t(frags[j].prim)) << 32 | uint32_t(frags[holder].prim);
+          if (s.pairs.fresh(pair)) st.pairs.push_back(pair);
+          if (st.examples.size() < max_examples) {
+            const int sy = fl.row0 + int(i / fl.cols), sx = int(i % fl.cols);
+            st.examples.push_back({sx, sy, frags[j], frags[holder]});
+          }
+        }
+        if (s.in[j] < nearest) nearest = s.in[j], holder = j;
+      }
+      int k = 0;
+      if (violated) {
+        ++st.violating_samples;
+        k = s.counter.max_k(s.in.data(), s.query.data(), n);
+      }
+      if (k >= int(st.khist.size())) st.khist.resize(k + 1, 0);
+      ++st.khist[k];
+    }
+    std::sort(st.pairs.begin(), st.pairs.end());
+    st.pairs.erase(std::unique(st.pairs.begin(), st.pairs.end()), st.pairs.end());
+    st.pairs.shrink_to_fit();
+  });
+
+  OracleResult r;
+  r.supersample = frame.supersample();
+  r.samples = frame.num_samples();
+  std::vector<uint64_t> pairs;
+  size_t npairs = 0;
+  for (const BandStats& st : bands) npairs += st.pairs.size();
+  pairs.reserve(npairs);
+  for (BandStats& st : bands) {
+    r.fragments += st.fragments;
+    r.covered_pixels += st.covered;
+    r.violating_pixels += st.violating_samples;
+    r.violating_fragments += st.violating_fragments;
+    r.max_list = std::max(r.max_list, st.max_list);
+    if (st.khist.size() > r.k_histogram.size()) r.k_histogram.resize(st.khist.size(), 0);
+    for (size_t k = 0; k < st.khist.size(); ++k) r.k_histogram[k] += st.khist[k];
+    pairs.insert(pairs.end(), st.pairs.begin(), st.pairs.end());
+    std::vector<uint64_t>().swap(st.pairs);
+    const int S = frame.supersample();
+    for (const Example& e : st.examples) {
+      if (r.examples.size() >= max_examples) break;
+      nlohmann::json j{{"pixel", {e.sx / S, e.sy / S}},
+                       {"primitive", e.late.prim},
+                       {"depth", depth_json(e.late, cells)},
+                       {"blocked_by", e.blocker.prim},
+                       {"blocker_depth", depth_json(e.blocker, cells)}};
+      if (S > 1) j["subsample"] = {e.sx % S, e.sy % S};
+      r.examples.push_back(std::move(j));
+    }
+  }
+  tbb::parallel_sort(pairs.begin(), pairs.end());
+  r.violating_pairs = int64_t(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
+  r.max_k = int(r.k_histogram.size()) - 1;
+  return r;
+}
+
+}  // namespace vob

@@ -1,0 +1,101 @@
+#include "harness/raster/cell_clip.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "harness/scene/cell_types.h"
+
+namespace vob {
+
+ProjectedPoints project_points(const SampleFrame& frame, const std::vector<Vec3>& points) {
+  ProjectedPoints p;
+  const size_t n = points.size();
+  p.x.resize(n);
+  p.y.resize(n);
+  p.zc.resize(n);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      if (!frame.project(points[i], p.x[i], p.y[i], p.zc[i])) p.x[i] = p.y[i] = 0;
+    }
+  });
+  if (!frame.ortho())
+    for (size_t i = 0; i < n; ++i)
+      if (!(p.zc[i] > 0)) p.all_in_front = false;
+  return p;
+}
+
+CellClipper::CellClipper(const SampleFrame& frame, const CellMesh& mesh,
+                         const ProjectedPoints& projected, double min_length)
+    : frame_(frame), mesh_(mesh), proj_(projected), min_length_(min_length) {}
+
+SampleRect CellClipper::bounds(int32_t c) const {
+  const int32_t* p = mesh_.cell_points(c);
+  const int n = mesh_.cell_size(c);
+  bool any_front = false, all_front = true;
+  for (int i = 0; i < n; ++i) {
+    const bool front = frame_.ortho() ? proj_.zc[p[i]] >= 0 : proj_.zc[p[i]] > 0;
+    any_front |= front;
+    all_front &= front;
+  }
+  if (!any_front) return {};  // wholly behind the eye (plane)
+  if (all_front || frame_.ortho()) {
+    // The image of a convex cell in front of the eye is the hull of its projected vertices.
+    double lx = proj_.x[p[0]], hx = lx, ly = proj_.y[p[0]], hy = ly;
+    for (int i = 1; i < n; ++i) {
+      lx = std::min(lx, proj_.x[p[i]]), hx = std::max(hx, proj_.x[p[i]]);
+      ly = std::min(ly, proj_.y[p[i]]), hy = std::max(hy, proj_.y[p[i]]);
+    }
+    return SampleRect{floor_to_int(lx - 0.5), floor_to_int(ly - 0.5), ceil_to_int(hx - 0.5),
+                      ceil_to_int(hy - 0.5)}
+        .intersect(frame_.bounds());
+  }
+  // Crossing the eye plane: every ray meeting the cell at t > 0 leaves it through a face at
+  // t > 0, so the union of the faces' exact (half-plane) bounds covers it.
+  SampleRect r;
+  bool first = true;
+  const LocalFaces& lf = cell_local_faces(mesh_.types[c]);
+  for (int f = 0; f < lf.count; ++f) {
+    Vec3 v[4];
+    for (int i = 0; i < lf.size[f]; ++i) v[i] = mesh_.points[p[lf.v[f][i]]];
+    PolygonRaster pr;
+    if (!pr.setup(frame_, v, lf.size[f])) continue;
+    const SampleRect b = pr.bounds();
+    r = first ? b
+              : SampleRect{std::min(r.x0, b.x0), std::min(r.y0, b.y0), std::max(r.x1, b.x1),
+                           std::max(r.y1, b.y1)};
+    first = false;
+  }
+  return r;
+}
+
+void CellClipper::setup(int32_t c) {
+  const int32_t* p = mesh_.cell_points(c);
+  const LocalFaces& lf = cell_local_faces(mesh_.types[c]);
+  nf_ = lf.count;
+  for (int f = 0; f < nf_; ++f) {
+    const int n = lf.size[f];
+    int32_t loop[4] = {0, 0, 0, 0};
+    for (int i = 0; i < n; ++i) loop[i] = p[lf.v[f][i]];
+    // Canonical loop: smallest id first, then towards its smaller neighbour. The cell's
+    // outward normal is the canonical one, negated when the canonical loop runs backwards.
+    int m = 0;
+    for (int i = 1; i < n; ++i)
+      if (loop[i] < loop[m]) m = i;
+    const bool forward = loop[(m + 1) % n] < loop[(m + n - 1) % n];
+    int32_t can[4] = {0, 0, 0, 0};
+    for (int i = 0; i < n; ++i) can[i] = loop[forward ? (m + i) % n : (m - i + n) % n];
+    Vec3 nrm, cen;
+    for (int i = 0; i < n; ++i) {
+      const Vec3 a = mesh_.points[can[i]], b = mesh_.points[can[(i + 1) % n]];
+      nrm += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+      cen += a;
+    }
+    double d = -dot(nrm, cen / n);
+    if (!forward) nrm = -nrm, d = -d;
+    n_[f] = nrm;
+    d_[f] = d;
+    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -(dot(nrm, frame_.eye()) + d);
+  }
+}
+
+}  // namespace vob

@@ -1,0 +1,97 @@
+// Cell fragments: the segment [t_in, t_out] of each sample's ray inside a convex cell,
+// by Cyrus-Beck clipping of the ray against the cell's outward face planes.
+//
+// Face planes are Newell planes computed from the face's point ids in a canonical order
+// (smallest id first, then towards its smaller neighbour), so the two cells sharing a face
+// use exactly negated planes: at every sample they compute the same crossing parameter, and
+// the segments of face neighbours meet without gap or overlap. (A non-planar quad is
+// replaced by its Newell plane; the cell is the intersection of its face half-spaces.)
+//
+// Only what is in front of the eye counts: segments are clipped to t >= 0, so an eye inside
+// a cell gives [0, t_out]; orthographic rays start on the eye plane, so geometry behind the
+// eye plane is dropped (the same rule the polygon rasterizer applies). Segments not longer
+// than min_length are dropped: they are rays grazing an edge or vertex, whose length is
+// rounding noise. The oracle uses min_length = kMinSegmentRelative * scene bounding radius.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "harness/raster/polygon_raster.h"
+#include "harness/raster/sample_frame.h"
+#include "harness/scene/cell_mesh.h"
+
+namespace vob {
+
+// Far below any real cell's extent (a cell 1e-10 of the scene across is degenerate), far
+// above the rounding noise of t (about 1e-15 of the eye distance).
+constexpr double kMinSegmentRelative = 1e-10;
+
+// Every point of a mesh projected once per view: sample coordinates and view depth.
+struct ProjectedPoints {
+  std::vector<double> x, y, zc;
+  bool all_in_front = true;  // perspective: every zc > 0
+};
+ProjectedPoints project_points(const SampleFrame& frame, const std::vector<Vec3>& points);
+
+class CellClipper {
+ public:
+  CellClipper(const SampleFrame& frame, const CellMesh& mesh, const ProjectedPoints& projected,
+              double min_length);
+  // Conservative sample rectangle of cell c (empty when it lies behind the eye).
+  SampleRect bounds(int32_t c) const;
+  // Prepares cell c for scan(): its outward face planes.
+  void setup(int32_t c);
+  // Calls emit(sx, sy, t_in, t_out) for every sample of `clip` whose ray meets the prepared
+  // cell in a segment longer than min_length.
+  template <class Emit>
+  void scan(const SampleRect& clip, Emit&& emit) const;
+
+ private:
+  const SampleFrame& frame_;
+  const CellMesh& mesh_;
+  const ProjectedPoints& proj_;
+  double min_length_;
+  int nf_ = 0;
+  Vec3 n_[6];
+  double d_[6];
+  double k_[6];  // perspective: -(n.eye + d); orthographic: n.forward
+};
+
+template <class Emit>
+void CellClipper::scan(const SampleRect& clip, Emit&& emit) const {
+  const bool ortho = frame_.ortho();
+  for (int sy = clip.y0; sy <= clip.y1; ++sy) {
+    const Vec3 row = frame_.row_term(sy);
+    for (int sx = clip.x0; sx <= clip.x1; ++sx) {
+      const Vec3 x = row + frame_.col_term(sx);
+      // Inside face k: n.(O + s D) + d < 0, i.e. s * den < num.
+      double lo = 0, hi = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < nf_ && lo < hi; ++k) {
+        double num, den;
+        if (ortho) {
+          num = -(dot(n_[k], x) + d_[k]);
+          den = k_[k];
+        } else {
+          num = k_[k];
+          den = dot(n_[k], x);
+        }
+        if (den < 0) {
+          lo = std::max(lo, num / den);
+        } else if (den > 0) {
+          hi = std::min(hi, num / den);
+        } else if (!(num > 0)) {
+          hi = lo;  // parallel to the face and outside it
+        }
+      }
+      if (!(lo < hi) || !std::isfinite(hi)) continue;
+      const double len = ortho ? 1.0 : length(x);
+      const double t0 = lo * len, t1 = hi * len;
+      if (t1 - t0 > min_length_) emit(sx, sy, t0, t1);
+    }
+  }
+}
+
+}  // namespace vob

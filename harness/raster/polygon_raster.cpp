@@ -1,0 +1,175 @@
+#include "harness/raster/polygon_raster.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "harness/geometry/predicates.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+namespace {
+
+// Sign of det(a, b, c) = (a x b) . c, exact: a double evaluation when it is far from zero
+// (bound well above Shewchuk's orient3d error bound), CGAL's exact predicate otherwise.
+int facing_sign(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& eye, bool ortho,
+                const Vec3& f) {
+  const Vec3 a = p1 - p0, b = p2 - p0;
+  const Vec3 c = ortho ? f : eye - p0;
+  const double det = dot(cross(a, b), c);
+  const double perm =
+      (std::fabs(a.y * b.z) + std::fabs(a.z * b.y)) * std::fabs(c.x) +
+      (std::fabs(a.z * b.x) + std::fabs(a.x * b.z)) * std::fabs(c.y) +
+      (std::fabs(a.x * b.y) + std::fabs(a.y * b.x)) * std::fabs(c.z);
+  if (std::fabs(det) > 1e-14 * perm) return det > 0 ? 1 : -1;
+  return ortho ? orient_direction(p0, p1, p2, f) : orient3d(p0, p1, p2, eye);
+}
+
+// Clips a convex polygon in sample space by a*x + b*y + k >= -eta (Sutherland-Hodgman).
+int clip_halfplane(const double* px, const double* py, int n, const PolygonRaster::Edge& e,
+                   double* ox, double* oy) {
+  int m = 0;
+  for (int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    const double vi = e.a * px[i] + e.b * py[i] + e.k + e.eta;
+    const double vj = e.a * px[j] + e.b * py[j] + e.k + e.eta;
+    if (vi >= 0) ox[m] = px[i], oy[m++] = py[i];
+    if ((vi >= 0) != (vj >= 0)) {
+      const double s = vi / (vi - vj);
+      ox[m] = px[i] + s * (px[j] - px[i]);
+      oy[m++] = py[i] + s * (py[j] - py[i]);
+    }
+  }
+  return m;
+}
+
+}  // namespace
+
+bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n) {
+  if (n != 3 && n != 4)
+    throw InputError("raster", "polygon", "has " + std::to_string(n) + " vertices, not 3 or 4");
+  frame_ = &frame;
+  count_ = 0;
+  if (n == 3) {
+    plane_.n = cross(v[1] - v[0], v[2] - v[0]);
+    plane_.d = -dot(plane_.n, v[0]);
+  } else {
+    Vec3 nrm, cen;
+    for (int i = 0; i < 4; ++i) {
+      const Vec3 a = v[i], b = v[(i + 1) % 4];
+      nrm += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+      cen += a;
+    }
+    plane_.n = nrm;
+    plane_.d = -dot(nrm, cen * 0.25);
+  }
+  if (frame.ortho()) {
+    const double nf = dot(plane_.n, frame.forward());
+    if (nf == 0) return false;
+    inv_nf_ = 1.0 / nf;
+  } else {
+    num_ = -(dot(plane_.n, frame.eye()) + plane_.d);
+  }
+  if (n == 3) {
+    add_triangle(v[0], v[1], v[2]);
+  } else {
+    int m = 0;
+    for (int i = 1; i < 4; ++i)
+      if (lex_less(v[i], v[m])) m = i;
+    add_triangle(v[m], v[(m + 1) % 4], v[(m + 2) % 4]);
+    add_triangle(v[m], v[(m + 2) % 4], v[(m + 3) % 4]);
+  }
+  return count_ > 0;
+}
+
+bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const SampleFrame& fr = *frame_;
+  const bool ortho = fr.ortho();
+  const int sigma = facing_sign(p0, p1, p2, fr.eye(), ortho, fr.forward());
+  if (sigma == 0) return false;  // edge-on: covers no ray
+  // Inside for perspective is det(Pi - e, Pj - e, D) of sign -orient3d(P0, P1, P2, e);
+  // for orthographic, ((Pj - Pi) x f) . (Pi - O) has the sign of ((P1-P0) x (P2-P0)) . f.
+  const double facing = ortho ? sigma : -sigma;
+  Triangle& t = tri_[count_];
+  const Vec3 p[3] = {p0, p1, p2};
+  const Vec3 dx = fr.affine_dx(), dy = fr.affine_dy(), x0 = fr.affine_origin();
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 &pi = p[i], &pj = p[(i + 1) % 3];
+    const bool fwd = lex_less(pi, pj);
+    const Vec3 &pa = fwd ? pi : pj, &pb = fwd ? pj : pi;
+    Vec3 m;
+    double c = 0;
+    if (ortho) {  // E = (pa - O) . ((pb - pa) x f) = c - m' . O
+      const Vec3 mp = cross(pb - pa, fr.forward());
+      c = dot(mp, pa);
+      m = -mp;
+    } else {  // E = ((pa - e) x (pb - pa)) . D
+      m = cross(pa - fr.eye(), pb - pa);
+    }
+    const double s = fwd ? facing : -facing;
+    Edge& e = t.e[i];
+    e.m = m * s;
+    e.c = c * s;
+    e.a = dot(e.m, dx);
+    e.b = dot(e.m, dy);
+    e.k = e.c + dot(e.m, x0);
+    e.eta = 1e-12 * ((std::fabs(e.m.x) + std::fabs(e.m.y) + std::fabs(e.m.z)) * fr.x_magnitude() +
+                     std::fabs(e.c));
+    // Top-left rule: a zero value counts as inside when moving the sample right (then
+    // down) makes it positive. a and b are exact negations across a shared edge.
+    e.own = e.a > 0 || (e.a == 0 && (e.b < 0 || (e.b == 0 && dot(e.m, fr.forward()) > 0)));
+  }
+  // Conservative bounds: the grid of sample centres clipped by the three half-planes.
+  double bx[2][12], by[2][12];
+  const double xl = 0.5, xh = fr.cols() - 0.5, yl = 0.5, yh = fr.rows() - 0.5;
+  double* cx = bx[0]; double* cy = by[0];
+  cx[0] = xl, cy[0] = yl, cx[1] = xh, cy[1] = yl, cx[2] = xh, cy[2] = yh, cx[3] = xl, cy[3] = yh;
+  int n = 4, cur = 0;
+  for (int i = 0; i < 3 && n > 0; ++i) {
+    n = clip_halfplane(bx[cur], by[cur], n, t.e[i], bx[1 - cur], by[1 - cur]);
+    cur = 1 - cur;
+  }
+  if (n == 0) return false;
+  double lx = bx[cur][0], hx = lx, ly = by[cur][0], hy = ly;
+  for (int i = 1; i < n; ++i) {
+    lx = std::min(lx, bx[cur][i]), hx = std::max(hx, bx[cur][i]);
+    ly = std::min(ly, by[cur][i]), hy = std::max(hy, by[cur][i]);
+  }
+  // Sample sx has its centre at sx + 0.5; one extra sample absorbs rounding of the clip.
+  t.box = SampleRect{floor_to_int(lx - 0.5) - 1, floor_to_int(ly - 0.5) - 1,
+                     ceil_to_int(hx - 0.5) + 1, ceil_to_int(hy - 0.5) + 1}
+              .intersect(fr.bounds());
+  if (t.box.empty()) return false;
+  ++count_;
+  return true;
+}
+
+SampleRect PolygonRaster::bounds() const {
+  if (count_ == 0) return {};
+  SampleRect r = tri_[0].box;
+  for (int i = 1; i < count_; ++i) {
+    const SampleRect& b = tri_[i].box;
+    r = {std::min(r.x0, b.x0), std::min(r.y0, b.y0), std::max(r.x1, b.x1), std::max(r.y1, b.y1)};
+  }
+  return r;
+}
+
+bool PolygonRaster::span(int i, int sy, int& x0, int& x1) const {
+  const double y = sy + 0.5;
+  for (const Edge& e : tri_[i].e) {
+    const double rhs = -e.eta - (e.b * y + e.k);  // need a * x >= rhs
+    if (e.a == 0) {
+      if (rhs > 0) return false;
+      continue;
+    }
+    const double v = rhs / e.a - 0.5;  // boundary in sample index units
+    if (std::isnan(v)) continue;
+    if (e.a > 0)
+      x0 = std::max(x0, floor_to_int(v));
+    else
+      x1 = std::min(x1, ceil_to_int(v));
+  }
+  return x0 <= x1;
+}
+
+}  // namespace vob

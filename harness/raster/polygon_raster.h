@@ -1,0 +1,119 @@
+// Sample-centre rasterization of a convex planar polygon (3 or 4 vertices), shared by the
+// oracle, the compositor and image-space algorithms (SXMPVO scans exterior faces with it).
+//
+// Coverage is decided per sample with edge functions of the ray, not of projected vertices:
+// the edge (a, b) and the ray's origin span a plane, and the sample is inside when its ray
+// lies on the polygon's side of all edge planes (Olano-Greer style homogeneous
+// rasterization). This needs no near-plane clipping: a polygon crossing the eye plane
+// (perspective) covers exactly the samples whose rays hit it at t > 0.
+//
+// Watertightness: every edge function is computed from the edge's endpoints in a canonical
+// (lexicographic) order and then negated as needed, so two polygons sharing an edge compute
+// bit-identical values with opposite signs at every sample. A value of exactly zero is
+// settled by the top-left rule (window y up): the sample is treated as if moved right by
+// epsilon and down by epsilon^2. Hence a sample on an edge shared by two projected
+// polygons, or on a vertex shared by a fan, belongs to exactly one of them.
+//
+// Quads are split into two triangles along the diagonal through their lexicographically
+// smallest vertex, the same split for every polygon listing those four points, and both
+// halves take their depth from the quad's Newell plane.
+//
+// Depth: the ray parameter t at which the sample's ray meets the polygon's plane
+// (t = s * |D|, see sample_frame.h). Orthographic samples with t < 0 (behind the eye plane)
+// are not covered.
+#pragma once
+#include <cmath>
+
+#include "harness/raster/sample_frame.h"
+
+namespace vob {
+
+struct Plane {
+  Vec3 n;        // not necessarily unit length
+  double d = 0;  // n . p + d = 0 on the plane
+};
+
+class PolygonRaster {
+ public:
+  // Prepares the polygon v[0..n) (n = 3 or 4, any orientation). Returns false when it can
+  // cover no sample (seen exactly edge-on, or outside the view). InputError for other n.
+  bool setup(const SampleFrame& frame, const Vec3* v, int n);
+  // A conservative rectangle of the samples it may cover.
+  SampleRect bounds() const;
+  // Calls emit(sx, sy, t) for every covered sample in `clip`, row by row, bottom up.
+  template <class Emit>
+  void scan(const SampleRect& clip, Emit&& emit) const;
+
+  struct Edge {
+    Vec3 m;         // inside: c + m . X(sx, sy) > 0, or == 0 and `own`
+    double c = 0;
+    bool own = false;
+    double a = 0, b = 0, k = 0, eta = 0;  // E ~= a*x + b*y + k within eta (spans only)
+  };
+  struct Triangle {
+    Edge e[3];
+    SampleRect box;
+  };
+
+ private:
+  bool add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2);
+  // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
+  bool span(int i, int sy, int& x0, int& x1) const;
+  bool inside(int i, const Vec3& x) const {
+    const Triangle& t = tri_[i];
+    for (const Edge& e : t.e) {
+      const double v = e.c + dot(e.m, x);
+      if (v < 0 || (v == 0 && !e.own)) return false;
+    }
+    return true;
+  }
+  // Ray parameter t at the sample (NaN when the ray misses the plane).
+  double depth(const Vec3& x) const {
+    if (frame_->ortho()) return -(dot(plane_.n, x) + plane_.d) * inv_nf_;
+    const double den = dot(plane_.n, x);
+    return num_ / den * length(x);
+  }
+
+  const SampleFrame* frame_ = nullptr;
+  Plane plane_;
+  double num_ = 0, inv_nf_ = 0;
+  Triangle tri_[2];
+  int count_ = 0;
+};
+
+template <class Emit>
+void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
+  for (int i = 0; i < count_; ++i) {
+    const SampleRect r = tri_[i].box.intersect(clip);
+    for (int sy = r.y0; sy <= r.y1; ++sy) {
+      int x0 = r.x0, x1 = r.x1;
+      if (!span(i, sy, x0, x1)) continue;
+      const Vec3 row = frame_->row_term(sy);
+      for (int sx = x0; sx <= x1; ++sx) {
+        const Vec3 x = row + frame_->col_term(sx);
+        if (!inside(i, x)) continue;
+        const double t = depth(x);
+        // Perspective hits are at t > 0 by construction; the test drops rounding noise of
+        // rays that graze an edge-on polygon. Orthographic: only in front of the eye plane.
+        if ((frame_->ortho() ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
+      }
+    }
+  }
+}
+
+// Convenience: rasterize v[0..n) and emit(sx, sy, t) for every covered sample in `clip`.
+template <class Emit>
+void rasterize_polygon(const SampleFrame& frame, const Vec3* v, int n, const SampleRect& clip,
+                       Emit&& emit) {
+  PolygonRaster p;
+  if (p.setup(frame, v, n)) p.scan(clip, emit);
+}
+
+// Lexicographic (x, y, z) order of points: the canonical order of edge endpoints.
+inline bool lex_less(const Vec3& a, const Vec3& b) {
+  if (a.x != b.x) return a.x < b.x;
+  if (a.y != b.y) return a.y < b.y;
+  return a.z < b.z;
+}
+
+}  // namespace vob

@@ -1,0 +1,307 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "harness/raster/cell_clip.h"
+#include "harness/raster/fragments.h"
+#include "harness/raster/polygon_raster.h"
+#include "harness/raster/splat.h"
+#include "harness/scene/input_error.h"
+#include "tests/harness/oracle/test_meshes.h"
+
+using namespace vob;
+
+namespace {
+
+// 8x8 orthographic view of the z = 0 plane where pixel (i, j) has its centre at world
+// (i - 3.5, j - 3.5): every number below is exact, so centres lie exactly on edges.
+Camera exact_ortho(int size = 8) {
+  Camera c;
+  c.eye = {0, 0, 10};
+  c.target = {0, 0, 0};
+  c.up = {0, 1, 0};
+  c.ortho = true;
+  c.ortho_height = size;
+  c.width = c.height = size;
+  return c;
+}
+
+using Coverage = std::vector<int>;  // per sample
+
+void add(Coverage& cov, const SampleFrame& f, const Vec3* v, int n) {
+  rasterize_polygon(f, v, n, f.bounds(), [&](int sx, int sy, double) { ++cov[f.index(sx, sy)]; });
+}
+
+// Analytic ray / triangle test (Moller-Trumbore) with the hit parameter, for comparisons.
+bool ray_hits(const Ray& r, Vec3 a, Vec3 b, Vec3 c, double& t, double& margin) {
+  const Vec3 e1 = b - a, e2 = c - a, p = cross(r.dir, e2);
+  const double det = dot(e1, p);
+  t = 0;
+  margin = 0;  // parallel rays count as grazing
+  if (std::fabs(det) < 1e-300) return false;
+  const Vec3 s = r.origin - a;
+  const double u = dot(s, p) / det;
+  const Vec3 q = cross(s, e1);
+  const double v = dot(r.dir, q) / det;
+  t = dot(e2, q) / det;
+  margin = std::min({u, v, 1 - u - v});
+  return margin >= 0;
+}
+
+}  // namespace
+
+TEST(PolygonRaster, SquareSplitIntoTwoTrianglesCoversEachCentreOnce) {
+  const SampleFrame f(exact_ortho(), 1);
+  const Vec3 a{-2.5, -2.5, 0}, b{2.5, -2.5, 0}, c{2.5, 2.5, 0}, d{-2.5, 2.5, 0};
+  // Every vertex order and orientation of the two halves (diagonal a-c through centres).
+  const std::vector<std::array<Vec3, 3>> t1s = {{a, b, c}, {c, b, a}, {b, c, a}};
+  const std::vector<std::array<Vec3, 3>> t2s = {{a, c, d}, {d, c, a}, {c, d, a}};
+  for (const auto& t1 : t1s)
+    for (const auto& t2 : t2s) {
+      Coverage cov(f.num_samples(), 0);
+      add(cov, f, t1.data(), 3);
+      add(cov, f, t2.data(), 3);
+      for (int j = 0; j < 8; ++j)
+        for (int i = 0; i < 8; ++i) {
+          const double x = i - 3.5, y = j - 3.5;
+          // Top-left rule: the left (x = -2.5) and top (y = 2.5) edges are inside.
+          const int expect = (x >= -2.5 && x < 2.5 && y > -2.5 && y <= 2.5) ? 1 : 0;
+          EXPECT_EQ(cov[f.index(i, j)], expect) << "pixel " << i << "," << j;
+        }
+    }
+}
+
+TEST(PolygonRaster, QuadEqualsItsTwoTriangles) {
+  const SampleFrame f(exact_ortho(), 1);
+  const Vec3 q[4] = {{-2.5, -2.5, 0}, {2.5, -2.5, 0}, {2.5, 2.5, 0}, {-2.5, 2.5, 0}};
+  Coverage cov(f.num_samples(), 0);
+  add(cov, f, q, 4);
+  int covered = 0;
+  for (int v : cov) {
+    EXPECT_LE(v, 1);
+    covered += v;
+  }
+  EXPECT_EQ(covered, 25);
+}
+
+TEST(PolygonRaster, FanAroundACentreCoversItOnce) {
+  const SampleFrame f(exact_ortho(), 1);
+  const Vec3 o{0.5, 0.5, 0};  // exactly the centre of pixel (4, 4)
+  const Vec3 ring[6] = {{3.5, 0.5, 0}, {2.5, 3.5, 0}, {-1.5, 2.5, 0},
+                        {-2.5, 0.5, 0}, {-0.5, -2.5, 0}, {2.5, -1.5, 0}};
+  Coverage cov(f.num_samples(), 0);
+  for (int k = 0; k < 6; ++k) {
+    // Alternate orientations: the rule must not depend on them.
+    const Vec3 v[3] = {o, ring[k], ring[(k + 1) % 6]};
+    const Vec3 w[3] = {ring[(k + 1) % 6], ring[k], o};
+    add(cov, f, k % 2 ? v : w, 3);
+  }
+  EXPECT_EQ(cov[f.index(4, 4)], 1);
+  for (int v : cov) EXPECT_LE(v, 1);
+}
+
+TEST(PolygonRaster, DepthIsTheRayParameterOnThePlane) {
+  for (bool ortho : {true, false}) {
+    Camera cam = test::test_camera({0.3, -0.2, 6}, {0, 0, 0}, 40, 30, ortho, 5.0);
+    cam.up = {0, 1, 0};
+    const SampleFrame f(cam, 1);
+    auto z = [](double x, double y) { return 0.3 * x - 0.2 * y + 0.1; };
+    const Vec3 v[3] = {{-2, -2, z(-2, -2)}, {2.5, -1.5, z(2.5, -1.5)}, {0, 2, z(0, 2)}};
+    int n = 0;
+    rasterize_polygon(f, v, 3, f.bounds(), [&](int sx, int sy, double t) {
+      const Ray r = cam.ray(sx + 0.5, sy + 0.5);
+      const Vec3 p = r.origin + r.dir * t;
+      EXPECT_NEAR(p.z, z(p.x, p.y), 1e-12);
+      ++n;
+    });
+    EXPECT_GT(n, 100);
+  }
+}
+
+TEST(PolygonRaster, PerspectiveMeshIsWatertightAndMatchesRayTests) {
+  // A bumpy 6x6 grid of triangles seen in perspective: every sample whose ray clearly hits
+  // the surface is covered exactly once, and nothing is covered twice.
+  Camera cam = test::test_camera({1.3, -4.1, 3.7}, {0.1, 0.2, 0}, 64, 48);
+  const SampleFrame f(cam, 1);
+  auto P = [](int i, int j) {
+    const double x = -1.5 + 0.5 * i, y = -1.5 + 0.5 * j;
+    return Vec3{x, y, 0.2 * std::sin(2 * x) * std::cos(3 * y)};
+  };
+  std::vector<std::array<Vec3, 3>> tris;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) {
+      tris.push_back({P(i, j), P(i + 1, j), P(i + 1, j + 1)});
+      tris.push_back({P(i + 1, j + 1), P(i, j + 1), P(i, j)});  // same diagonal, flipped
+    }
+  Coverage cov(f.num_samples(), 0);
+  for (const auto& t : tris) add(cov, f, t.data(), 3);
+  int inside = 0;
+  for (int sy = 0; sy < f.rows(); ++sy)
+    for (int sx = 0; sx < f.cols(); ++sx) {
+      EXPECT_LE(cov[f.index(sx, sy)], 1);
+      const Ray r = cam.ray(sx + 0.5, sy + 0.5);
+      int clear = 0;
+      for (const auto& t : tris) {
+        double th, m;
+        if (ray_hits(r, t[0], t[1], t[2], th, m) && th > 0 && m > 1e-9) ++clear;
+      }
+      if (clear > 0) {
+        ++inside;
+        EXPECT_EQ(cov[f.index(sx, sy)], 1) << sx << "," << sy;
+      }
+    }
+  EXPECT_GT(inside, 500);
+}
+
+TEST(PolygonRaster, SupersampleCounts) {
+  const Vec3 q[4] = {{-2.5, -2.5, 0}, {2.5, -2.5, 0}, {2.5, 2.5, 0}, {-2.5, 2.5, 0}};
+  for (int S : {1, 2, 3, 4}) {
+    const SampleFrame f(exact_ortho(), S);
+    EXPECT_EQ(f.num_samples(), 64 * S * S);
+    Coverage cov(f.num_samples(), 0);
+    add(cov, f, q, 4);
+    int n = 0;
+    for (int v : cov) n += v;
+    EXPECT_EQ(n, 25 * S * S) << "S=" << S;
+  }
+}
+
+TEST(PolygonRaster, PolygonCrossingTheEyePlane) {
+  // Perspective: one vertex behind the eye. Coverage must equal the analytic t > 0 hits.
+  Camera cam = test::test_camera({0, 0, 0}, {0, 0, -1}, 48, 48);
+  cam.up = {0, 1, 0};
+  const SampleFrame f(cam, 1);
+  const Vec3 v[3] = {{-3, -1, -2}, {2, -2, -4}, {0.5, 2.5, 3}};
+  Coverage cov(f.num_samples(), 0);
+  int n = 0;
+  rasterize_polygon(f, v, 3, f.bounds(), [&](int sx, int sy, double t) {
+    ++cov[f.index(sx, sy)];
+    EXPECT_GT(t, 0);
+    EXPECT_TRUE(std::isfinite(t));
+    ++n;
+  });
+  for (int sy = 0; sy < f.rows(); ++sy)
+    for (int sx = 0; sx < f.cols(); ++sx) {
+      double t, m;
+      const bool hit = ray_hits(cam.ray(sx + 0.5, sy + 0.5), v[0], v[1], v[2], t, m) && t > 0;
+      if (std::fabs(m) > 1e-9) {
+        EXPECT_EQ(cov[f.index(sx, sy)], hit ? 1 : 0) << sx << "," << sy;
+      }
+    }
+  EXPECT_GT(n, 0);
+  // A quad around the eye, in the eye plane (edge-on): covers nothing.
+  const Vec3 q[4] = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  const Vec3 edge_on[4] = {{-1, 0, -1}, {1, 0, -1}, {1, 0, 1}, {-1, 0, 1}};
+  int m = 0;
+  rasterize_polygon(f, q, 4, f.bounds(), [&](int, int, double) { ++m; });
+  rasterize_polygon(f, edge_on, 4, f.bounds(), [&](int, int, double) { ++m; });
+  EXPECT_EQ(m, 0);
+}
+
+TEST(PolygonRaster, RejectsOtherVertexCounts) {
+  const SampleFrame f(exact_ortho(), 1);
+  const Vec3 v[5] = {};
+  PolygonRaster p;
+  EXPECT_THROW(p.setup(f, v, 5), InputError);
+  EXPECT_THROW(SampleFrame(exact_ortho(), 0), InputError);
+}
+
+TEST(CellClip, NeighbourSegmentsMeetExactly) {
+  const CellMesh m = test::tet_block(2, 1.0, 0.15, 7);
+  validate_cell_mesh(m, "test");
+  for (bool ortho : {false, true}) {
+    const Camera cam = test::test_camera({5.1, -3.3, 4.2}, {1, 1, 1}, 48, 48, ortho, 4.0);
+    const Scene s = Scene::from_mesh("block", m);
+    const FragmentLists fl = collect_fragments(s, cam, all_primitives(s));
+    int64_t joins = 0, pairs = 0, frags = 0;
+    for (int64_t i = 0; i < fl.num_samples(); ++i) {
+      std::vector<Fragment> v(fl.local(i).begin(), fl.local(i).end());
+      for (size_t k = 1; k < v.size(); ++k) EXPECT_LT(v[k - 1].pos, v[k].pos);  // drawing order
+      std::sort(v.begin(), v.end(), [](auto& a, auto& b) { return a.t_in < b.t_in; });
+      frags += int64_t(v.size());
+      for (size_t k = 1; k < v.size(); ++k) {
+        EXPECT_LE(v[k - 1].t_out, v[k].t_in);  // never overlap
+        joins += v[k - 1].t_out == v[k].t_in;
+        ++pairs;
+      }
+    }
+    // Inside a convex block consecutive segments share a face: they meet bit-exactly,
+    // except where a ray passes an edge and drops a negligible segment.
+    EXPECT_GT(frags, 1000);
+    EXPECT_GE(joins, pairs * 99 / 100);
+  }
+}
+
+TEST(CellClip, SegmentsMatchAnalyticTetIntersection) {
+  CellMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.add_cell(CellType::Tetra, {0, 1, 2, 3});
+  validate_cell_mesh(m, "tet");
+  const Scene s = Scene::from_mesh("tet", m);
+  const int faces[4][3] = {{0, 1, 3}, {1, 2, 3}, {2, 0, 3}, {0, 2, 1}};
+  for (bool ortho : {false, true}) {
+    const Camera cam = test::test_camera({2.2, 1.7, 1.4}, {0.25, 0.25, 0.25}, 40, 40, ortho, 1.6);
+    const FragmentLists fl = collect_fragments(s, cam, {0});
+    int checked = 0;
+    for (int sy = 0; sy < 40; ++sy)
+      for (int sx = 0; sx < 40; ++sx) {
+        const Ray r = cam.ray(sx + 0.5, sy + 0.5);
+        std::vector<double> ts;
+        double margin = 1;
+        for (const auto& fc : faces) {
+          double t, mg;
+          if (ray_hits(r, m.points[fc[0]], m.points[fc[1]], m.points[fc[2]], t, mg)) ts.push_back(t);
+          margin = std::min(margin, std::fabs(mg));
+        }
+        if (margin < 1e-9) continue;  // grazing an edge
+        const auto fr = fl.at(sx, sy);
+        ASSERT_EQ(fr.size(), ts.size() == 2 ? 1u : 0u);
+        if (ts.size() == 2) {
+          EXPECT_NEAR(fr[0].t_in, std::min(ts[0], ts[1]), 1e-12);
+          EXPECT_NEAR(fr[0].t_out, std::max(ts[0], ts[1]), 1e-12);
+          ++checked;
+        }
+      }
+    EXPECT_GT(checked, 50);
+  }
+}
+
+TEST(CellClip, EyeInsideACellGivesSegmentsFromZero) {
+  const CellMesh m = test::tet_block(1, 2.0);
+  const Scene s = Scene::from_mesh("cube", m);
+  Camera cam = test::test_camera({1.2, 0.9, 0.7}, {0.3, 1.5, 1.1}, 32, 32);
+  const FragmentLists fl = collect_fragments(s, cam, all_primitives(s));
+  for (int64_t i = 0; i < fl.num_samples(); ++i) {
+    const auto fr = fl.local(i);
+    ASSERT_GE(fr.size(), 1u);  // the eye is inside the block: every ray sees it
+    double first = 1e300;
+    for (const Fragment& x : fr) first = std::min(first, x.t_in);
+    EXPECT_EQ(first, 0.0);
+  }
+}
+
+TEST(Splat, FootprintIsADisc) {
+  VoxelGrid g;
+  g.dims = {1, 1, 1};
+  g.values = {1.0f};
+  g.threshold = 0.5f;
+  const Scene s = Scene::from_grid("one", g);
+  Camera cam = test::test_camera({0, 0, 10}, {0, 0, 0}, 64, 64, true, 8.0);
+  cam.up = {0, 1, 0};
+  for (int S : {1, 2}) {
+    CollectOptions o;
+    o.supersample = S;
+    o.splat_radius_px = 10;
+    const FragmentLists fl = collect_fragments(s, cam, {0}, o);
+    const double area = double(fl.fragments.size()) / (S * S);
+    EXPECT_NEAR(area, M_PI * 100, 0.05 * M_PI * 100);
+    for (const Fragment& fr : fl.fragments) EXPECT_DOUBLE_EQ(fr.t_in, 10.0);
+  }
+  // Automatic radius: the half diagonal sqrt(3)/2 voxel at 8 pixels per unit.
+  Splat sp;
+  const SampleFrame f(cam, 1);
+  ASSERT_TRUE(make_splat(f, {0, 0, 0}, {1, 1, 1}, 0, sp));
+  EXPECT_NEAR(sp.radius, 8 * std::sqrt(3.0) / 2, 1e-12);
+}
