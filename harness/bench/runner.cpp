@@ -10,6 +10,7 @@
 #include "harness/bench/context.h"
 #include "harness/bench/registry.h"
 #include "harness/bench/results.h"
+#include "harness/raster/polygon_raster.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
@@ -175,6 +176,20 @@ nlohmann::json scene_facts(const Scene& scene) {
   return j;
 }
 
+int64_t exterior_area_pixels(const Scene& scene, const Camera& view) {
+  const SampleFrame frame(view, 1);
+  const MeshFaces& faces = scene.faces();
+  const CellMesh& mesh = scene.mesh();
+  int64_t covered = 0;
+  for (int32_t f : faces.boundary) {
+    Vec3 v[4];
+    const int n = faces.face_size(f);
+    for (int i = 0; i < n; ++i) v[i] = mesh.points[faces.face_points(f)[i]];
+    rasterize_polygon(frame, v, n, frame.bounds(), [&](int, int, double) { ++covered; });
+  }
+  return covered;
+}
+
 RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
   namespace fs = std::filesystem;
   RunSummary summary;
@@ -271,6 +286,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
                                         file_safe(ds.label() + "-" + spec + "-v" +
                                                   std::to_string(vi) + "-" + size_text(w, h)))
                                            .string();
+              fs::create_directories(image_dir);
               write_png(ordered, stem + "-order.png");
               write_png(exact, stem + "-exact.png");
               write_png(difference_image(ordered, exact), stem + "-diff.png");

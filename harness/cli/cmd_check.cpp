@@ -52,6 +52,7 @@ Command add_check_command(CLI::App& app) {
         namespace fs = std::filesystem;
         const Image ordered = render_in_order(scene, cam, m.ordering.order);
         const Image exact = render_exact(scene, cam);
+        fs::create_directories(*images);
         const std::string stem = (fs::path(*images) / ("view" + std::to_string(vi))).string();
         write_png(ordered, stem + "-order.png");
         write_png(exact, stem + "-exact.png");
