@@ -15,7 +15,8 @@ class CentroidOrderer final : public Orderer {
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     auto p = clock.phase("centroids");
-    centroids_ = &scene.cell_centroids().points;
+    scene_ = scene;  // shares the data and cache: the centroids live as long as we do
+    centroids_ = &scene_.cell_centroids().points;
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
@@ -49,6 +50,7 @@ class CentroidOrderer final : public Orderer {
 
  private:
   bool view_key_;
+  Scene scene_;
   const std::vector<Vec3>* centroids_ = nullptr;
   std::vector<float> keys_;
   std::vector<int32_t> ids_, scratch_ids_;

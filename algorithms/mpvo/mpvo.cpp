@@ -8,7 +8,7 @@ namespace {
 
 Claims mpvo_claims() {
   Claims c;
-  c.reports_cycles = true;
+  c.detects_cycles = true;
   return c;
 }
 
@@ -55,8 +55,9 @@ class MpvoncOrderer final : public Orderer {
   void prepare(const Scene& scene, PhaseClock& clock) override {
     { auto p = clock.phase("unique faces"); scene.faces(); }
     { auto p = clock.phase("face planes"); scene.face_planes(); }
-    { auto p = clock.phase("cell centroids"); centroids_ = &scene.cell_centroids().points; }
+    { auto p = clock.phase("cell centroids"); scene.cell_centroids(); }
     core_.bind(scene);
+    centroids_ = &core_.scene().cell_centroids().points;
     marked_.assign(scene.mesh().num_cells(), 0);
   }
 

@@ -14,7 +14,7 @@
 //           cells left unvisited by cycles). A heuristic on nonconvex meshes.
 //
 // Both claim nothing (Claims{} = heuristic): a claim holds for every scene and most
-// scenes are not convex. Both report and break visibility cycles (reports_cycles).
+// scenes are not convex. Both report and break visibility cycles (detects_cycles).
 // Counters: exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots
 // (DFS roots needed after the sinks: cells whose front paths all end in cycles), and for
 // mpvonc exterior_cells.

@@ -38,16 +38,30 @@ size_t ExtraRelations::bytes() const {
 }
 
 void MpvoCore::bind(const Scene& scene) {
-  mesh_ = &scene.mesh();
-  faces_ = &scene.faces();
-  planes_ = &scene.face_planes();
+  scene_ = scene;
+  mesh_ = &scene_.mesh();
+  faces_ = &scene_.faces();
+  planes_ = &scene_.face_planes();
   const Aabb box = mesh_->bounds();
   coord_bound_ = box.empty() ? 0.0
                              : length(Vec3{std::max(std::fabs(box.lo.x), std::fabs(box.hi.x)),
                                            std::max(std::fabs(box.lo.y), std::fabs(box.hi.y)),
                                            std::max(std::fabs(box.lo.z), std::fabs(box.hi.z))});
-  sign_.assign(faces_->num_faces(), 0);
-  outbound_.assign(mesh_->num_cells(), 0);
+  const size_t nf = faces_->num_faces(), nc = mesh_->num_cells();
+  neighbour_.assign(faces_->cell_faces.size(), -1);
+  face_slot_.assign(2 * nf, 0xff);
+  for (size_t c = 0; c < nc; ++c) {
+    const int32_t begin = faces_->cell_face_offsets[c], count = faces_->cell_face_offsets[c + 1] - begin;
+    if (count > kExtraSlot) throw std::logic_error("MpvoCore: a cell has more than 8 faces");
+    for (int32_t k = 0; k < count; ++k) {
+      const int32_t f = faces_->cell_faces[begin + k];
+      neighbour_[begin + k] = faces_->other(f, static_cast<int32_t>(c));
+      face_slot_[2 * f + (faces_->cell0[f] == static_cast<int32_t>(c) ? 0 : 1)] = static_cast<uint8_t>(k);
+    }
+  }
+  sign_.assign(nf, 0);
+  outbound_.assign(nc, 0);
+  behind_mask_.assign(nc, 0);
   state_.assign(mesh_->num_cells(), kNew);
   stack_.clear();
   extra_ = nullptr;
@@ -64,13 +78,16 @@ void MpvoCore::create_partial_order(const Camera& view) {
   if (!faces_) throw std::logic_error("MpvoCore: create_partial_order before bind");
   const size_t nf = faces_->num_faces();
   std::fill(outbound_.begin(), outbound_.end(), 0);
+  std::fill(behind_mask_.begin(), behind_mask_.end(), 0);
   exact_calls_ = double_wrong_ = arrows_ = 0;
   const Vec3* normal = planes_->normal.data();
   const double* offset = planes_->offset.data();
   const int32_t* cell0 = faces_->cell0.data();
   const int32_t* cell1 = faces_->cell1.data();
+  const uint8_t* slot = face_slot_.data();
   int8_t* sign = sign_.data();
   uint8_t* outbound = outbound_.data();
+  uint8_t* behind = behind_mask_.data();
 
   // Perspective: s = sign(n.eye + d). Orthographic: the eye is at infinity along -dir,
   // s = sign(-n.dir). Both: value = n.w + w0 with w, w0 fixed per view.
@@ -96,7 +113,14 @@ void MpvoCore::create_partial_order(const Camera& view) {
     const int32_t c1 = cell1[f];
     if (c1 >= 0 && s != 0) {
       // s > 0: eye on cell1's side, cell1 in front, the arrow leaves cell0.
-      ++outbound[s > 0 ? cell0[f] : c1];
+      const int32_t c0 = cell0[f];
+      if (s > 0) {
+        ++outbound[c0];
+        behind[c1] |= static_cast<uint8_t>(1u << slot[2 * f + 1]);
+      } else {
+        ++outbound[c1];
+        behind[c0] |= static_cast<uint8_t>(1u << slot[2 * f]);
+      }
       ++arrows_;
     }
   }
@@ -134,10 +158,8 @@ void MpvoCore::report_cycle(int32_t closing, Ordering& out) {
 bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
   if (state_[root] != kNew) return false;
   const int32_t* cfo = faces_->cell_face_offsets.data();
-  const int32_t* cf = faces_->cell_faces.data();
-  const int32_t* cell0 = faces_->cell0.data();
-  const int32_t* cell1 = faces_->cell1.data();
-  const int8_t* sign = sign_.data();
+  const int32_t* nbr = neighbour_.data();
+  const uint8_t* behind = behind_mask_.data();
   const bool has_extra = extra_ && !extra_->offsets.empty();
   const int32_t* xoff = has_extra ? extra_->offsets.data() : nullptr;
   const int32_t* xbehind = has_extra ? extra_->behind.data() : nullptr;
@@ -148,34 +170,35 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
   while (!stack_.empty()) {
     const int32_t c = stack_.back().cell;
     int32_t next = stack_.back().next;
-    const int32_t nfaces = cfo[c + 1] - cfo[c];
-    const int32_t nslots = nfaces + (has_extra ? xoff[c + 1] - xoff[c] : 0);
     int32_t child = -1;
-    while (next < nslots) {
-      const int32_t slot = next++;
-      int32_t nb;
-      if (slot < nfaces) {
-        const int32_t f = cf[cfo[c] + slot];
-        const int s = sign[f];
-        const int32_t c1 = cell1[f];
-        if (s == 0 || c1 < 0) continue;
-        // The neighbour is behind c when the eye is on c's side of the face.
-        if (c == cell0[f]) {
-          if (s > 0) continue;
-          nb = c1;
-        } else {
-          if (s < 0) continue;
-          nb = cell0[f];
+    if (next < kExtraSlot) {
+      // Behind neighbours across faces: the set bits of the mask from slot `next` on.
+      unsigned bits = behind[c] & (0xffu << next);
+      while (bits) {
+        const int slot = __builtin_ctz(bits);
+        bits &= bits - 1;
+        const int32_t nb = nbr[cfo[c] + slot];
+        const uint8_t st = state_[nb];
+        if (st == kNew) {
+          child = nb;
+          next = slot + 1;
+          break;
         }
-      } else {
-        nb = xbehind[xoff[c] + (slot - nfaces)];
+        if (st == kOnStack) report_cycle(nb, out);  // back edge: ignore it, keep going
       }
-      const uint8_t st = state_[nb];
-      if (st == kNew) {
-        child = nb;
-        break;
+      if (child < 0) next = kExtraSlot;
+    }
+    if (child < 0 && has_extra) {
+      const int32_t count = xoff[c + 1] - xoff[c];
+      while (next - kExtraSlot < count) {
+        const int32_t nb = xbehind[xoff[c] + (next++ - kExtraSlot)];
+        const uint8_t st = state_[nb];
+        if (st == kNew) {
+          child = nb;
+          break;
+        }
+        if (st == kOnStack) report_cycle(nb, out);
       }
-      if (st == kOnStack) report_cycle(nb, out);  // back edge: ignore it, keep going
     }
     if (child >= 0) {
       stack_.back().next = next;
@@ -214,7 +237,8 @@ void MpvoCore::add_counters(Ordering& out) const {
 }
 
 size_t MpvoCore::bytes() const {
-  return sign_.capacity() + outbound_.capacity() + state_.capacity() +
+  return neighbour_.capacity() * sizeof(int32_t) + face_slot_.capacity() + sign_.capacity() +
+         outbound_.capacity() + behind_mask_.capacity() + state_.capacity() +
          stack_.capacity() * sizeof(Frame);
 }
 

@@ -7,7 +7,9 @@
 // is the MPVO arrow: +1 means cell1 is in front of cell0. The double sign n.eye + d (or
 // -n.dir for orthographic views) is trusted when it clears an error bound; otherwise the
 // exact predicate decides on the face's first three vertices, which both cells share since
-// faces are stored once. Per cell the number of outbound arrows (neighbours in front) is
+// faces are stored once (for a non-planar quad that triangle and the Newell plane may
+// disagree near the plane; the triangle wins and the disagreement counts as
+// double_sign_wrong). Per cell the number of outbound arrows (neighbours in front) is
 // kept; cells with none are MPVO's sink cells.
 //
 // Phase II (dfs_*): iterative depth-first search against the arrows. The eligible
@@ -63,7 +65,9 @@ class MpvoCore {
 
   // Binds the scene's unique faces and face planes; builds them if the caller has not
   // (callers build them first inside their own prepare phases so the time is attributed).
+  // Keeps a copy of the Scene handle, which shares the data and the derived structures.
   void bind(const Scene& scene);
+  const Scene& scene() const { return scene_; }
   size_t num_cells() const { return outbound_.size(); }
   const MeshFaces& faces() const { return *faces_; }
 
@@ -94,25 +98,35 @@ class MpvoCore {
   // Adds exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots.
   void add_counters(Ordering& out) const;
 
-  // Memory held per view: face signs, outbound counts, DFS flags and stack.
+  // Memory held: slot adjacency, face signs, per-cell arrow counts and masks, DFS flags
+  // and stack (the scene's faces and planes are counted by the scene).
   size_t bytes() const;
 
  private:
   enum : uint8_t { kNew = 0, kOnStack = 1, kDone = 2 };
+  static constexpr int32_t kExtraSlot = 8;  // slots 0..7 are faces, then extra relations
   struct Frame {
     int32_t cell;
-    int32_t next;  // next eligible-neighbour slot: faces first, then extra relations
+    int32_t next;  // next eligible-neighbour slot to look at
   };
   int exact_sign(int32_t f, const Camera& view, Vec3 dir) const;
   void report_cycle(int32_t closing, Ordering& out);
 
+  Scene scene_;  // keeps the derived structures below alive
   const CellMesh* mesh_ = nullptr;
   const MeshFaces* faces_ = nullptr;
   const FacePlanes* planes_ = nullptr;
   double coord_bound_ = 0;  // R: bounds |p| for every mesh point
 
-  std::vector<int8_t> sign_;       // per face, per view
-  std::vector<uint8_t> outbound_;  // per cell: arrows to neighbours in front
+  // View-independent adjacency in cell-face slot order (slot k of cell c is
+  // cell_faces[cell_face_offsets[c] + k]): the DFS then reads one cell's neighbours from
+  // one place instead of chasing cell0/cell1 of every face.
+  std::vector<int32_t> neighbour_;  // per slot: the cell across, or -1
+  std::vector<uint8_t> face_slot_;  // per face: its slot in cell0, then in cell1
+
+  std::vector<int8_t> sign_;          // per face, per view
+  std::vector<uint8_t> outbound_;     // per cell: arrows to neighbours in front
+  std::vector<uint8_t> behind_mask_;  // per cell: bit k = the neighbour at slot k is behind
   int64_t exact_calls_ = 0, double_wrong_ = 0, arrows_ = 0;
 
   const ExtraRelations* extra_ = nullptr;

@@ -20,7 +20,7 @@ namespace vob {
 struct Claims {
   bool object_exact = false;  // exact for every ray (any resolution)
   bool image_exact = false;   // exact at the pixel centres of the view it was given
-  bool reports_cycles = false;  // detects visibility cycles among its relations (Ordering::cycles)
+  bool detects_cycles = false;  // finds visibility cycles among the relations it builds
   bool heuristic() const { return !object_exact && !image_exact; }
 };
 

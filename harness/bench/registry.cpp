@@ -2,8 +2,10 @@
 #include "harness/bench/registry.h"
 
 #include "algorithms/centroid/centroid.h"
+#include "algorithms/centroid/triangle_centroid.h"
 #include "algorithms/centroid/vtk_centroid.h"
 #include "algorithms/mpvo/mpvo.h"
+#include "algorithms/voxel/distance_sort.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -14,6 +16,8 @@ const std::vector<OrdererInfo>& orderer_registry() {
       vtk_centroid_orderer_info(),
       mpvo_orderer_info(),
       mpvonc_orderer_info(),
+      triangle_centroid_orderer_info(),
+      distance_sort_orderer_info(),
   };
   return registry;
 }

@@ -1,0 +1,62 @@
+#include "algorithms/centroid/triangle_centroid.h"
+
+#include "harness/sort/radix_sort.h"
+
+namespace vob {
+namespace {
+
+class TriangleCentroid final : public Orderer {
+ public:
+  std::string name() const override { return "triangle-centroid"; }
+  SceneKind scene_kind() const override { return SceneKind::Triangles; }
+  Claims claims() const override { return {}; }
+
+  void prepare(const Scene& scene, PhaseClock& clock) override {
+    auto p = clock.phase("centroids");
+    const TriangleSoup& s = scene.soup();
+    centroids_.resize(s.num_triangles());
+    for (size_t t = 0; t < s.num_triangles(); ++t)
+      centroids_[t] = (s.points[s.tris[t][0]] + s.points[s.tris[t][1]] + s.points[s.tris[t][2]]) / 3.0;
+  }
+
+  Ordering order(const Camera& view, PhaseClock& clock) override {
+    const size_t n = centroids_.size();
+    {
+      auto p = clock.phase("keys");
+      keys_.resize(n);
+      ids_.resize(n);
+      for (size_t i = 0; i < n; ++i) {
+        keys_[i] = static_cast<float>(-view.depth(centroids_[i]));
+        ids_[i] = static_cast<int32_t>(i);
+      }
+    }
+    Ordering o;
+    {
+      auto p = clock.phase("radix sort");
+      radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
+      o.order = ids_;
+    }
+    return o;
+  }
+
+  size_t bytes() const override {
+    return centroids_.capacity() * sizeof(Vec3) + (keys_.capacity() + ids_.capacity() +
+                                                   scratch_keys_.capacity() + scratch_ids_.capacity()) * 4;
+  }
+
+ private:
+  std::vector<Vec3> centroids_;
+  std::vector<float> keys_;
+  std::vector<int32_t> ids_, scratch_ids_;
+  std::vector<uint32_t> scratch_keys_;
+};
+
+}  // namespace
+
+OrdererInfo triangle_centroid_orderer_info() {
+  return {"triangle-centroid", SceneKind::Triangles,
+          "triangles sorted by centroid eye distance with the radix sort (heuristic)", "",
+          [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<TriangleCentroid>(); }};
+}
+
+}  // namespace vob
