@@ -53,6 +53,43 @@ void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
   }
 }
 
+void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values) {
+  const size_t n = keys.size();
+  std::vector<uint64_t> k(n), k2(n);
+  std::vector<int32_t> v2(n);
+  for (size_t i = 0; i < n; ++i) {
+    uint64_t u;
+    std::memcpy(&u, &keys[i], 8);
+    k[i] = (u & 0x8000000000000000ull) ? ~u : (u | 0x8000000000000000ull);
+  }
+  constexpr int kBits = 11, kPasses = 6, kRadix = 1 << kBits;
+  std::vector<uint32_t> hist(size_t(kPasses) * kRadix, 0);
+  for (size_t i = 0; i < n; ++i)
+    for (int p = 0; p < kPasses; ++p) ++hist[size_t(p) * kRadix + ((k[i] >> (p * kBits)) & (kRadix - 1))];
+  for (int p = 0; p < kPasses; ++p) {
+    uint32_t* h = &hist[size_t(p) * kRadix];
+    if (n == 0 || h[(k[0] >> (p * kBits)) & (kRadix - 1)] == n) continue;  // digit constant
+    uint32_t sum = 0;
+    for (int d = 0; d < kRadix; ++d) {
+      const uint32_t c = h[d];
+      h[d] = sum;
+      sum += c;
+    }
+    for (size_t i = 0; i < n; ++i) {
+      const uint32_t pos = h[(k[i] >> (p * kBits)) & (kRadix - 1)]++;
+      k2[pos] = k[i];
+      v2[pos] = values[i];
+    }
+    k.swap(k2);
+    values.swap(v2);
+  }
+  for (size_t i = 0; i < n; ++i) {
+    uint64_t u = k[i];
+    u = (u & 0x8000000000000000ull) ? (u & 0x7fffffffffffffffull) : ~u;
+    std::memcpy(&keys[i], &u, 8);
+  }
+}
+
 std::vector<int32_t> radix_argsort_descending(const std::vector<float>& keys) {
   std::vector<float> k(keys.size());
   std::vector<int32_t> v(keys.size());

@@ -20,6 +20,10 @@ inline uint32_t float_sort_key(float f) {
 void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
                        std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values);
 
+// Double keys (order-preserving 64-bit transform, six 11-bit passes): for references that
+// must not lose ties to float rounding. Sorts `values` by ascending `keys`, stable.
+void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values);
+
 // Convenience: the permutation of [0, keys.size()) sorted by descending key.
 std::vector<int32_t> radix_argsort_descending(const std::vector<float>& keys);
 

@@ -1,0 +1,151 @@
+// Runs the vobench binary as a user would and checks exit codes, messages and outputs.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+struct Outcome {
+  int code;
+  std::string out;  // stdout and stderr together
+};
+
+Outcome vobench(const std::string& args) {
+  const std::string cmd = std::string(VOB_BINARY) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  size_t n;
+  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+fs::path scratch(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / ("vobench_cli_" + std::to_string(getpid()));
+  fs::create_directories(d);
+  return d / name;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
+
+const char* kSmallGap = "--dataset gap --set nx=4 --set ny=4 --set nz=6";
+}  // namespace
+
+TEST(Cli, ListNamesTheFirstOrderersAndDatasets) {
+  const Outcome r = vobench("list");
+  ASSERT_EQ(r.code, 0) << r.out;
+  for (const char* name : {"mpvo", "mpvonc", "centroid", "vtk-centroid", "gap", "helix", "zoo"})
+    EXPECT_NE(r.out.find(name), std::string::npos) << name;
+}
+
+TEST(Cli, CheckPassesExactOrderAndExitsZero) {
+  const Outcome r = vobench(std::string("check --algorithm mpvo ") + kSmallGap + " --views 4 --size 64x64");
+  EXPECT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("0 of 4 views with violations"), std::string::npos) << r.out;
+}
+
+TEST(Cli, CheckJsonHasTheOracleKeysPerView) {
+  const Outcome r = vobench(std::string("check --algorithm centroid ") + kSmallGap +
+                        " --views 2 --size 48x40 --json");
+  ASSERT_LE(r.code, 1) << r.out;
+  const auto j = nlohmann::json::parse(r.out.substr(r.out.find('{')));
+  ASSERT_EQ(j["views"].size(), 2u);
+  for (const char* k : {"covered_pixels", "violating_pixels", "violating_fragments", "violating_pairs", "max_k"})
+    EXPECT_TRUE(j["views"][0].contains(k)) << k;
+  EXPECT_EQ(j["views"][0]["camera"]["width"], 48);
+  EXPECT_EQ(j["views"][0]["camera"]["height"], 40);
+}
+
+TEST(Cli, CheckExitsOneOnAViolation) {
+  // MPVO cannot see across gaps: some of 14 views of a gapped block must fail.
+  const Outcome r = vobench("check --algorithm mpvo --dataset gap --set nx=4 --set ny=4 --set nz=12 "
+                        "--set gaps=3 --views 14 --size 96x96");
+  EXPECT_EQ(r.code, 1) << r.out;
+}
+
+TEST(Cli, OrderWritesAVerifiableOrderJson) {
+  const fs::path out = scratch("order.json");
+  const Outcome r = vobench(std::string("order --algorithm mpvonc ") + kSmallGap +
+                        " --eye 9,1,2 --target 0,0,0 --up 0,0,1 --fov 35 --size 80x60 -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(out);
+  const auto j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["primitive_kind"], "cells");
+  EXPECT_EQ(j["order"].size(), j["primitives"].get<size_t>());
+  EXPECT_EQ(j["camera"]["fov"], 35.0);
+  EXPECT_EQ(j["camera"]["width"], 80);
+  EXPECT_TRUE(j.contains("prepare_phases"));
+  EXPECT_TRUE(j["phases"].contains("I create partial order"));
+  EXPECT_TRUE(j.contains("cycles"));
+}
+
+TEST(Cli, BadInputGetsOneLineAndExitTwo) {
+  const fs::path bad = scratch("bad.node");
+  write(bad, "4 3 0 0\n0 0 0 0\n1 1 0 0\n");  // truncated: 2 of 4 points
+  write(scratch("bad.ele"), "1 4 0\n0 0 1 2 3\n");
+  Outcome r = vobench("check --algorithm mpvo --input " + bad.string() + " --views 1 --size 8x8");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("bad.node"), std::string::npos) << r.out;
+  r = vobench("check --algorithm mpvo --dataset gap --set nx=-3");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("nx"), std::string::npos) << r.out;
+  r = vobench("check --algorithm nosuch --dataset gap");
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("unknown orderer"), std::string::npos) << r.out;
+  r = vobench("check --algorithm centroid:key=sideways --dataset gap");
+  EXPECT_EQ(r.code, 2) << r.out;
+  r = vobench(std::string("check --algorithm mpvo ") + kSmallGap + " --size 0x10");
+  EXPECT_EQ(r.code, 2) << r.out;
+  r = vobench(std::string("check --algorithm mpvo ") + kSmallGap + " --eye nan,0,0 --target 0,0,0");
+  EXPECT_EQ(r.code, 2) << r.out;
+  r = vobench("check --algorithm mpvo");
+  EXPECT_EQ(r.code, 2) << r.out;
+}
+
+TEST(Cli, RunWritesRecordsAndSkipsThemOnRerun) {
+  const fs::path suite = scratch("suite.json");
+  write(suite, R"({"name": "t", "datasets": [{"name": "gap", "set": {"nx": 3, "ny": 3, "nz": 4}}],
+                   "algorithms": ["mpvo", "centroid"], "views": 2, "sizes": ["32x32"],
+                   "repeats": 2, "warmup": 0})");
+  const fs::path results = scratch("results.jsonl");
+  fs::remove(results);
+  Outcome r = vobench("run " + suite.string() + " -o " + results.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream in(results);
+  std::string line;
+  int n = 0;
+  while (std::getline(in, line)) {
+    const auto j = nlohmann::json::parse(line);
+    for (const char* k : {"algorithm", "dataset", "n", "b", "a", "w", "h", "camera", "phases", "total",
+                          "prepare", "bytes", "oracle", "context", "cycles"})
+      EXPECT_TRUE(j.contains(k)) << k;
+    ++n;
+  }
+  EXPECT_EQ(n, 4);
+  r = vobench("run " + suite.string() + " -o " + results.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("0 records written, 4 already present"), std::string::npos) << r.out;
+  const fs::path report = scratch("report");
+  r = vobench("report " + results.string() + " -o " + report.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(report / "report.md"));
+  EXPECT_TRUE(fs::exists(report / "report.html"));
+  EXPECT_FALSE(fs::is_empty(report / "figures"));
+}
+
+TEST(Cli, MalformedSuiteIsBadInput) {
+  const fs::path suite = scratch("broken.json");
+  write(suite, "{\"name\": \"t\", \"datasets\": [");
+  const Outcome r = vobench("run " + suite.string() + " -o " + scratch("x.jsonl").string());
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_NE(r.out.find("broken.json"), std::string::npos) << r.out;
+}
