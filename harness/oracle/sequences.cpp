@@ -1,7 +1,9 @@
 #include "harness/oracle/sequences.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
+#include <memory>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -63,7 +65,7 @@ CellSequences raster_cell_sequences(const Scene& scene, const Camera& view, int 
 }
 
 nlohmann::json SequenceComparison::to_json() const {
-  return {{"samples", samples}, {"equal", equal}, {"grazing", grazing},
+  return {{"samples", samples}, {"equal", equal}, {"grazing", grazing}, {"in_plane", in_plane},
           {"mismatched", mismatched}, {"examples", examples}};
 }
 
@@ -102,10 +104,47 @@ bool grazing_only(std::span<const RaySegment> a, std::span<const RaySegment> b, 
   return common(a) == common(b);
 }
 
+// Differences of a and b all explained by cells whose face plane holds the sample's ray:
+// with those cells removed, the sequences agree.
+bool in_plane_only(int64_t sample, std::span<const RaySegment> a, std::span<const RaySegment> b,
+                   double tol, const InFacePlane& in_plane) {
+  auto keep = [&](std::span<const RaySegment> s) {
+    std::vector<int32_t> v;
+    for (const RaySegment& r : s)
+      if (r.length() >= tol && !in_plane(sample, r.cell)) v.push_back(r.cell);
+    return v;
+  };
+  return keep(a) == keep(b);
+}
+
 }  // namespace
 
+InFacePlane ray_in_face_plane_test(const Scene& scene, const Camera& view, int supersample,
+                                   double tol) {
+  auto frame = std::make_shared<SampleFrame>(view, supersample);
+  return [&scene, frame, tol](int64_t sample, int32_t cell) {
+    const CellMesh& m = scene.mesh();
+    const Ray ray = frame->ray(int(sample % frame->cols()), int(sample / frame->cols()));
+    const LocalFaces& lf = cell_local_faces(m.types[cell]);
+    const int32_t* p = m.cell_points(cell);
+    for (int f = 0; f < lf.count; ++f) {
+      Vec3 n, c;
+      const int k = lf.size[f];
+      for (int i = 0; i < k; ++i) {
+        const Vec3 a = m.points[p[lf.v[f][i]]], b = m.points[p[lf.v[f][(i + 1) % k]]];
+        n += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+        c += a;
+      }
+      n = normalize(n);
+      c = c / k;
+      if (std::fabs(dot(n, ray.dir)) < 1e-9 && std::fabs(dot(n, ray.origin - c)) < tol) return true;
+    }
+    return false;
+  };
+}
+
 SequenceComparison compare_sequences(const CellSequences& a, const CellSequences& b, double tol,
-                                     int max_examples) {
+                                     int max_examples, const InFacePlane& in_plane) {
   if (a.cols != b.cols || a.rows != b.rows)
     throw InputError("oracle", "cell sequences",
                      "grids differ: " + std::to_string(a.cols) + "x" + std::to_string(a.rows) +
@@ -118,6 +157,8 @@ SequenceComparison compare_sequences(const CellSequences& a, const CellSequences
       ++c.equal;
     } else if (grazing_only(sa, sb, tol)) {
       ++c.grazing;
+    } else if (in_plane && in_plane_only(i, sa, sb, tol, in_plane)) {
+      ++c.in_plane;
     } else {
       ++c.mismatched;
       if (int(c.examples.size()) < max_examples)
