@@ -267,16 +267,19 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
           rec["counters"] = m.ordering.counters;
           if (scene.kind() == SceneKind::Cells) rec["a"] = exterior_area_pixels(scene, cam);
           std::string verdict;
+          bool violated = false;
           if (suite.oracle) {
             OracleOptions oo;
             oo.supersample = suite.supersample;
             const OracleResult r = check_ordering(scene, cam, m.ordering.order, oo);
             rec["oracle"] = r.to_json();
-            if (!r.ok()) ++summary.violations;
+            violated = !r.ok();
+            if (violated) ++summary.violations;
             verdict = ", " + std::to_string(r.violating_pixels) + " violating pixels";
           }
           const bool want_images =
-              std::count(suite.image_views.begin(), suite.image_views.end(), vi) > 0;
+              std::count(suite.image_views.begin(), suite.image_views.end(), vi) > 0 ||
+              (suite.images_of_violations && violated);
           if (suite.image_error || want_images) {
             const Image ordered = render_in_order(scene, cam, m.ordering.order);
             const Image exact = render_exact(scene, cam);

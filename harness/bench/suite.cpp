@@ -78,7 +78,8 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& j, const std::string& sourc
   try {
     static const std::set<std::string> known = {
         "name", "datasets", "algorithms", "views", "view_indices", "ortho", "zoom", "sizes",
-        "repeats", "warmup", "oracle", "supersample", "image_error", "image_views", "comment"};
+        "repeats", "warmup", "oracle", "supersample", "image_error", "image_views",
+        "images_of_violations", "comment"};
     for (const auto& [k, v] : j.items())
       if (!known.count(k)) throw InputError(source, "key '" + k + "'", "is not a suite key");
     s.name = j.value("name", std::string("suite"));
@@ -109,6 +110,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& j, const std::string& sourc
     s.supersample = j.value("supersample", 1);
     s.image_error = j.value("image_error", false);
     if (j.contains("image_views")) s.image_views = j["image_views"].get<std::vector<int>>();
+    s.images_of_violations = j.value("images_of_violations", false);
   } catch (const nlohmann::json::exception& e) {
     throw InputError(source, "suite", e.what());
   }

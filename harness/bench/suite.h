@@ -5,7 +5,8 @@
 //    "algorithms": ["mpvo", "centroid:key=view"],   // or ["all"]: every orderer of the kind
 //    "views": 14, "view_indices": [0, 3], "ortho": false, "zoom": 1,
 //    "sizes": ["512x512", "640x480"], "repeats": 3, "warmup": 1,
-//    "oracle": true, "supersample": 1, "image_error": true, "image_views": [0]}
+//    "oracle": true, "supersample": 1, "image_error": true, "image_views": [0],
+//    "images_of_violations": false}
 #pragma once
 #include <map>
 #include <string>
@@ -40,6 +41,7 @@ struct SuiteSpec {
   int supersample = 1;
   bool image_error = false;
   std::vector<int> image_views;   // views whose images are written
+  bool images_of_violations = false;  // also every view the oracle finds violations in
 
   static SuiteSpec from_json(const nlohmann::json& j, const std::string& source);
   static SuiteSpec load(const std::string& path);

@@ -33,11 +33,12 @@ int run_report(const std::vector<std::string>& results, const std::string& out_d
   return WIFEXITED(status) ? WEXITSTATUS(status) : 2;
 }
 
-int run_suite_experiment(const std::string& suite_file, const std::string& name,
+int run_suite_experiment(const std::vector<std::string>& suite_files, const std::string& name,
                          const std::string& title, const ExperimentContext& ctx) {
   namespace fs = std::filesystem;
-  const std::string suite_path = std::string(VOB_SOURCE_DIR) + "/datasets/suites/" + suite_file;
-  SuiteSpec suite = SuiteSpec::load(suite_path);
+  std::vector<SuiteSpec> suites;  // all parsed before anything runs: a bad file fails fast
+  for (const auto& f : suite_files)
+    suites.push_back(SuiteSpec::load(std::string(VOB_SOURCE_DIR) + "/datasets/suites/" + f));
   fs::create_directories(ctx.out_dir);
   const std::string results = (fs::path(ctx.out_dir) / "results.jsonl").string();
   if (!ctx.resume) {
@@ -51,9 +52,12 @@ int run_suite_experiment(const std::string& suite_file, const std::string& name,
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::fprintf(stderr, "[%6.1f s] %s\n", s, line.c_str());
   };
-  const RunSummary r = run_suite(suite, opt);
-  std::cerr << name << ": " << r.written << " records written, " << r.skipped << " kept, "
-            << r.violations << " with oracle violations\n";
+  for (const SuiteSpec& suite : suites) {
+    std::fprintf(stderr, "suite %s\n", suite.name.c_str());
+    const RunSummary r = run_suite(suite, opt);
+    std::cerr << suite.name << ": " << r.written << " records written, " << r.skipped << " kept, "
+              << r.violations << " with oracle violations\n";
+  }
   return run_report({results}, ctx.out_dir, title, name);
 }
 

@@ -27,9 +27,9 @@ int run_report(const std::vector<std::string>& results, const std::string& out_d
                const std::string& title, const std::string& name,
                const std::vector<std::string>& include_md = {});
 
-// Runs the suite file (relative to datasets/suites/) into out_dir/results.jsonl, fresh
+// Runs the suite files (relative to datasets/suites/) into out_dir/results.jsonl, fresh
 // unless ctx.resume, printing progress; then the report. Returns the report's status.
-int run_suite_experiment(const std::string& suite_file, const std::string& name,
+int run_suite_experiment(const std::vector<std::string>& suite_files, const std::string& name,
                          const std::string& title, const ExperimentContext& ctx);
 
 }  // namespace vob
