@@ -84,17 +84,21 @@ void CellClipper::setup(int32_t c) {
     const bool forward = loop[(m + 1) % n] < loop[(m + n - 1) % n];
     int32_t can[4] = {0, 0, 0, 0};
     for (int i = 0; i < n; ++i) can[i] = loop[forward ? (m + i) % n : (m - i + n) % n];
+    // Newell's normal relative to the canonical first vertex: exact differences keep its
+    // precision far from the origin (meshes offset by 1e7), identical for both owners.
+    const Vec3 o = mesh_.points[can[0]];
     Vec3 nrm, cen;
     for (int i = 0; i < n; ++i) {
-      const Vec3 a = mesh_.points[can[i]], b = mesh_.points[can[(i + 1) % n]];
+      const Vec3 a = mesh_.points[can[i]] - o, b = mesh_.points[can[(i + 1) % n]] - o;
       nrm += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
       cen += a;
     }
-    double d = -dot(nrm, cen / n);
+    cen = o + cen / n;
+    double d = -dot(nrm, cen);
     if (!forward) nrm = -nrm, d = -d;
     n_[f] = nrm;
     d_[f] = d;
-    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -(dot(nrm, frame_.eye()) + d);
+    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -dot(nrm, frame_.eye() - cen);
   }
 }
 

@@ -50,25 +50,28 @@ bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n) {
     throw InputError("raster", "polygon", "has " + std::to_string(n) + " vertices, not 3 or 4");
   frame_ = &frame;
   count_ = 0;
+  Vec3 on_plane = v[0];
   if (n == 3) {
     plane_.n = cross(v[1] - v[0], v[2] - v[0]);
-    plane_.d = -dot(plane_.n, v[0]);
   } else {
+    // Newell's normal relative to v[0]: exact differences keep full precision far from
+    // the origin (the `offset` hard case), where raw coordinates would cancel.
     Vec3 nrm, cen;
     for (int i = 0; i < 4; ++i) {
-      const Vec3 a = v[i], b = v[(i + 1) % 4];
+      const Vec3 a = v[i] - v[0], b = v[(i + 1) % 4] - v[0];
       nrm += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
       cen += a;
     }
     plane_.n = nrm;
-    plane_.d = -dot(nrm, cen * 0.25);
+    on_plane = v[0] + cen * 0.25;
   }
+  plane_.d = -dot(plane_.n, on_plane);
   if (frame.ortho()) {
     const double nf = dot(plane_.n, frame.forward());
     if (nf == 0) return false;
     inv_nf_ = 1.0 / nf;
   } else {
-    num_ = -(dot(plane_.n, frame.eye()) + plane_.d);
+    num_ = -dot(plane_.n, frame.eye() - on_plane);  // no cancellation of large terms
   }
   if (n == 3) {
     add_triangle(v[0], v[1], v[2]);
