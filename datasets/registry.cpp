@@ -23,8 +23,8 @@ std::vector<DatasetInfo> build_registry() {
        "nx=50 ny=50 nz=100 (1..1000, nz 1..2000): hexahedra per axis, 6 tets each; "
        "gaps=0 (0..95, < nz): empty slabs of width 0.5 across z",
        false, make_gap, nullptr},
-      {"helix", K::Cells, "thin inner helical tube inside a thick outer one (Cook et al. Fig. 8)",
-       "cells=20000 (108*turns..50M, met within 5%): tetrahedra; turns=3 (1..20)", false,
+      {"helix", K::Cells, "solid green tube inside the bore of a hollow pink one, 0.001 apart (Cook et al. Fig. 8)",
+       "cells=20000 (162*turns..50M, met within 5%): tetrahedra; turns=3 (1..20)", false,
        make_helix, nullptr},
       {"zoo", K::Cells, "six lat-long spheres of tets, pyramids, wedges, hexes (Cook et al. Fig. 14)",
        "scale=1 (1..10): resolution multiplier, cells = 7200*scale^3", false, make_zoo, nullptr},

@@ -12,59 +12,103 @@ namespace vob {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kPitch = 3.0;
 constexpr int kMinStepsPerTurn = 6;
+constexpr HelixShape kShape{};
+static_assert(kShape.inner_radius < kShape.hole_radius && kShape.hole_radius < kShape.outer_radius);
+// Adjacent turns (perpendicular spacing ~ pitch * cos(pitch angle) ~ 2.9) stay apart.
+static_assert(2 * kShape.outer_radius < 0.95 * kShape.pitch && kShape.outer_radius < kShape.coil_radius);
 
-struct Tube {
-  double coil_radius, tube_radius, phase, scalar_lo, scalar_hi;
+// A cross-section in the sweep frame: points at (radius, angle) with scalars, and
+// triangles clockwise in (U, V) so that each prism's bottom faces backwards along the sweep
+// (VTK wedge orientation).
+struct Section {
+  std::vector<double> radius, angle, scalar;
+  std::vector<std::array<int32_t, 3>> tris;
 };
-// Radial gap >= (2.4 - 0.6) - sqrt((1 + 0.35)^2 + (0.35 sin a)^2) > 0.44 (a: pitch angle).
-constexpr Tube kInner{1.0, 0.35, 0.0, 0.2, 0.3};
-constexpr Tube kOuter{2.4, 0.6, kPi, 0.7, 0.8};
 
-void append_tube(CellMesh& m, const Tube& tube, const HelixResolution& res, int turns,
-                 Vec3 offset) {
-  const int ns = res.sectors, nr = res.rings, nt = res.steps;
-  const int32_t per_section = 1 + ns * nr;
+// Rings of `sectors` points at radii r[0] < r[1] < ... (scalars s, one per ring) with quads
+// between consecutive rings; with `centre`, first a centre point (scalar centre_scalar)
+// joined to ring 0 by a fan.
+Section ring_section(bool centre, double centre_scalar, const std::vector<double>& r,
+                     const std::vector<double>& s, int sectors) {
+  Section sec;
+  const int ns = sectors, nr = static_cast<int>(r.size());
+  if (centre) {
+    sec.radius.push_back(0);
+    sec.angle.push_back(0);
+    sec.scalar.push_back(centre_scalar);
+  }
+  const int base = centre ? 1 : 0;
+  for (int i = 0; i < nr; ++i)
+    for (int j = 0; j < ns; ++j) {
+      sec.radius.push_back(r[i]);
+      sec.angle.push_back(2 * kPi * j / ns);
+      sec.scalar.push_back(s[i]);
+    }
+  auto id = [&](int ring, int sector) { return base + ring * ns + sector % ns; };
+  if (centre)
+    for (int j = 0; j < ns; ++j) sec.tris.push_back({0, id(0, j + 1), id(0, j)});
+  for (int i = 0; i + 1 < nr; ++i)
+    for (int j = 0; j < ns; ++j) {
+      const int a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
+      sec.tris.push_back({a, c, b});
+      sec.tris.push_back({a, d, c});
+    }
+  return sec;
+}
+
+// Inner tube: a disk, scalar 0.3 on the centre line falling to 0.2 at its surface.
+Section inner_section(const HelixResolution& res) {
+  std::vector<double> r, s;
+  for (int i = 1; i <= res.inner_rings; ++i) {
+    r.push_back(kShape.inner_radius * i / res.inner_rings);
+    s.push_back(0.3 - 0.1 * i / res.inner_rings);
+  }
+  return ring_section(true, 0.3, r, s, res.sectors);
+}
+
+// Outer tube: an annulus from the bore to the outside, scalar 0.8 at the bore falling to
+// 0.7 outside. Its bore polygon has the same angles as the inner tube's rim, so in every
+// section the rim is the bore scaled by inner/hole radius and the film between them is at
+// least (hole - inner radius) * cos(pi / sectors) thick: thin, but never closed.
+Section outer_section(const HelixResolution& res) {
+  std::vector<double> r, s;
+  for (int i = 0; i <= res.outer_layers; ++i) {
+    r.push_back(kShape.hole_radius + (kShape.outer_radius - kShape.hole_radius) * i / res.outer_layers);
+    s.push_back(0.8 - 0.1 * i / res.outer_layers);
+  }
+  return ring_section(false, 0, r, s, res.sectors);
+}
+
+// Sweeps `sec` along the centre line in `steps` steps; every swept triangle is a prism cut
+// into three tetrahedra with the conforming min-id rule (prism_split.h).
+void sweep(CellMesh& m, const Section& sec, int steps, int turns, Vec3 offset) {
+  const auto per_section = static_cast<int32_t>(sec.radius.size());
   const auto first = static_cast<int32_t>(m.points.size());
-  const double R = tube.coil_radius, b = kPitch / (2 * kPi), L = std::sqrt(R * R + b * b);
+  const double R = kShape.coil_radius, b = kShape.pitch / (2 * kPi), L = std::sqrt(R * R + b * b);
   const double span = 2 * kPi * turns;
-  for (int k = 0; k <= nt; ++k) {
-    const double u = span * k / nt, t = tube.phase + u;
-    const Vec3 c{R * std::cos(t), R * std::sin(t), b * u};
+  std::vector<double> x(per_section), y(per_section);
+  for (int32_t q = 0; q < per_section; ++q) {
+    x[q] = sec.radius[q] * std::cos(sec.angle[q]);
+    y[q] = sec.radius[q] * std::sin(sec.angle[q]);
+  }
+  for (int k = 0; k <= steps; ++k) {
+    const double t = span * k / steps;
+    const Vec3 c = helix_centre(t);
     const Vec3 n{-std::cos(t), -std::sin(t), 0};
     const Vec3 bn{b * std::sin(t) / L, -b * std::cos(t) / L, R / L};
     // Rotation-minimising frame: the Frenet frame turned back by the torsion angle, so
     // consecutive sections do not twist about the tangent (twisted prisms would invert).
-    const double th = -b * u / L;
+    const double th = -b * t / L;
     const Vec3 U = n * std::cos(th) + bn * std::sin(th), V = bn * std::cos(th) - n * std::sin(th);
-    m.points.push_back(offset + c);
-    m.scalars.push_back(tube.scalar_hi);
-    for (int i = 1; i <= nr; ++i) {
-      const double rho = tube.tube_radius * i / nr;
-      const double s = tube.scalar_hi - (tube.scalar_hi - tube.scalar_lo) * i / nr;
-      for (int j = 0; j < ns; ++j) {
-        const double phi = 2 * kPi * j / ns;
-        m.points.push_back(offset + c + (U * std::cos(phi) + V * std::sin(phi)) * rho);
-        m.scalars.push_back(s);
-      }
+    for (int32_t q = 0; q < per_section; ++q) {
+      m.points.push_back(offset + c + U * x[q] + V * y[q]);
+      m.scalars.push_back(sec.scalar[q]);
     }
   }
-  // Section triangles, clockwise in (U, V) so that each prism's bottom faces backwards
-  // along the sweep (VTK wedge orientation).
-  auto id = [&](int ring, int sector) { return ring == 0 ? 0 : 1 + (ring - 1) * ns + sector % ns; };
-  std::vector<std::array<int32_t, 3>> tris;
-  tris.reserve(size_t(ns) * (2 * nr - 1));
-  for (int j = 0; j < ns; ++j) tris.push_back({0, id(1, j + 1), id(1, j)});
-  for (int i = 1; i < nr; ++i)
-    for (int j = 0; j < ns; ++j) {
-      const int a = id(i, j), bb = id(i + 1, j), cc = id(i + 1, j + 1), d = id(i, j + 1);
-      tris.push_back({a, cc, bb});
-      tris.push_back({a, d, cc});
-    }
-  for (int k = 0; k < nt; ++k) {
+  for (int k = 0; k < steps; ++k) {
     const int32_t lo = first + k * per_section, hi = lo + per_section;
-    for (const auto& tr : tris) {
+    for (const auto& tr : sec.tris) {
       const int32_t ids[6] = {lo + tr[0], lo + tr[1], lo + tr[2], hi + tr[0], hi + tr[1], hi + tr[2]};
       int32_t tets[3][4];
       split_prism(ids, tets);
@@ -72,9 +116,30 @@ void append_tube(CellMesh& m, const Tube& tube, const HelixResolution& res, int 
     }
   }
 }
+
+// Arc between sectors at mid-wall: the cell size every count is derived from.
+double cell_size(int sectors) { return kPi * (kShape.hole_radius + kShape.outer_radius) / sectors; }
+
+// Rings and wall layers for `sectors`, cells near-isotropic (steps are set by the caller).
+HelixResolution cross_section(int sectors) {
+  HelixResolution r;
+  r.sectors = sectors;
+  const double h = cell_size(sectors);
+  r.inner_rings = std::max(1, static_cast<int>(std::lround(kShape.inner_radius / h)));
+  r.outer_layers = std::max(1, static_cast<int>(std::lround((kShape.outer_radius - kShape.hole_radius) / h)));
+  return r;
+}
 }  // namespace
 
-int helix_min_cells(int turns) { return 2 * 3 * 3 * kMinStepsPerTurn * turns; }
+Vec3 helix_centre(double t) {
+  return {kShape.coil_radius * std::cos(t), kShape.coil_radius * std::sin(t), kShape.pitch * t / (2 * kPi)};
+}
+
+int helix_min_cells(int turns) {
+  HelixResolution r = cross_section(3);
+  r.steps = kMinStepsPerTurn * turns;
+  return static_cast<int>(r.cells());
+}
 
 HelixResolution helix_resolution(int cells, int turns) {
   if (cells < helix_min_cells(turns))
@@ -82,14 +147,23 @@ HelixResolution helix_resolution(int cells, int turns) {
                      std::to_string(cells) + " is below the smallest helix with " +
                          std::to_string(turns) + " turns (" +
                          std::to_string(helix_min_cells(turns)) + " cells)");
-  // Near-isotropic cells: rings ~ sectors/(2 pi), steps ~ 11 sectors (the tubes are about
-  // 11 circumferences long), so cells ~ 21 sectors^3; then steps absorb the remainder.
+  const double b = kShape.pitch / (2 * kPi);
+  const double length = 2 * kPi * turns * std::sqrt(kShape.coil_radius * kShape.coil_radius + b * b);
+  // The sector count whose isotropic helix (steps as long as the cell size) is nearest
+  // `cells`; then steps absorb the remainder, with fewer sectors when that would leave
+  // fewer than kMinStepsPerTurn steps per turn.
+  auto isotropic = [&](int ns) {
+    HelixResolution r = cross_section(ns);
+    r.steps = std::max(1, static_cast<int>(std::lround(length / cell_size(ns))));
+    return double(r.cells());
+  };
+  int ns = 3;
+  while (isotropic(ns + 1) <= cells) ++ns;
+  if (isotropic(ns + 1) / cells < cells / isotropic(ns)) ++ns;
   HelixResolution r;
-  for (int ns = std::max(3, static_cast<int>(std::lround(std::cbrt(cells / 21.0)))); ns >= 3; --ns) {
-    r.sectors = ns;
-    r.rings = std::max(1, static_cast<int>(std::lround(ns / (2 * kPi))));
-    const int per_step = 6 * ns * (2 * r.rings - 1);
-    r.steps = static_cast<int>(std::lround(double(cells) / per_step));
+  for (; ns >= 3; --ns) {
+    r = cross_section(ns);
+    r.steps = static_cast<int>(std::lround(double(cells) / r.per_step()));
     if (r.steps >= kMinStepsPerTurn * turns) break;
   }
   return r;
@@ -97,16 +171,17 @@ HelixResolution helix_resolution(int cells, int turns) {
 
 CellMesh make_helix_mesh(const HelixSpec& s) {
   const HelixResolution r = helix_resolution(s.cells, s.turns);
+  const Section inner = inner_section(r), outer = outer_section(r);
   CellMesh m;
   const int64_t cells = r.cells();
-  const int64_t points = int64_t(2) * (r.steps + 1) * (1 + r.sectors * r.rings);
+  const int64_t points = int64_t(r.steps + 1) * int64_t(inner.radius.size() + outer.radius.size());
   m.points.reserve(points);
   m.scalars.reserve(points);
   m.types.reserve(cells);
   m.offsets.reserve(cells + 1);
   m.conn.reserve(4 * cells);
-  append_tube(m, kInner, r, s.turns, s.offset);
-  append_tube(m, kOuter, r, s.turns, s.offset);
+  sweep(m, inner, r.steps, s.turns, s.offset);
+  sweep(m, outer, r.steps, s.turns, s.offset);
   return m;
 }
 

@@ -5,7 +5,9 @@
 #include "datasets/generators/gap.h"
 #include "datasets/generators/helix.h"
 #include "harness/geometry/predicates.h"
+#include "harness/oracle/sequences.h"
 #include "harness/scene/mesh_faces.h"
+#include "harness/view/view_set.h"
 #include "tests/datasets/test_util.h"
 
 using namespace vob;
@@ -80,8 +82,8 @@ TEST(Generators, ParameterCornersAreValid) {
   const std::vector<std::pair<std::string, std::vector<std::pair<std::string, std::string>>>> corners = {
       {"gap", {{"nx", "1"}, {"ny", "1"}, {"nz", "1"}}},
       {"gap", {{"nx", "2"}, {"ny", "3"}, {"nz", "96"}, {"gaps", "95"}}},
-      {"helix", {{"turns", "20"}, {"cells", "2160"}}},
-      {"helix", {{"turns", "1"}, {"cells", "108"}}},
+      {"helix", {{"turns", "20"}, {"cells", "3240"}}},  // the smallest helix of 20 turns
+      {"helix", {{"turns", "1"}, {"cells", "162"}}},
       {"offset", {{"offset", "1e9"}}},
       {"offset", {{"offset", "-1e9"}, {"shape", "gap"}}},
       {"slivers", {{"n", "20"}, {"flatness", "1e-12"}}},
@@ -160,30 +162,86 @@ TEST(Generators, GapsAddBoundaryFacesAndEmptySpace) {
 }
 
 TEST(Generators, HelixMeetsItsTargetWithinTenPercent) {
-  for (int target : {324, 400, 1000, 5000, 20000, 123456}) {
+  EXPECT_EQ(helix_min_cells(1), 162);
+  EXPECT_EQ(helix_min_cells(20), 3240);
+  for (int target : {486, 600, 1000, 5000, 20000, 123456}) {
     const HelixResolution r = helix_resolution(target, 3);
     EXPECT_NEAR(double(r.cells()), target, 0.1 * target) << target;
   }
-  for (int target : {1000000, 4500000}) {  // the paper's sizes, without building them
+  // The paper's sizes (helix450k .. helix4.5), without building them.
+  for (int target : {450000, 1050000, 1485000, 2370000, 3570000, 4500000}) {
     const HelixResolution r = helix_resolution(target, 3);
     EXPECT_NEAR(double(r.cells()), target, 0.01 * target) << target;
   }
   const Scene s = make("helix", {{"cells", "5000"}});
   EXPECT_NEAR(double(s.mesh().num_cells()), 5000, 500);
-  expect_valid(make("helix", {{"cells", "324"}}));  // the smallest helix is still valid
+  expect_valid(make("helix", {{"cells", "486"}}));  // the smallest helix is still valid
   expect_valid(make("helix", {{"cells", "700"}, {"turns", "1"}}));
 }
 
-TEST(Generators, HelixTubesHaveDistinctScalarsAndEmptySpaceBetween) {
+namespace {
+// Distance from p to the helix centre line of `turns` turns: a coarse scan, then a
+// ternary search around the best sample (the distance is unimodal there).
+double centre_line_distance(Vec3 p, int turns) {
+  const double span = 2 * 3.14159265358979323846 * turns;
+  const int n = 400 * turns;
+  int best = 0;
+  for (int i = 1; i <= n; ++i)
+    if (length(p - helix_centre(span * i / n)) < length(p - helix_centre(span * best / n))) best = i;
+  double lo = span * std::max(0, best - 1) / n, hi = span * std::min(n, best + 1) / n;
+  for (int it = 0; it < 100; ++it) {
+    const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+    if (length(p - helix_centre(a)) < length(p - helix_centre(b)))
+      hi = b;
+    else
+      lo = a;
+  }
+  return length(p - helix_centre(0.5 * (lo + hi)));
+}
+}  // namespace
+
+TEST(Generators, HelixInnerTubeRunsInsideTheHollowOuterOne) {
   const Scene s = make("helix", {{"cells", "2000"}});
   const CellMesh& m = s.mesh();
-  // Inner tube: radius from the axis <= 1.36 and scalars <= 0.3; outer: >= 1.8 and >= 0.7.
+  const HelixShape shape;
+  // Inner tube: scalars 0.2..0.3 within inner_radius of the centre line; outer: 0.7..0.8
+  // between the bore and outer_radius.
   for (size_t i = 0; i < m.num_points(); ++i) {
-    const double r = std::hypot(m.points[i].x, m.points[i].y);
-    if (m.scalars[i] <= 0.3)
-      EXPECT_LT(r, 1.37);
-    else
-      EXPECT_TRUE(m.scalars[i] >= 0.7 && r > 1.79) << i;
+    const double d = centre_line_distance(m.points[i], 3);
+    if (m.scalars[i] <= 0.3 + 1e-12) {
+      EXPECT_GE(m.scalars[i], 0.2 - 1e-12) << i;
+      EXPECT_LT(d, shape.inner_radius + 1e-9) << i;
+    } else {
+      EXPECT_TRUE(m.scalars[i] >= 0.7 - 1e-12 && m.scalars[i] <= 0.8 + 1e-12) << i;
+      EXPECT_GT(d, shape.hole_radius - 1e-9) << i;
+      EXPECT_LT(d, shape.outer_radius + 1e-9) << i;
+    }
+  }
+}
+
+TEST(Generators, HelixTubesAreSeparatedByAThinFilmOfEmptySpace) {
+  // Along every pixel ray of 14 views, an inner (green) cell and an outer (pink) cell met
+  // in turn are apart: the tubes never touch. And the film is thin somewhere in every view:
+  // ray-gaps between the tubes far shorter than the cells (why MPVONC fails, helix.h).
+  const HelixShape shape;
+  const double film = shape.hole_radius - shape.inner_radius;
+  for (const char* cells : {"486", "3000"}) {
+    const Scene s = make("helix", {{"cells", cells}});
+    const CellMesh& m = s.mesh();
+    for (int v = 0; v < 14; ++v) {
+      const Camera cam = fibonacci_view(s.bounds(), 14, v, {.width = 128, .height = 128});
+      const CellSequences seq = raster_cell_sequences(s, cam, 1);
+      double min_gap = 1e9;
+      for (int64_t i = 0; i < seq.num_samples(); ++i) {
+        const auto sp = seq.at(i);
+        for (size_t k = 0; k + 1 < sp.size(); ++k)
+          if ((m.cell_scalar(sp[k].cell) < 0.5) != (m.cell_scalar(sp[k + 1].cell) < 0.5))
+            min_gap = std::min(min_gap, sp[k + 1].t_in - sp[k].t_out);
+      }
+      // A triangle bore (the coarsest) is a chord polygon: the film is half as thick there.
+      EXPECT_GT(min_gap, 0.25 * film) << cells << " cells, view " << v;
+      EXPECT_LT(min_gap, 10 * film) << cells << " cells, view " << v;
+    }
   }
 }
 
