@@ -37,9 +37,23 @@ ResultsFile::ResultsFile(std::string path) : path_(std::move(path)) {
 void ResultsFile::append(const nlohmann::json& record) {
   lines_.push_back(record.dump());
   keys_.insert(record.at("key").get<std::string>());
+  dirty_ = true;
+}
+
+void ResultsFile::flush() {
+  if (!dirty_) return;
   std::string content;
   for (const auto& l : lines_) content += l + "\n";
   write_file_atomically(path_, content);
+  dirty_ = false;
+}
+
+ResultsFile::~ResultsFile() {
+  try {
+    flush();
+  } catch (const std::exception&) {
+    // A destructor must not throw; run_suite flushes explicitly and reports errors there.
+  }
 }
 
 }  // namespace vob

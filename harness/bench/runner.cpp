@@ -307,8 +307,10 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
           say(line.str());
         }
       }
+      results.flush();
     }
   }
+  results.flush();
   return summary;
 }
 

@@ -43,12 +43,16 @@ TEST(ResultsFile, AppendsAtomicallyAndRemembersKeys) {
     ResultsFile f(path.string());
     f.append({{"key", "a"}, {"x", 1}});
     f.append({{"key", "b"}, {"x", 2}});
-  }
+    f.flush();
+    EXPECT_EQ(ResultsFile::read_all(path.string()).size(), 2u);
+    f.append({{"key", "c"}, {"x", 3}});
+  }  // the destructor flushes c
   ResultsFile g(path.string());
   EXPECT_TRUE(g.has("a"));
   EXPECT_TRUE(g.has("b"));
-  EXPECT_FALSE(g.has("c"));
-  EXPECT_EQ(ResultsFile::read_all(path.string()).size(), 2u);
+  EXPECT_TRUE(g.has("c"));
+  EXPECT_FALSE(g.has("d"));
+  EXPECT_EQ(ResultsFile::read_all(path.string()).size(), 3u);
   // No temporary file is left behind.
   for (const auto& e : std::filesystem::directory_iterator(path.parent_path()))
     EXPECT_EQ(e.path().string().find("vob_results_test.jsonl.tmp"), std::string::npos);
