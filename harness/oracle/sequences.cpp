@@ -8,6 +8,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "harness/geometry/polygon_plane.h"
 #include "harness/raster/fragments.h"
 #include "harness/scene/input_error.h"
 
@@ -128,16 +129,12 @@ InFacePlane ray_in_face_plane_test(const Scene& scene, const Camera& view, int s
     const LocalFaces& lf = cell_local_faces(m.types[cell]);
     const int32_t* p = m.cell_points(cell);
     for (int f = 0; f < lf.count; ++f) {
-      Vec3 n, c;
-      const int k = lf.size[f];
-      for (int i = 0; i < k; ++i) {
-        const Vec3 a = m.points[p[lf.v[f][i]]], b = m.points[p[lf.v[f][(i + 1) % k]]];
-        n += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-        c += a;
-      }
-      n = normalize(n);
-      c = c / k;
-      if (std::fabs(dot(n, ray.dir)) < 1e-9 && std::fabs(dot(n, ray.origin - c)) < tol) return true;
+      Vec3 pts[4];
+      for (int i = 0; i < lf.size[f]; ++i) pts[i] = m.points[p[lf.v[f][i]]];
+      const PolygonPlane plane = newell_plane(pts, lf.size[f]);
+      const Vec3 n = normalize(plane.normal);
+      if (std::fabs(dot(n, ray.dir)) < 1e-9 && std::fabs(dot(n, ray.origin - plane.centroid)) < tol)
+        return true;
     }
     return false;
   };

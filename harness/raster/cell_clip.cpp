@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "harness/geometry/polygon_plane.h"
 #include "harness/scene/cell_types.h"
 
 namespace vob {
@@ -84,16 +85,12 @@ void CellClipper::setup(int32_t c) {
     const bool forward = loop[(m + 1) % n] < loop[(m + n - 1) % n];
     int32_t can[4] = {0, 0, 0, 0};
     for (int i = 0; i < n; ++i) can[i] = loop[forward ? (m + i) % n : (m - i + n) % n];
-    // Newell's normal relative to the canonical first vertex: exact differences keep its
-    // precision far from the origin (meshes offset by 1e7), identical for both owners.
-    const Vec3 o = mesh_.points[can[0]];
-    Vec3 nrm, cen;
-    for (int i = 0; i < n; ++i) {
-      const Vec3 a = mesh_.points[can[i]] - o, b = mesh_.points[can[(i + 1) % n]] - o;
-      nrm += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-      cen += a;
-    }
-    cen = o + cen / n;
+    // From the canonical loop, so that both owners of a face get bit-identical planes.
+    Vec3 pts[4];
+    for (int i = 0; i < n; ++i) pts[i] = mesh_.points[can[i]];
+    const PolygonPlane plane = newell_plane(pts, n);
+    Vec3 nrm = plane.normal;
+    const Vec3 cen = plane.centroid;
     double d = -dot(nrm, cen);
     if (!forward) nrm = -nrm, d = -d;
     n_[f] = nrm;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "harness/geometry/polygon_plane.h"
 #include "harness/geometry/predicates.h"
 #include "harness/scene/input_error.h"
 
@@ -54,16 +55,9 @@ bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n) {
   if (n == 3) {
     plane_.n = cross(v[1] - v[0], v[2] - v[0]);
   } else {
-    // Newell's normal relative to v[0]: exact differences keep full precision far from
-    // the origin (the `offset` hard case), where raw coordinates would cancel.
-    Vec3 nrm, cen;
-    for (int i = 0; i < 4; ++i) {
-      const Vec3 a = v[i] - v[0], b = v[(i + 1) % 4] - v[0];
-      nrm += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-      cen += a;
-    }
-    plane_.n = nrm;
-    on_plane = v[0] + cen * 0.25;
+    const PolygonPlane p = newell_plane(v, 4);
+    plane_.n = p.normal;
+    on_plane = p.centroid;
   }
   plane_.d = -dot(plane_.n, on_plane);
   if (frame.ortho()) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <unordered_map>
 
+#include "harness/geometry/polygon_plane.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -100,19 +101,11 @@ FacePlanes build_face_planes(const CellMesh& mesh, const MeshFaces& faces) {
   for (size_t f = 0; f < nf; ++f) {
     const int32_t* v = faces.face_points(f);
     const int n = faces.face_size(f);
-    // Newell's normal of the loop taken relative to its first vertex: the differences of
-    // nearby coordinates are exact, so the normal keeps full precision far from the origin
-    // (the `offset` hard case puts meshes at 1e7), where raw coordinates would cancel.
-    const Vec3 o = mesh.points[v[0]];
-    Vec3 nrm, cen;
-    for (int i = 0; i < n; ++i) {
-      const Vec3 a = mesh.points[v[i]] - o, b = mesh.points[v[(i + 1) % n]] - o;
-      nrm += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
-      cen += a;
-    }
-    cen = o + cen / n;
-    pl.normal[f] = nrm;
-    pl.offset[f] = -dot(nrm, cen);
+    Vec3 pts[4];
+    for (int i = 0; i < n; ++i) pts[i] = mesh.points[v[i]];
+    const PolygonPlane plane = newell_plane(pts, n);
+    pl.normal[f] = plane.normal;
+    pl.offset[f] = -dot(plane.normal, plane.centroid);
   }
   return pl;
 }
