@@ -88,14 +88,19 @@ void CellClipper::setup(int32_t c) {
     // From the canonical loop, so that both owners of a face get bit-identical planes.
     Vec3 pts[4];
     for (int i = 0; i < n; ++i) pts[i] = mesh_.points[can[i]];
-    const PolygonPlane plane = newell_plane(pts, n);
-    Vec3 nrm = plane.normal;
-    const Vec3 cen = plane.centroid;
-    double d = -dot(nrm, cen);
-    if (!forward) nrm = -nrm, d = -d;
+    // The plane passes through the canonical first point (not the centroid, which /3 would
+    // round): a ray lying exactly in the plane then gets exactly num == 0 below.
+    Vec3 nrm = newell_plane(pts, n).normal;
+    if (!forward) nrm = -nrm;
     n_[f] = nrm;
-    d_[f] = d;
-    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -dot(nrm, frame_.eye() - cen);
+    o_[f] = pts[0];
+    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -dot(nrm, frame_.eye() - pts[0]);
+    // A ray lying in the plane runs along the boundary of the cells on both sides; it
+    // counts as inside the one whose outward normal's first non-zero component is
+    // negative. Coplanar faces of other cells decide the same way, so along such a ray all
+    // segments come from cells on one side of the plane.
+    const double lead = nrm.x != 0 ? nrm.x : (nrm.y != 0 ? nrm.y : nrm.z);
+    own_[f] = lead < 0;
   }
 }
 

@@ -5,7 +5,11 @@
 // (smallest id first, then towards its smaller neighbour), so the two cells sharing a face
 // use exactly negated planes: at every sample they compute the same crossing parameter, and
 // the segments of face neighbours meet without gap or overlap. (A non-planar quad is
-// replaced by its Newell plane; the cell is the intersection of its face half-spaces.)
+// replaced by its Newell normal through its canonical first point; the cell is the
+// intersection of its face half-spaces.) A ray lying exactly in a face plane (an
+// orthographic view along a grid axis, sampling on grid lines) belongs to the cells on one
+// side of that plane only, decided by the sign of the plane's normal, the same way for all
+// coplanar faces: without such a rule, rounding would pick cells on both sides at random.
 //
 // Only what is in front of the eye counts: segments are clipped to t >= 0, so an eye inside
 // a cell gives [0, t_out]; orthographic rays start on the eye plane, so geometry behind the
@@ -55,9 +59,10 @@ class CellClipper {
   const ProjectedPoints& proj_;
   double min_length_;
   int nf_ = 0;
-  Vec3 n_[6];
-  double d_[6];
-  double k_[6];  // perspective: -(n.eye + d); orthographic: n.forward
+  Vec3 n_[6];     // outward normals
+  Vec3 o_[6];     // a point of each face plane (its canonical first vertex)
+  double k_[6];   // perspective: -n.(eye - o); orthographic: n.forward
+  bool own_[6];   // a ray lying in the face plane counts as inside (see setup)
 };
 
 template <class Emit>
@@ -72,7 +77,7 @@ void CellClipper::scan(const SampleRect& clip, Emit&& emit) const {
       for (int k = 0; k < nf_ && lo < hi; ++k) {
         double num, den;
         if (ortho) {
-          num = -(dot(n_[k], x) + d_[k]);
+          num = -dot(n_[k], x - o_[k]);
           den = k_[k];
         } else {
           num = k_[k];
@@ -82,8 +87,8 @@ void CellClipper::scan(const SampleRect& clip, Emit&& emit) const {
           lo = std::max(lo, num / den);
         } else if (den > 0) {
           hi = std::min(hi, num / den);
-        } else if (!(num > 0)) {
-          hi = lo;  // parallel to the face and outside it
+        } else if (num < 0 || (num == 0 && !own_[k]) || num != num) {
+          hi = lo;  // parallel to the face and outside it (or in its plane, not owned)
         }
       }
       if (!(lo < hi) || !std::isfinite(hi)) continue;
