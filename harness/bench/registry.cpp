@@ -5,6 +5,7 @@
 #include "algorithms/centroid/triangle_centroid.h"
 #include "algorithms/centroid/vtk_centroid.h"
 #include "algorithms/mpvo/mpvo.h"
+#include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
 #include "harness/scene/input_error.h"
 
@@ -16,6 +17,7 @@ const std::vector<OrdererInfo>& orderer_registry() {
       vtk_centroid_orderer_info(),
       mpvo_orderer_info(),
       mpvonc_orderer_info(),
+      sxmpvo_orderer_info(),
       triangle_centroid_orderer_info(),
       distance_sort_orderer_info(),
   };

@@ -1,0 +1,105 @@
+#include "algorithms/sxmpvo/abuffer.h"
+
+#include <algorithm>
+
+namespace vob::sxmpvo {
+
+void ABuffer::reset(int64_t pixels) {
+  head_.assign(static_cast<size_t>(pixels), -1);
+  pool_.clear();
+  head_insertions_ = walk_steps_ = 0;
+}
+
+void PnLists::reset(size_t cells) {
+  if (head_.size() != cells) {
+    head_.assign(cells, -1);
+  } else {
+    for (int32_t c : touched_) head_[c] = -1;
+  }
+  touched_.clear();
+  pool_.clear();
+  queries_ = found_at_head_ = moved_ = steps_ = 0;
+}
+
+void PnLists::add(int32_t occluding, int32_t occluded) {
+  ++queries_;
+  int32_t* link = &head_[occluding];
+  if (*link < 0) touched_.push_back(occluding);
+  for (int32_t prev = -1, i = *link; i >= 0; prev = i, i = pool_[i].next) {
+    ++steps_;
+    if (pool_[i].cell != occluded) continue;
+    if (prev < 0) {
+      ++found_at_head_;
+    } else {  // move to front
+      pool_[prev].next = pool_[i].next;
+      pool_[i].next = *link;
+      *link = i;
+      ++moved_;
+    }
+    return;
+  }
+  pool_.push_back({occluded, *link});
+  *link = static_cast<int32_t>(pool_.size() - 1);
+}
+
+void PnLists::to_relations(mpvo::ExtraRelations& out) const {
+  const size_t n = head_.size();
+  out.offsets.assign(n + 1, 0);
+  out.not_sink.assign(n, 0);
+  out.behind.resize(pool_.size());
+  for (int32_t c : touched_)
+    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) ++out.offsets[c + 1];
+  for (size_t c = 0; c < n; ++c) out.offsets[c + 1] += out.offsets[c];
+  for (int32_t c : touched_) {
+    int32_t k = out.offsets[c];
+    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) {
+      out.behind[k++] = pool_[i].cell;
+      out.not_sink[pool_[i].cell] = 1;  // an occluded PN is no sink
+    }
+  }
+}
+
+void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& e,
+                   PnLists& pn, PairStats& stats) {
+  int32_t id = abuf.head(pixel);
+  if (id < 0) return;
+  e.clear();
+  for (; id >= 0; id = abuf.entry(id).next) e.push_back(abuf.entry(id));
+  ++stats.lists;
+  stats.max_list = std::max<int64_t>(stats.max_list, static_cast<int64_t>(e.size()));
+  // Far to near: beyond the farthest entry the ray is outside the mesh, so the first entry
+  // expected is back-facing.
+  bool want_front = false;
+  int32_t occluded = -1;  // cell of the last front-facing entry, while in a ray gap
+  const size_t k = e.size();
+  for (size_t i = 0; i < k; ++i) {
+    if (e[i].front() != want_front) {
+      size_t j = i + 1;
+      while (j < k && e[j].t >= e[i].t - tie && e[j].front() != want_front) ++j;
+      if (j < k && e[j].t >= e[i].t - tie) {
+        std::rotate(e.begin() + i, e.begin() + j, e.begin() + j + 1);
+        ++stats.tie_reorders;
+      } else {
+        ++stats.unpaired;  // taken as it is: the state follows the entry's own kind
+      }
+    }
+    if (e[i].front()) {
+      occluded = e[i].cell();
+      want_front = false;
+    } else {
+      if (occluded >= 0) {
+        const int32_t occluding = e[i].cell();
+        ++stats.pairs;
+        if (occluding == occluded) {
+          ++stats.self_pairs;
+        } else {
+          pn.add(occluding, occluded);
+        }
+      }
+      occluded = -1;
+      want_front = true;
+    }
+  }
+}
+
+}  // namespace vob::sxmpvo

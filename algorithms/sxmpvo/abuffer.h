@@ -1,0 +1,112 @@
+// SXMPVO's per-frame image-space structures (Cook et al., section 4.1): the A-buffer of
+// exterior-face entries per pixel (PIX lists, kept in decreasing depth by insertion), the
+// pairing of consecutive front-facing / back-facing entries into pseudo-neighbour (PN)
+// relations, and the PN lists, kept free of duplicates by a move-to-front search.
+#pragma once
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/mpvo/mpvo_core.h"
+
+namespace vob::sxmpvo {
+
+// One PIX entry: ray parameter t of the hit, the owning cell and whether the face is
+// front-facing (item = cell * 2 + front), and the next (nearer) entry of the list or -1.
+struct PixEntry {
+  double t;
+  int32_t item;
+  int32_t next;
+  int32_t cell() const { return item >> 1; }
+  bool front() const { return item & 1; }
+};
+
+class ABuffer {
+ public:
+  // Empties every list (keeps the storage) for `pixels` pixels.
+  void reset(int64_t pixels);
+  // Inserts at the place that keeps the list in decreasing t from its head; an entry at
+  // least as far as the head becomes the head (the common case when faces arrive nearest
+  // first, which is what sorting them by centroid distance is for).
+  void insert(int64_t pixel, double t, int32_t item) {
+    const int32_t id = static_cast<int32_t>(pool_.size());
+    const int32_t first = head_[pixel];
+    if (first < 0 || pool_[first].t <= t) {
+      ++head_insertions_;
+      pool_.push_back({t, item, first});
+      head_[pixel] = id;
+      return;
+    }
+    int32_t prev = first;  // indices, not pointers: push_back may move the pool
+    for (int32_t next = pool_[prev].next; next >= 0 && pool_[next].t > t; next = pool_[prev].next) {
+      prev = next;
+      ++walk_steps_;
+    }
+    ++walk_steps_;
+    pool_.push_back({t, item, pool_[prev].next});
+    pool_[prev].next = id;
+  }
+  int64_t pixels() const { return static_cast<int64_t>(head_.size()); }
+  int32_t head(int64_t pixel) const { return head_[pixel]; }
+  const PixEntry& entry(int32_t id) const { return pool_[id]; }
+  int64_t entries() const { return static_cast<int64_t>(pool_.size()); }
+  int64_t head_insertions() const { return head_insertions_; }
+  int64_t walk_steps() const { return walk_steps_; }  // links followed by non-head inserts
+  size_t bytes() const { return head_.capacity() * sizeof(int32_t) + pool_.capacity() * sizeof(PixEntry); }
+
+ private:
+  std::vector<int32_t> head_;
+  std::vector<PixEntry> pool_;
+  int64_t head_insertions_ = 0, walk_steps_ = 0;
+};
+
+// PN lists: per occluding cell, the cells it occludes (its dependencies), as linked lists.
+class PnLists {
+ public:
+  // Empties the lists of the previous frame (only the cells that had one) for `cells` cells.
+  void reset(size_t cells);
+  // Records "occluded is behind occluding" unless already recorded. A duplicate found
+  // below the head is moved to the head, where the next, coherent query finds it at once.
+  void add(int32_t occluding, int32_t occluded);
+  // The lists as MPVO extra relations (occluded = eligible neighbour of occluding).
+  void to_relations(mpvo::ExtraRelations& out) const;
+
+  int64_t relations() const { return static_cast<int64_t>(pool_.size()); }
+  int64_t queries() const { return queries_; }
+  int64_t found_at_head() const { return found_at_head_; }
+  int64_t moved_to_front() const { return moved_; }
+  int64_t search_steps() const { return steps_; }
+  size_t bytes() const {
+    return head_.capacity() * sizeof(int32_t) + pool_.capacity() * sizeof(Entry) +
+           touched_.capacity() * sizeof(int32_t);
+  }
+
+ private:
+  struct Entry {
+    int32_t cell, next;
+  };
+  std::vector<int32_t> head_;     // per cell, or -1
+  std::vector<Entry> pool_;
+  std::vector<int32_t> touched_;  // cells with a list
+  int64_t queries_ = 0, found_at_head_ = 0, moved_ = 0, steps_ = 0;
+};
+
+struct PairStats {
+  int64_t lists = 0;          // non-empty PIX lists
+  int64_t pairs = 0;          // front-facing / back-facing pairs found (before de-duplication)
+  int64_t tie_reorders = 0;   // entries moved within a depth tie to restore alternation
+  int64_t unpaired = 0;       // entries that broke alternation with no tie to explain it
+  int64_t self_pairs = 0;     // pairs of two faces of one cell (skipped)
+  int64_t max_list = 0;
+};
+
+// Pairs the PIX list of `pixel`. Far to near, a closed boundary alternates back-facing
+// (the ray, going backwards, enters the mesh) and front-facing entries; each front-facing
+// entry of cell F followed by a back-facing entry of cell B is a ray gap, and F must be
+// drawn before B. Entries whose depths differ by at most `tie` may stand in either order
+// (faces that touch, a ray through a silhouette edge): when one breaks the alternation, the
+// next entry of the expected kind within the tie is moved up in its place.
+void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
+                   PnLists& pn, PairStats& stats);
+
+}  // namespace vob::sxmpvo

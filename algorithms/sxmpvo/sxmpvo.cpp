@@ -1,0 +1,178 @@
+#include "algorithms/sxmpvo/sxmpvo.h"
+
+#include <cmath>
+
+#include "algorithms/mpvo/mpvo_core.h"
+#include "algorithms/sxmpvo/abuffer.h"
+#include "harness/raster/polygon_raster.h"
+#include "harness/raster/sample_frame.h"
+#include "harness/sort/radix_sort.h"
+
+namespace vob {
+namespace {
+
+// Depths closer than this fraction of (scene radius + eye distance) are a tie: far above
+// the rounding of t for faces that touch (~1e-15 relative), far below the oracle's shortest
+// segment (kMinSegmentRelative = 1e-10 of the radius) scaled up by the eye distance.
+constexpr double kTieRelative = 1e-9;
+
+class SxmpvoOrderer final : public Orderer {
+ public:
+  std::string name() const override { return "sxmpvo"; }
+  SceneKind scene_kind() const override { return SceneKind::Cells; }
+  Claims claims() const override {
+    Claims c;
+    c.image_exact = true;
+    c.detects_cycles = true;
+    return c;
+  }
+
+  void prepare(const Scene& scene, PhaseClock& clock) override {
+    { auto p = clock.phase("unique faces"); scene.faces(); }
+    { auto p = clock.phase("face planes"); scene.face_planes(); }
+    core_.bind(scene);
+    auto p = clock.phase("exterior face list");
+    const MeshFaces& faces = core_.faces();
+    const CellMesh& mesh = core_.scene().mesh();
+    ext_face_ = faces.boundary;
+    ext_centroid_.resize(ext_face_.size());
+    for (size_t i = 0; i < ext_face_.size(); ++i) {
+      const int32_t f = ext_face_[i];
+      Vec3 c{};
+      const int n = faces.face_size(f);
+      for (int k = 0; k < n; ++k) c += mesh.points[faces.face_points(f)[k]];
+      ext_centroid_[i] = c * (1.0 / n);
+    }
+    const Aabb box = mesh.bounds();
+    centre_ = (box.lo + box.hi) * 0.5;
+    radius_ = 0.5 * length(box.hi - box.lo);
+  }
+
+  Ordering order(const Camera& view, PhaseClock& clock) override {
+    Ordering out;
+    {
+      auto p = clock.phase("I create partial order");
+      core_.create_partial_order(view);
+    }
+    {
+      auto p = clock.phase("II sort exterior faces");
+      sort_exterior_faces(view);
+    }
+    PairStats stats;
+    {
+      auto p = clock.phase("III scan faces and add dependencies");
+      scan_and_pair(view, stats);
+    }
+    {
+      auto p = clock.phase("IV DFS");
+      core_.begin_dfs(out, &extra_);
+      core_.dfs_sinks(out);
+      core_.dfs_unvisited(out);
+    }
+    core_.add_counters(out);
+    auto& k = out.counters;
+    k["exterior_faces"] = static_cast<double>(ext_face_.size());
+    k["abuffer_entries"] = static_cast<double>(abuf_.entries());
+    k["head_insertions"] = static_cast<double>(abuf_.head_insertions());
+    k["head_insertion_rate"] =
+        abuf_.entries() ? static_cast<double>(abuf_.head_insertions()) / abuf_.entries() : 1.0;
+    k["insertion_walk_steps"] = static_cast<double>(abuf_.walk_steps());
+    k["pix_lists"] = static_cast<double>(stats.lists);
+    k["max_pix_list"] = static_cast<double>(stats.max_list);
+    k["pn_pairs"] = static_cast<double>(stats.pairs);
+    k["pn_relations"] = static_cast<double>(pn_.relations());
+    k["pn_found_at_head"] = static_cast<double>(pn_.found_at_head());
+    k["pn_moved_to_front"] = static_cast<double>(pn_.moved_to_front());
+    k["pn_search_steps"] = static_cast<double>(pn_.search_steps());
+    k["tie_reorders"] = static_cast<double>(stats.tie_reorders);
+    k["unpaired_entries"] = static_cast<double>(stats.unpaired);
+    k["self_pairs"] = static_cast<double>(stats.self_pairs);
+    k["bytes_mpvo"] = static_cast<double>(core_.bytes());
+    k["bytes_faces"] =
+        static_cast<double>(core_.faces().bytes() + core_.scene().face_planes().bytes());
+    k["bytes_abuffer"] = static_cast<double>(abuf_.bytes());
+    k["bytes_pn"] = static_cast<double>(pn_.bytes() + extra_.bytes());
+    k["bytes_exterior"] = static_cast<double>(exterior_bytes());
+    return out;
+  }
+
+  size_t bytes() const override {
+    return core_.bytes() + abuf_.bytes() + pn_.bytes() + extra_.bytes() + exterior_bytes() +
+           scratch_.capacity() * sizeof(PixEntry);
+  }
+
+ private:
+  using PixEntry = sxmpvo::PixEntry;
+  using PairStats = sxmpvo::PairStats;
+
+  size_t exterior_bytes() const {
+    return ext_face_.capacity() * 4 + ext_centroid_.capacity() * sizeof(Vec3) +
+           (keys_.capacity() + ids_.capacity() + scratch_keys_.capacity() +
+            scratch_ids_.capacity()) * 4;
+  }
+
+  // Exterior faces (indices into the exterior face list), nearest centroid first.
+  void sort_exterior_faces(const Camera& view) {
+    const Vec3 eye = view.eye, dir = view.forward();
+    const size_t b = ext_face_.size();
+    keys_.resize(b);
+    ids_.resize(b);
+    for (size_t i = 0; i < b; ++i) {
+      const Vec3 d = ext_centroid_[i] - eye;
+      keys_[i] = static_cast<float>(view.ortho ? dot(d, dir) : length(d));
+      ids_[i] = static_cast<int32_t>(i);
+    }
+    radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
+  }
+
+  void scan_and_pair(const Camera& view, PairStats& stats) {
+    const SampleFrame frame(view, 1);
+    const MeshFaces& faces = core_.faces();
+    const CellMesh& mesh = core_.scene().mesh();
+    const int cols = frame.cols();
+    abuf_.reset(frame.num_samples());
+    PolygonRaster raster;
+    Vec3 v[4];
+    for (int32_t i : ids_) {
+      const int32_t f = ext_face_[i];
+      const int s = core_.face_sign(f);
+      if (s == 0) continue;  // the eye is in its plane: it covers no sample
+      const int n = faces.face_size(f);
+      for (int k = 0; k < n; ++k) v[k] = mesh.points[faces.face_points(f)[k]];
+      if (!raster.setup(frame, v, n)) continue;
+      const int32_t item = faces.cell0[f] * 2 + (s > 0 ? 1 : 0);
+      raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
+        abuf_.insert(int64_t(sy) * cols + sx, t, item);
+      });
+    }
+    const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
+    pn_.reset(core_.num_cells());
+    const int64_t pixels = abuf_.pixels();
+    for (int64_t p = 0; p < pixels; ++p) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
+    pn_.to_relations(extra_);
+  }
+
+  mpvo::MpvoCore core_;
+  std::vector<int32_t> ext_face_;   // exterior face list: face ids (owner = cell0)
+  std::vector<Vec3> ext_centroid_;  // and their centroids
+  Vec3 centre_{};
+  double radius_ = 0;
+  std::vector<float> keys_;
+  std::vector<int32_t> ids_, scratch_ids_;
+  std::vector<uint32_t> scratch_keys_;
+  sxmpvo::ABuffer abuf_;
+  sxmpvo::PnLists pn_;
+  mpvo::ExtraRelations extra_;
+  std::vector<PixEntry> scratch_;
+};
+
+}  // namespace
+
+OrdererInfo sxmpvo_orderer_info() {
+  return {"sxmpvo", SceneKind::Cells,
+          "Cook et al.'s SXMPVO: MPVO arrows plus pseudo-neighbour relations from an A-buffer "
+          "of exterior faces at pixel centres (exact at the image resolution)",
+          "", [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<SxmpvoOrderer>(); }};
+}
+
+}  // namespace vob

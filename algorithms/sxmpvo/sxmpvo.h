@@ -1,0 +1,40 @@
+// Plugin `sxmpvo`: Cook, Max, Silva and Williams' Scanning Exact Meshed Polyhedra
+// Visibility Ordering (IEEE TVCG 2004, sections 4 and 5), on MpvoCore.
+//
+// sxmpvo    no parameters. The image resolution is the view's viewport; samples are the
+//           pixel centres of the shared rasterizer (harness/raster/polygon_raster.h, S = 1),
+//           the same samples the oracle checks at its default S = 1.
+//
+// Prepare: "unique faces", "face planes", "exterior face list" (per boundary face: face,
+// cell, centroid).
+// Phases, under the paper's names:
+//   "I create partial order"  MPVO face arrows and outbound counts (the sink flags);
+//   "II sort exterior faces"  every exterior face by increasing centroid distance from the
+//       eye (depth along the view direction for orthographic views), LSD radix sort;
+//   "III scan faces and add dependencies"  exterior faces scan-converted in that order into
+//       per-pixel PIX lists kept in decreasing depth by insertion; consecutive front-facing
+//       (farther) / back-facing (nearer) entries form pseudo-neighbour relations, stored in
+//       the occluding cell's PN list without duplicates (move-to-front search); the lists
+//       become MpvoCore extra relations, and occluded cells lose their sink flag;
+//   "IV DFS"  DFS from every sink cell with PN neighbours eligible, then from cells left
+//       unvisited by cycles (reported in Ordering::cycles and broken).
+// Ties: entries within 1e-9 * (scene radius + eye distance to the box centre) of each other
+// may be reordered within the tie to restore the back/front alternation of a closed
+// boundary (touching faces, rays through silhouette edges); see abuffer.h.
+//
+// Claims: image_exact (exact at the pixel centres of the view given, for acyclic meshes),
+// detects_cycles. Not object_exact: ray gaps between pixel centres are not sampled.
+// Counters: MpvoCore's (exact_sign_calls, double_sign_wrong, arrows, sink_cells,
+// cycle_roots), exterior_faces, abuffer_entries (Cook's a at this view), head_insertions,
+// head_insertion_rate, insertion_walk_steps, pix_lists, max_pix_list, pn_pairs (pairs found
+// in PIX lists), pn_relations (distinct PN entries), pn_found_at_head, pn_moved_to_front,
+// pn_search_steps, tie_reorders, unpaired_entries, self_pairs, and memory in bytes:
+// bytes_mpvo (MpvoCore's arrays), bytes_faces (unique faces and planes, shared with MPVO),
+// bytes_abuffer, bytes_pn (PN lists and their CSR), bytes_exterior (exterior face list and
+// sort buffers).
+#pragma once
+#include "harness/bench/registry.h"
+
+namespace vob {
+OrdererInfo sxmpvo_orderer_info();
+}  // namespace vob
