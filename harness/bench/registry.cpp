@@ -4,6 +4,7 @@
 #include "algorithms/centroid/centroid.h"
 #include "algorithms/centroid/triangle_centroid.h"
 #include "algorithms/centroid/vtk_centroid.h"
+#include "algorithms/havs/havs.h"
 #include "algorithms/mpvo/mpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
@@ -20,6 +21,7 @@ const std::vector<OrdererInfo>& orderer_registry() {
       sxmpvo_orderer_info(),
       triangle_centroid_orderer_info(),
       distance_sort_orderer_info(),
+      havs_orderer_info(),
   };
   return registry;
 }

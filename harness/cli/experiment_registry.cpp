@@ -2,6 +2,7 @@
 // line here.
 #include "harness/cli/experiments.h"
 #include "harness/cli/experiments/cook.h"
+#include "harness/cli/experiments/havs.h"
 
 namespace vob {
 
@@ -19,6 +20,10 @@ const std::vector<Experiment>& experiment_registry() {
        [](const ExperimentContext& ctx) {
          return run_suite_experiment({"peer-1m.json"}, "peer-1m", "the peer sorter on 1M cells", ctx);
        }},
+      {"havs-table1", "HAVS Table 1: shellsort, heapsort, quicksort, stable sort and radix sort of 1M floats; VTK's sorter on 1M cells", run_havs_table1},
+      {"havs-table2", "HAVS Table 2: fragments, max A-buffer list, max k, pixels needing k > 2 and > 6 over 14 views at 512x512, Fig. 6 maps", run_havs_table2},
+      {"havs-table3-4", "HAVS Tables 3 and 4: cpu sort and k-buffer time per frame and cells/s for k = 2 and 6", run_havs_table34},
+      {"havs-k-tradeoff", "HAVS: time against error as k grows (1..8), beside the cell orderers", run_havs_k_tradeoff},
       {"cook-table1", "Cook et al. Table 1: n, n/log2 n, b, a, w*h for gap, helix, zoo and TetGen meshes", cook_table1},
       {"cook-table3", "Cook et al. Table 3: SXMPVO's four phases by mesh size, PN and A-buffer counts, memory", cook_table3},
       {"cook-table4", "Cook et al. Table 4: SXMPVO against MPVONC and vtk-centroid by mesh size at 512x512", cook_table4},

@@ -7,27 +7,33 @@ namespace vob {
 void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
                        std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values) {
   const size_t n = keys.size();
-  std::vector<uint32_t> k(n);
-  for (size_t i = 0; i < n; ++i) k[i] = float_sort_key(keys[i]);
+  // The transformed keys live in a per-thread buffer reused across calls: a fresh 4n-byte
+  // allocation per call costs page faults comparable to one pass.
+  thread_local std::vector<uint32_t> k;
+  if (k.size() < n) k.resize(n);
   scratch_keys.resize(n);
   scratch_values.resize(n);
-  // One counting pass for all four digit histograms.
+  // One pass transforms the keys and counts all four digit histograms.
   uint32_t hist[4][256] = {};
   for (size_t i = 0; i < n; ++i) {
-    const uint32_t x = k[i];
+    const uint32_t x = float_sort_key(keys[i]);
+    k[i] = x;
     ++hist[0][x & 0xff];
     ++hist[1][(x >> 8) & 0xff];
     ++hist[2][(x >> 16) & 0xff];
     ++hist[3][x >> 24];
   }
+  int passes[4], np = 0;
+  for (int pass = 0; pass < 4; ++pass)
+    if (n > 0 && hist[pass][(k[0] >> (8 * pass)) & 0xff] != n) passes[np++] = pass;  // else constant
   uint32_t* src_k = k.data();
   uint32_t* dst_k = scratch_keys.data();
   int32_t* src_v = values.data();
   int32_t* dst_v = scratch_values.data();
   bool in_values = true;
-  for (int pass = 0; pass < 4; ++pass) {
+  for (int q = 0; q < np; ++q) {
+    const int pass = passes[q];
     uint32_t* h = hist[pass];
-    if (n == 0 || h[(src_k[0] >> (8 * pass)) & 0xff] == n) continue;  // digit constant
     uint32_t sum = 0;
     for (int d = 0; d < 256; ++d) {
       const uint32_t c = h[d];
@@ -35,6 +41,17 @@ void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
       sum += c;
     }
     const int shift = 8 * pass;
+    if (q + 1 == np && !in_values) {
+      // Last pass lands in the callers' vectors: values directly, keys as floats again.
+      for (size_t i = 0; i < n; ++i) {
+        const uint32_t x = src_k[i];
+        const uint32_t pos = h[(x >> shift) & 0xff]++;
+        const uint32_t u = (x & 0x80000000u) ? (x & 0x7fffffffu) : ~x;
+        std::memcpy(&keys[pos], &u, 4);
+        values[pos] = src_v[i];
+      }
+      return;
+    }
     for (size_t i = 0; i < n; ++i) {
       const uint32_t pos = h[(src_k[i] >> shift) & 0xff]++;
       dst_k[pos] = src_k[i];

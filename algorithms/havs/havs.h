@@ -1,0 +1,24 @@
+// Plugin `havs`: Callahan et al.'s hardware-assisted visibility sorting, in software.
+// Faces sorted by centroid distance with the LSD radix sort ("cpu sort"), then rasterized in
+// that order into a per-pixel k-buffer that finishes the sort and composites ray segments
+// ("k-buffer"); see kbuffer.h and havs_frame.h for where we follow the paper and where we
+// interpret it.
+//   k=2 (1..16)      k-buffer entries per pixel (the paper's hardware: 2 or 6)
+//   analyze=true     measure the k-buffer against the exact per-pixel (A-buffer) order,
+//                    untimed, once per view (the result is deterministic, so repeats of the
+//                    same view reuse it)
+// Ordering::order is a complete back-to-front permutation of cells derived from the face
+// sort (each cell at the position of its last-arriving face, havs_frame.h); the harness'
+// oracle judges that permutation. HAVS's own error is in Ordering::counters:
+//   havs_fragments, havs_max_list (Table 2 "Max A"), havs_max_k_needed (Table 2 "Max k"),
+//   havs_pixels_k_gt_2, havs_pixels_k_gt_6, havs_covered_pixels, havs_violating_pixels
+//   (pixels whose composited segment sequence differs from the exact one),
+//   havs_violating_segments, havs_image_rmse / havs_image_max_error / havs_pixels_off (the
+//   k-buffer image against exact-order compositing of the same segments).
+// Claims: heuristic in general; exact at a view where k >= havs_max_k_needed.
+#pragma once
+#include "harness/bench/registry.h"
+
+namespace vob {
+OrdererInfo havs_orderer_info();
+}

@@ -1,0 +1,365 @@
+#include "algorithms/havs/havs_frame.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include <tbb/parallel_for.h>
+
+#include "harness/oracle/k_metric.h"
+#include "harness/raster/polygon_raster.h"
+#include "harness/raster/sample_frame.h"
+#include "harness/scene/input_error.h"
+#include "harness/sort/radix_sort.h"
+
+namespace vob::havs {
+
+namespace {
+
+// Rows per band: 16 rows of 512 pixels with k = 8 entries is 1 MB of k-buffer, cache sized.
+constexpr int kBandRows = 16;
+
+FaceData::Linear triangle_fn(const Vec3& p0, const Vec3& p1, const Vec3& p2, double s0, double s1,
+                             double s2) {
+  const Vec3 n = cross(p1 - p0, p2 - p0);
+  const double nn = dot(n, n);
+  if (!(nn > 0)) return {Vec3{}, (s0 + s1 + s2) / 3};
+  // Gradient of the barycentric coordinate of p_i: n x (opposite edge) / |n|^2.
+  const Vec3 g = (cross(n, p2 - p1) * s0 + cross(n, p0 - p2) * s1 + cross(n, p1 - p0) * s2) / nn;
+  return {g, s0 - dot(g, p0)};
+}
+
+// The face's points, loaded for the rasterizer.
+int load_face(const FaceData& fd, int32_t f, Vec3* v) {
+  const int n = fd.faces->face_size(f);
+  const int32_t* ids = fd.faces->face_points(f);
+  for (int i = 0; i < n; ++i) v[i] = fd.scene.mesh().points[ids[i]];
+  return n;
+}
+
+// Faces listed per band of rows in drawing order (CSR), from their sample rectangles.
+struct BandLists {
+  int rows_per_band = kBandRows, bands = 0;
+  std::vector<SampleRect> rect;     // per drawing position
+  std::vector<int64_t> start;       // size bands + 1
+  std::vector<int32_t> items;       // drawing positions
+};
+
+BandLists band_lists(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order) {
+  BandLists b;
+  b.bands = (frame.rows() + b.rows_per_band - 1) / b.rows_per_band;
+  b.rect.resize(order.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 4096), [&](const auto& r) {
+    PolygonRaster pr;
+    Vec3 v[4];
+    for (size_t i = r.begin(); i < r.end(); ++i) {
+      const int n = load_face(fd, order[i], v);
+      b.rect[i] = pr.setup(frame, v, n) ? pr.bounds().intersect(frame.bounds()) : SampleRect{};
+    }
+  });
+  std::vector<int64_t> count(b.bands + 1, 0);
+  for (const SampleRect& r : b.rect)
+    if (!r.empty())
+      for (int q = r.y0 / b.rows_per_band; q <= r.y1 / b.rows_per_band; ++q) ++count[q + 1];
+  std::partial_sum(count.begin(), count.end(), count.begin());
+  b.start = count;
+  b.items.resize(b.start.back());
+  for (size_t i = 0; i < b.rect.size(); ++i) {
+    const SampleRect& r = b.rect[i];
+    if (r.empty()) continue;
+    for (int q = r.y0 / b.rows_per_band; q <= r.y1 / b.rows_per_band; ++q)
+      b.items[count[q]++] = static_cast<int32_t>(i);
+  }
+  return b;
+}
+
+// Calls visit(local pixel index, entry) for every fragment of band q, in drawing order.
+template <class Visit>
+void scan_band(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order,
+               const BandLists& b, int q, Visit&& visit) {
+  const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
+  const SampleRect band{0, row0, frame.cols() - 1, row1 - 1};
+  const bool ortho = frame.ortho();
+  const Vec3 eye = frame.eye(), fwd = frame.forward();
+  PolygonRaster pr;
+  Vec3 v[4];
+  for (int64_t it = b.start[q]; it < b.start[q + 1]; ++it) {
+    const int32_t pos = b.items[it];
+    const int32_t f = order[pos];
+    const int n = load_face(fd, f, v);
+    if (!pr.setup(frame, v, n)) continue;
+    const int32_t tag = f * 2 + fd.boundary[f];
+    pr.scan(b.rect[pos].intersect(band), [&](int sx, int sy, double t) {
+      const Vec3 x = frame.x(sx, sy);
+      const Vec3 p = ortho ? x + fwd * t : eye + x * (t / length(x));
+      visit((sy - row0) * frame.cols() + sx, KEntry{float(t), fd.scalar_at(f, p), tag});
+    });
+  }
+}
+
+void store_pixel(Image& img, int64_t pixel, const PixelAccum& a) {
+  img.rgb[3 * pixel] = a.r;
+  img.rgb[3 * pixel + 1] = a.g;
+  img.rgb[3 * pixel + 2] = a.b;
+}
+
+void check_k(int k) {
+  if (k < 1 || k > kMaxK) throw InputError("havs", "k", "must be in [1, " + std::to_string(kMaxK) + "]");
+}
+
+}  // namespace
+
+size_t FaceData::bytes() const {
+  return boundary.capacity() + scalar.capacity() * sizeof(Linear) + quad_slot.capacity() * 4 +
+         (quad_half2.capacity() + quad_split.capacity()) * sizeof(Linear);
+}
+
+FaceData build_face_data(const Scene& scene) {
+  FaceData fd;
+  fd.scene = scene;
+  fd.faces = &scene.faces();
+  fd.centroids = &scene.face_centroids();
+  const CellMesh& m = scene.mesh();
+  const MeshFaces& mf = *fd.faces;
+  double lo = 0, hi = 0;
+  if (!m.scalars.empty()) {
+    lo = *std::min_element(m.scalars.begin(), m.scalars.end());
+    hi = *std::max_element(m.scalars.begin(), m.scalars.end());
+  }
+  const auto norm = [&](int32_t p) { return hi > lo ? (m.scalar(p) - lo) / (hi - lo) : 0.5; };
+  const size_t nf = mf.num_faces();
+  fd.boundary.resize(nf);
+  fd.scalar.resize(nf);
+  fd.quad_slot.assign(nf, -1);
+  for (size_t f = 0; f < nf; ++f) {
+    fd.boundary[f] = mf.cell1[f] < 0;
+    const int32_t* id = mf.face_points(f);
+    const Vec3 &p0 = m.points[id[0]], &p1 = m.points[id[1]], &p2 = m.points[id[2]];
+    fd.scalar[f] = triangle_fn(p0, p1, p2, norm(id[0]), norm(id[1]), norm(id[2]));
+    if (mf.face_size(f) == 4) {
+      const Vec3& p3 = m.points[id[3]];
+      fd.quad_slot[f] = static_cast<int32_t>(fd.quad_half2.size());
+      fd.quad_half2.push_back(triangle_fn(p0, p2, p3, norm(id[0]), norm(id[2]), norm(id[3])));
+      const Vec3 n = cross(p2 - p0, p1 - p0) + cross(p3 - p0, p2 - p0);
+      Vec3 side = cross(n, p2 - p0);
+      if (dot(side, p3 - p0) < 0) side = -side;
+      fd.quad_split.push_back({side, -dot(side, p0)});
+    }
+  }
+  fd.tau0 = 2.4 / std::max(scene.bounds().radius(), 1e-300);  // as render/compositor.cpp
+  return fd;
+}
+
+void sort_faces(const FaceData& fd, const Camera& view, SortBuffers& buf, std::vector<int32_t>& order) {
+  const std::vector<Vec3>& c = fd.centroids->points;
+  const size_t n = c.size();
+  buf.keys.resize(n);
+  order.resize(n);
+  const Vec3 eye = view.eye, f = view.forward();
+  for (size_t i = 0; i < n; ++i) {
+    const Vec3 d = c[i] - eye;
+    buf.keys[i] = static_cast<float>(view.ortho ? dot(d, f) : length(d));
+    order[i] = static_cast<int32_t>(i);
+  }
+  radix_sort_by_key(buf.keys, order, buf.scratch_keys, buf.scratch_ids);
+}
+
+std::vector<int32_t> cell_order_from_faces(const FaceData& fd, const std::vector<int32_t>& face_order) {
+  const MeshFaces& mf = *fd.faces;
+  const size_t nf = face_order.size(), nc = fd.scene.mesh().num_cells();
+  std::vector<int32_t> rank(nf);
+  for (size_t i = 0; i < nf; ++i) rank[face_order[i]] = static_cast<int32_t>(i);
+  // Counting sort of cells by the rank of their last face, descending.
+  std::vector<int32_t> key(nc, 0), count(nf + 1, 0);
+  for (size_t c = 0; c < nc; ++c) {
+    int32_t r = 0;
+    for (int32_t i = mf.cell_face_offsets[c]; i < mf.cell_face_offsets[c + 1]; ++i)
+      r = std::max(r, rank[mf.cell_faces[i]]);
+    key[c] = static_cast<int32_t>(nf - 1) - r;
+    ++count[key[c] + 1];
+  }
+  std::partial_sum(count.begin(), count.end(), count.begin());
+  std::vector<int32_t> out(nc);
+  for (size_t c = 0; c < nc; ++c) out[count[key[c]]++] = static_cast<int32_t>(c);
+  return out;
+}
+
+RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
+                           const std::vector<int32_t>& face_order, int k, Image& image) {
+  check_k(k);
+  const SampleFrame frame(view, 1);
+  const BandLists b = band_lists(fd, frame, face_order);
+  image.width = frame.cols();
+  image.height = frame.rows();
+  image.rgb.assign(size_t(3) * frame.num_samples(), 0.f);
+  const Shading shade{fd.tau0};
+  std::vector<RenderStats> per_band(b.bands);
+  tbb::parallel_for(0, b.bands, [&](int q) {
+    const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
+    const int64_t np = int64_t(row1 - row0) * frame.cols();
+    std::vector<KEntry> entries(np * k);
+    std::vector<uint8_t> count(np, 0);
+    std::vector<PixelAccum> acc(np);
+    RenderStats& st = per_band[q];
+    int64_t segs = 0;
+    scan_band(fd, frame, face_order, b, q, [&](int64_t p, const KEntry& e) {
+      ++st.fragments;
+      kbuffer_insert(&entries[p * k], count[p], k, e, [&](const KEntry& n1, const KEntry& n2) {
+        segs += shade.segment(acc[p], n1, n2);
+      });
+    });
+    for (int64_t p = 0; p < np; ++p) {
+      kbuffer_flush(&entries[p * k], count[p], [&](const KEntry& n1, const KEntry& n2) {
+        segs += shade.segment(acc[p], n1, n2);
+      });
+      store_pixel(image, int64_t(row0) * frame.cols() + p, acc[p]);
+    }
+    st.segments = segs;
+  });
+  RenderStats total;
+  for (const RenderStats& s : per_band) {
+    total.fragments += s.fragments;
+    total.segments += s.segments;
+  }
+  return total;
+}
+
+int64_t Analysis::pixels_k_above(int kk) const {
+  int64_t n = 0;
+  for (size_t i = kk + 1; i < k_histogram.size(); ++i) n += k_histogram[i];
+  return n;
+}
+
+Analysis analyze(const FaceData& fd, const Camera& view, const std::vector<int32_t>& face_order,
+                 int k, const AnalysisOptions& opt) {
+  check_k(k);
+  const SampleFrame frame(view, 1);
+  const BandLists b = band_lists(fd, frame, face_order);
+  const int cols = frame.cols();
+  Analysis a;
+  a.k = k;
+  a.k_needed.assign(frame.num_samples(), 0);
+  a.violating.assign(frame.num_samples(), 0);
+  for (Image* img : {&a.kbuffer_image, &a.exact_image}) {
+    img->width = cols;
+    img->height = frame.rows();
+    img->rgb.assign(size_t(3) * frame.num_samples(), 0.f);
+  }
+  const Shading shade{fd.tau0};
+  struct BandOut {
+    int64_t fragments = 0, covered = 0, violating = 0, bad_segments = 0;
+    int max_list = 0;
+    std::vector<int64_t> hist;
+    std::vector<int32_t> seg_count;  // per pixel of the band
+    std::vector<Segment> segs;
+  };
+  std::vector<BandOut> outs(b.bands);
+  tbb::parallel_for(0, b.bands, [&](int q) {
+    BandOut& o = outs[q];
+    const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
+    const int64_t np = int64_t(row1 - row0) * cols;
+    // The band's fragment stream, then grouped per pixel in arrival order (stable).
+    std::vector<std::pair<int32_t, KEntry>> stream;
+    scan_band(fd, frame, face_order, b, q,
+              [&](int64_t p, const KEntry& e) { stream.emplace_back(int32_t(p), e); });
+    std::vector<int64_t> off(np + 1, 0);
+    for (const auto& s : stream) ++off[s.first + 1];
+    std::partial_sum(off.begin(), off.end(), off.begin());
+    std::vector<KEntry> frag(stream.size());
+    {
+      std::vector<int64_t> fill(off.begin(), off.end() - 1);
+      for (const auto& s : stream) frag[fill[s.first]++] = s.second;
+    }
+    o.fragments = static_cast<int64_t>(stream.size());
+    stream = {};
+    if (opt.record_segments) o.seg_count.assign(np, 0);
+    KCounter kc;
+    std::vector<KEntry> sorted;
+    std::vector<double> neg_rank;
+    std::vector<std::pair<int32_t, int32_t>> exact_pairs;
+    KEntry buf[kMaxK];
+    for (int64_t p = 0; p < np; ++p) {
+      const int n = static_cast<int>(off[p + 1] - off[p]);
+      if (n == 0) continue;
+      const KEntry* in = frag.data() + off[p];
+      ++o.covered;
+      o.max_list = std::max(o.max_list, n);
+      // A-buffer: the exact front-to-back order, and each fragment's rank in it.
+      sorted.assign(in, in + n);
+      std::sort(sorted.begin(), sorted.end(), nearer);
+      neg_rank.resize(n);
+      for (int i = 0; i < n; ++i) {
+        const int r = static_cast<int>(
+            std::lower_bound(sorted.begin(), sorted.end(), in[i], nearer) - sorted.begin());
+        neg_rank[i] = -r;  // earlier fragment e farther than f <=> -rank(e) < -rank(f)
+      }
+      const int need = 1 + kc.max_k(neg_rank.data(), neg_rank.data(), n);
+      a.k_needed[int64_t(row0) * cols + p] = static_cast<uint8_t>(std::min(need, 255));
+      if (o.hist.size() <= size_t(need)) o.hist.resize(need + 1, 0);
+      ++o.hist[need];
+      // Exact compositing: consecutive pairs of the sorted list.
+      PixelAccum exact;
+      exact_pairs.clear();
+      for (int i = 0; i + 1 < n; ++i) {
+        shade.segment(exact, sorted[i], sorted[i + 1]);
+        exact_pairs.emplace_back(sorted[i].tag, sorted[i + 1].tag);
+      }
+      store_pixel(a.exact_image, int64_t(row0) * cols + p, exact);
+      // The k-buffer on the same stream, pair by pair against the exact sequence.
+      PixelAccum acc;
+      uint8_t count = 0;
+      size_t pos = 0;
+      int64_t bad = 0;
+      const auto seg = [&](const KEntry& n1, const KEntry& n2) {
+        if (pos >= exact_pairs.size() || exact_pairs[pos] != std::make_pair(n1.tag, n2.tag)) ++bad;
+        ++pos;
+        if (shade.segment(acc, n1, n2) && opt.record_segments) {
+          o.segs.push_back({n1.d, n2.d, n1.face(), n2.face()});
+          ++o.seg_count[p];
+        }
+      };
+      for (int i = 0; i < n; ++i) kbuffer_insert(buf, count, k, in[i], seg);
+      kbuffer_flush(buf, count, seg);
+      store_pixel(a.kbuffer_image, int64_t(row0) * cols + p, acc);
+      o.bad_segments += bad;
+      o.violating += bad > 0;
+      a.violating[int64_t(row0) * cols + p] = bad > 0;
+    }
+  });
+  for (BandOut& o : outs) {
+    a.fragments += o.fragments;
+    a.covered_pixels += o.covered;
+    a.violating_pixels += o.violating;
+    a.violating_segments += o.bad_segments;
+    a.max_list = std::max(a.max_list, o.max_list);
+    if (a.k_histogram.size() < o.hist.size()) a.k_histogram.resize(o.hist.size(), 0);
+    for (size_t i = 0; i < o.hist.size(); ++i) a.k_histogram[i] += o.hist[i];
+  }
+  a.max_k_needed = a.k_histogram.empty() ? 0 : static_cast<int>(a.k_histogram.size()) - 1;
+  if (opt.record_segments) {
+    a.seg_offsets.assign(1, 0);
+    for (BandOut& o : outs) {
+      for (int32_t c : o.seg_count) a.seg_offsets.push_back(a.seg_offsets.back() + c);
+      a.segments.insert(a.segments.end(), o.segs.begin(), o.segs.end());
+    }
+  }
+  a.image_error = image_error(a.kbuffer_image, a.exact_image);
+  return a;
+}
+
+Image k_needed_image(const Analysis& a, int width, int height) {
+  Image img;
+  img.width = width;
+  img.height = height;
+  img.rgb.assign(size_t(3) * width * height, 0.f);
+  for (size_t p = 0; p < a.k_needed.size() && p < size_t(width) * height; ++p) {
+    const int k = a.k_needed[p];
+    if (k == 0) continue;
+    const float r = k > 2 ? 1.f : 0.1f, g = k > 6 ? 0.1f : 0.8f;
+    img.rgb[3 * p] = r;
+    img.rgb[3 * p + 1] = g;
+    img.rgb[3 * p + 2] = 0.1f;
+  }
+  return img;
+}
+
+}  // namespace vob::havs
