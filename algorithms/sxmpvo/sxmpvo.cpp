@@ -35,13 +35,24 @@ class SxmpvoOrderer final : public Orderer {
     const MeshFaces& faces = core_.faces();
     const CellMesh& mesh = core_.scene().mesh();
     ext_face_ = faces.boundary;
-    ext_centroid_.resize(ext_face_.size());
-    for (size_t i = 0; i < ext_face_.size(); ++i) {
+    const size_t b = ext_face_.size();
+    ext_centroid_.resize(b);
+    // Each record holds its face's points and owner: phase III visits the faces in depth
+    // order, and one contiguous record per face beats gathering ids and points at random.
+    ext_points_.resize(4 * b);
+    ext_size_.resize(b);
+    ext_cell_.resize(b);
+    for (size_t i = 0; i < b; ++i) {
       const int32_t f = ext_face_[i];
       Vec3 c{};
       const int n = faces.face_size(f);
-      for (int k = 0; k < n; ++k) c += mesh.points[faces.face_points(f)[k]];
+      for (int k = 0; k < n; ++k) {
+        ext_points_[4 * i + k] = mesh.points[faces.face_points(f)[k]];
+        c += ext_points_[4 * i + k];
+      }
       ext_centroid_[i] = c * (1.0 / n);
+      ext_size_[i] = static_cast<int8_t>(n);
+      ext_cell_[i] = faces.cell0[f];
     }
     const Aabb box = mesh.bounds();
     centre_ = (box.lo + box.hi) * 0.5;
@@ -107,6 +118,7 @@ class SxmpvoOrderer final : public Orderer {
 
   size_t exterior_bytes() const {
     return ext_face_.capacity() * 4 + ext_centroid_.capacity() * sizeof(Vec3) +
+           ext_points_.capacity() * sizeof(Vec3) + ext_size_.capacity() + ext_cell_.capacity() * 4 +
            (keys_.capacity() + ids_.capacity() + scratch_keys_.capacity() +
             scratch_ids_.capacity()) * 4;
   }
@@ -127,20 +139,14 @@ class SxmpvoOrderer final : public Orderer {
 
   void scan_and_pair(const Camera& view, PairStats& stats) {
     const SampleFrame frame(view, 1);
-    const MeshFaces& faces = core_.faces();
-    const CellMesh& mesh = core_.scene().mesh();
     const int cols = frame.cols();
     abuf_.reset(frame.num_samples());
     PolygonRaster raster;
-    Vec3 v[4];
     for (int32_t i : ids_) {
-      const int32_t f = ext_face_[i];
-      const int s = core_.face_sign(f);
+      const int s = core_.face_sign(ext_face_[i]);
       if (s == 0) continue;  // the eye is in its plane: it covers no sample
-      const int n = faces.face_size(f);
-      for (int k = 0; k < n; ++k) v[k] = mesh.points[faces.face_points(f)[k]];
-      if (!raster.setup(frame, v, n)) continue;
-      const int32_t item = faces.cell0[f] * 2 + (s > 0 ? 1 : 0);
+      if (!raster.setup(frame, &ext_points_[4 * i], ext_size_[i])) continue;
+      const int32_t item = ext_cell_[i] * 2 + (s > 0 ? 1 : 0);
       raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
         abuf_.insert(int64_t(sy) * cols + sx, t, item);
       });
@@ -155,6 +161,9 @@ class SxmpvoOrderer final : public Orderer {
   mpvo::MpvoCore core_;
   std::vector<int32_t> ext_face_;   // exterior face list: face ids (owner = cell0)
   std::vector<Vec3> ext_centroid_;  // and their centroids
+  std::vector<Vec3> ext_points_;    // 4 per exterior face (3 used by triangles)
+  std::vector<int8_t> ext_size_;    // 3 or 4
+  std::vector<int32_t> ext_cell_;   // owner
   Vec3 centre_{};
   double radius_ = 0;
   std::vector<float> keys_;

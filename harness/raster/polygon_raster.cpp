@@ -46,11 +46,33 @@ int clip_halfplane(const double* px, const double* py, int n, const PolygonRaste
 
 }  // namespace
 
+// Cheap rejection before the edge planes are built: the polygon's projected bounding box,
+// widened far beyond rounding, holds no sample centre. Most exterior faces of a fine mesh
+// cover no pixel centre at all, and this test costs a few dot products. Skipped (true)
+// when a vertex is not in front of the eye, where the projection says nothing.
+bool PolygonRaster::may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n) {
+  double lx = 0, hx = 0, ly = 0, hy = 0;
+  for (int i = 0; i < n; ++i) {
+    double x, y, zc;
+    if (!frame.project(v[i], x, y, zc)) return true;
+    if (i == 0 || x < lx) lx = x;
+    if (i == 0 || x > hx) hx = x;
+    if (i == 0 || y < ly) ly = y;
+    if (i == 0 || y > hy) hy = y;
+  }
+  const double m = 1e-6 * (1.0 + std::max({std::fabs(lx), std::fabs(hx), std::fabs(ly), std::fabs(hy)}));
+  // Sample (sx, sy) has its centre at (sx + 0.5, sy + 0.5).
+  const double x0 = std::ceil(lx - m - 0.5), x1 = std::floor(hx + m - 0.5);
+  const double y0 = std::ceil(ly - m - 0.5), y1 = std::floor(hy + m - 0.5);
+  return x0 <= x1 && y0 <= y1 && x1 >= 0 && y1 >= 0 && x0 < frame.cols() && y0 < frame.rows();
+}
+
 bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n) {
   if (n != 3 && n != 4)
     throw InputError("raster", "polygon", "has " + std::to_string(n) + " vertices, not 3 or 4");
   frame_ = &frame;
   count_ = 0;
+  if (!may_cover_a_sample(frame, v, n)) return false;
   Vec3 on_plane = v[0];
   if (n == 3) {
     plane_.n = cross(v[1] - v[0], v[2] - v[0]);

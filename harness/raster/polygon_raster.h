@@ -56,6 +56,7 @@ class PolygonRaster {
   };
 
  private:
+  static bool may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n);
   bool add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
