@@ -8,6 +8,7 @@
 #include "algorithms/mpvo/mpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
+#include "algorithms/voxel/grid_orderers.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -21,6 +22,10 @@ const std::vector<OrdererInfo>& orderer_registry() {
       sxmpvo_orderer_info(),
       triangle_centroid_orderer_info(),
       distance_sort_orderer_info(),
+      btf_orderer_info(),
+      wbtf_orderer_info(),
+      pbtf_orderer_info(),
+      ip_pbtf_orderer_info(),
       havs_orderer_info(),
   };
   return registry;

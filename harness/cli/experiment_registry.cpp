@@ -1,6 +1,7 @@
 // The list of reproducible experiments. Add one: write a function in experiments/ and a
 // line here.
 #include "harness/cli/experiments.h"
+#include "harness/cli/experiments/botha.h"
 #include "harness/cli/experiments/cook.h"
 #include "harness/cli/experiments/havs.h"
 
@@ -24,6 +25,10 @@ const std::vector<Experiment>& experiment_registry() {
       {"havs-table2", "HAVS Table 2: fragments, max A-buffer list, max k, pixels needing k > 2 and > 6 over 14 views at 512x512, Fig. 6 maps", run_havs_table2},
       {"havs-table3-4", "HAVS Tables 3 and 4: cpu sort and k-buffer time per frame and cells/s for k = 2 and 6", run_havs_table34},
       {"havs-k-tradeoff", "HAVS: time against error as k grows (1..8), beside the cell orderers", run_havs_k_tradeoff},
+      {"botha-table1", "Botha and Post Table 1: ordering throughput of btf, wbtf, pbtf, ip-pbtf, distance-sort on 256^3-class volumes at 512x512", botha_table1},
+      {"botha-interleaving", "Botha and Post: explicit against implicit interleaving (empty-space skipping) on sparse and dense volumes", botha_interleaving},
+      {"botha-fig1", "Botha and Post Fig. 1: a close-up in btf, pbtf and ip-pbtf order, difference images against distance-sort, oracle counts", botha_fig1},
+      {"botha-violations", "Botha and Post: violating pixels of every voxel ordering over 14 close-up views per volume", botha_violations},
       {"cook-table1", "Cook et al. Table 1: n, n/log2 n, b, a, w*h for gap, helix, zoo and TetGen meshes", cook_table1},
       {"cook-table3", "Cook et al. Table 3: SXMPVO's four phases by mesh size, PN and A-buffer counts, memory", cook_table3},
       {"cook-table4", "Cook et al. Table 4: SXMPVO against MPVONC and vtk-centroid by mesh size at 512x512", cook_table4},
