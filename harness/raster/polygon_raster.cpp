@@ -51,6 +51,7 @@ int clip_halfplane(const double* px, const double* py, int n, const PolygonRaste
 // cover no pixel centre at all, and this test costs a few dot products. Skipped (true)
 // when a vertex is not in front of the eye, where the projection says nothing.
 bool PolygonRaster::may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n) {
+  have_box_ = false;
   double lx = 0, hx = 0, ly = 0, hy = 0;
   for (int i = 0; i < n; ++i) {
     double x, y, zc;
@@ -64,7 +65,15 @@ bool PolygonRaster::may_cover_a_sample(const SampleFrame& frame, const Vec3* v, 
   // Sample (sx, sy) has its centre at (sx + 0.5, sy + 0.5).
   const double x0 = std::ceil(lx - m - 0.5), x1 = std::floor(hx + m - 0.5);
   const double y0 = std::ceil(ly - m - 0.5), y1 = std::floor(hy + m - 0.5);
-  return x0 <= x1 && y0 <= y1 && x1 >= 0 && y1 >= 0 && x0 < frame.cols() && y0 < frame.rows();
+  if (!(x0 <= x1 && y0 <= y1 && x1 >= 0 && y1 >= 0 && x0 < frame.cols() && y0 < frame.rows()))
+    return false;
+  // The same box bounds every triangle of the polygon: add_triangle then needs no clipping
+  // of the sample grid by the edge half-planes (one extra sample absorbs rounding).
+  box_ = SampleRect{floor_to_int(lx - 0.5) - 1, floor_to_int(ly - 0.5) - 1,
+                    ceil_to_int(hx - 0.5) + 1, ceil_to_int(hy - 0.5) + 1}
+             .intersect(frame.bounds());
+  have_box_ = true;
+  return true;
 }
 
 bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n) {
@@ -137,6 +146,11 @@ bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2)
     // Top-left rule: a zero value counts as inside when moving the sample right (then
     // down) makes it positive. a and b are exact negations across a shared edge.
     e.own = e.a > 0 || (e.a == 0 && (e.b < 0 || (e.b == 0 && dot(e.m, fr.forward()) > 0)));
+  }
+  if (have_box_) {  // all vertices in front of the eye: the projected box bounds it
+    t.box = box_;
+    ++count_;
+    return true;
   }
   // Conservative bounds: the grid of sample centres clipped by the three half-planes.
   double bx[2][12], by[2][12];

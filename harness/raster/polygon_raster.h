@@ -56,7 +56,8 @@ class PolygonRaster {
   };
 
  private:
-  static bool may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n);
+  // False when no sample centre can be covered; sets box_ when every vertex projects.
+  bool may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n);
   bool add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
@@ -80,6 +81,8 @@ class PolygonRaster {
   double num_ = 0, inv_nf_ = 0;
   Triangle tri_[2];
   int count_ = 0;
+  SampleRect box_;  // the polygon's projected bounds, valid when have_box_
+  bool have_box_ = false;
 };
 
 template <class Emit>
