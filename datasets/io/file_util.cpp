@@ -23,7 +23,7 @@ void write_atomically(const std::string& path,
     fs::create_directories(target.parent_path(), ec);
     if (ec) throw InputError(path, "folder", "cannot be created: " + ec.message());
   }
-  std::string pattern = path + ".tmp-XXXXXX";
+  std::string pattern = path + ".tmp-" + std::string(6, 'X');  // mkstemp template
   std::vector<char> buf(pattern.begin(), pattern.end());
   buf.push_back('\0');
   const int fd = mkstemp(buf.data());

@@ -97,7 +97,7 @@ void run_tetgen(const std::string& dir, const std::string& source, const std::st
 std::string make_temp_dir(const std::string& parent) {
   std::error_code ec;
   fs::create_directories(parent, ec);
-  std::string pattern = parent + "/.tetgen-XXXXXX";
+  std::string pattern = parent + "/.tetgen-" + std::string(6, 'X');  // mkdtemp template
   std::vector<char> buf(pattern.begin(), pattern.end());
   buf.push_back('\0');
   if (!mkdtemp(buf.data())) throw InputError(parent, "folder", std::string("cannot create a temporary folder: ") + std::strerror(errno));
