@@ -23,38 +23,34 @@ class CentroidOrderer final : public Orderer {
     const size_t n = centroids_->size();
     {
       auto p = clock.phase("keys");
-      keys_.resize(n);
-      ids_.resize(n);
+      sort_.resize(n);
       const Vec3 f = view.forward();
       const bool by_view = view_key_ || view.ortho;  // orthographic: eye distance is view depth
       for (size_t i = 0; i < n; ++i) {
         const Vec3 d = (*centroids_)[i] - view.eye;
         // Descending distance = ascending negated key.
-        keys_[i] = static_cast<float>(-(by_view ? dot(d, f) : length(d)));
-        ids_[i] = static_cast<int32_t>(i);
+        sort_.keys[i] = static_cast<float>(-(by_view ? dot(d, f) : length(d)));
+        sort_.ids[i] = static_cast<int32_t>(i);
       }
     }
     Ordering out;
     {
       auto p = clock.phase("radix sort");
-      radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
-      out.order = ids_;
+      sort_.sort();
+      out.order = sort_.ids;
     }
     return out;
   }
 
   size_t bytes() const override {
-    return keys_.capacity() * 4 + ids_.capacity() * 4 + scratch_keys_.capacity() * 4 +
-           scratch_ids_.capacity() * 4;
+    return sort_.bytes();
   }
 
  private:
   bool view_key_;
   Scene scene_;
   const std::vector<Vec3>* centroids_ = nullptr;
-  std::vector<float> keys_;
-  std::vector<int32_t> ids_, scratch_ids_;
-  std::vector<uint32_t> scratch_keys_;
+  KeySort sort_;
 };
 
 }  // namespace

@@ -23,32 +23,28 @@ class TriangleCentroid final : public Orderer {
     const size_t n = centroids_.size();
     {
       auto p = clock.phase("keys");
-      keys_.resize(n);
-      ids_.resize(n);
+      sort_.resize(n);
       for (size_t i = 0; i < n; ++i) {
-        keys_[i] = static_cast<float>(-view.depth(centroids_[i]));
-        ids_[i] = static_cast<int32_t>(i);
+        sort_.keys[i] = static_cast<float>(-view.depth(centroids_[i]));
+        sort_.ids[i] = static_cast<int32_t>(i);
       }
     }
     Ordering o;
     {
       auto p = clock.phase("radix sort");
-      radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
-      o.order = ids_;
+      sort_.sort();
+      o.order = sort_.ids;
     }
     return o;
   }
 
   size_t bytes() const override {
-    return centroids_.capacity() * sizeof(Vec3) + (keys_.capacity() + ids_.capacity() +
-                                                   scratch_keys_.capacity() + scratch_ids_.capacity()) * 4;
+    return centroids_.capacity() * sizeof(Vec3) + sort_.bytes();
   }
 
  private:
   std::vector<Vec3> centroids_;
-  std::vector<float> keys_;
-  std::vector<int32_t> ids_, scratch_ids_;
-  std::vector<uint32_t> scratch_keys_;
+  KeySort sort_;
 };
 
 }  // namespace

@@ -74,19 +74,17 @@ class MpvoncOrderer final : public Orderer {
     {
       auto p = clock.phase("III DFS");
       core_.begin_dfs(out);
-      for (int32_t c : ids_) core_.dfs_from(c, out);
+      for (int32_t c : sort_.ids) core_.dfs_from(c, out);
       core_.dfs_sinks(out);
       core_.dfs_unvisited(out);
     }
     core_.add_counters(out);
-    out.counters["exterior_cells"] = static_cast<double>(ids_.size());
+    out.counters["exterior_cells"] = static_cast<double>(sort_.ids.size());
     return out;
   }
 
   size_t bytes() const override {
-    return core_.bytes() + marked_.capacity() + (keys_.capacity() + ids_.capacity() +
-                                                 scratch_keys_.capacity() +
-                                                 scratch_ids_.capacity()) * 4;
+    return core_.bytes() + marked_.capacity() + sort_.bytes();
   }
 
  private:
@@ -94,8 +92,7 @@ class MpvoncOrderer final : public Orderer {
   void sort_exterior_cells(const Camera& view) {
     const MeshFaces& faces = core_.faces();
     const Vec3 eye = view.eye, dir = view.forward();
-    keys_.clear();
-    ids_.clear();
+    sort_.clear();
     for (int32_t f : faces.boundary) {
       if (!core_.front_facing_boundary(f)) continue;
       const int32_t c = faces.cell0[f];
@@ -103,19 +100,16 @@ class MpvoncOrderer final : public Orderer {
       marked_[c] = 1;
       const Vec3 d = (*centroids_)[c] - eye;
       const double depth = view.ortho ? dot(d, dir) : length(d);
-      keys_.push_back(static_cast<float>(-depth));  // ascending key = decreasing depth
-      ids_.push_back(c);
+      sort_.push(static_cast<float>(-depth), c);  // ascending key = decreasing depth
     }
-    for (int32_t c : ids_) marked_[c] = 0;
-    radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
+    for (int32_t c : sort_.ids) marked_[c] = 0;
+    sort_.sort();
   }
 
   mpvo::MpvoCore core_;
   const std::vector<Vec3>* centroids_ = nullptr;
   std::vector<uint8_t> marked_;
-  std::vector<float> keys_;
-  std::vector<int32_t> ids_, scratch_ids_;
-  std::vector<uint32_t> scratch_keys_;
+  KeySort sort_;
 };
 
 }  // namespace

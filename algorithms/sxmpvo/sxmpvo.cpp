@@ -119,22 +119,20 @@ class SxmpvoOrderer final : public Orderer {
   size_t exterior_bytes() const {
     return ext_face_.capacity() * 4 + ext_centroid_.capacity() * sizeof(Vec3) +
            ext_points_.capacity() * sizeof(Vec3) + ext_size_.capacity() + ext_cell_.capacity() * 4 +
-           (keys_.capacity() + ids_.capacity() + scratch_keys_.capacity() +
-            scratch_ids_.capacity()) * 4;
+           sort_.bytes();
   }
 
   // Exterior faces (indices into the exterior face list), nearest centroid first.
   void sort_exterior_faces(const Camera& view) {
     const Vec3 eye = view.eye, dir = view.forward();
     const size_t b = ext_face_.size();
-    keys_.resize(b);
-    ids_.resize(b);
+    sort_.resize(b);
     for (size_t i = 0; i < b; ++i) {
       const Vec3 d = ext_centroid_[i] - eye;
-      keys_[i] = static_cast<float>(view.ortho ? dot(d, dir) : length(d));
-      ids_[i] = static_cast<int32_t>(i);
+      sort_.keys[i] = static_cast<float>(view.ortho ? dot(d, dir) : length(d));
+      sort_.ids[i] = static_cast<int32_t>(i);
     }
-    radix_sort_by_key(keys_, ids_, scratch_keys_, scratch_ids_);
+    sort_.sort();
   }
 
   void scan_and_pair(const Camera& view, PairStats& stats) {
@@ -142,7 +140,7 @@ class SxmpvoOrderer final : public Orderer {
     const int cols = frame.cols();
     abuf_.reset(frame.num_samples());
     PolygonRaster raster;
-    for (int32_t i : ids_) {
+    for (int32_t i : sort_.ids) {
       const int s = core_.face_sign(ext_face_[i]);
       if (s == 0) continue;  // the eye is in its plane: it covers no sample
       if (!raster.setup(frame, &ext_points_[4 * i], ext_size_[i])) continue;
@@ -166,9 +164,7 @@ class SxmpvoOrderer final : public Orderer {
   std::vector<int32_t> ext_cell_;   // owner
   Vec3 centre_{};
   double radius_ = 0;
-  std::vector<float> keys_;
-  std::vector<int32_t> ids_, scratch_ids_;
-  std::vector<uint32_t> scratch_keys_;
+  KeySort sort_;
   sxmpvo::ABuffer abuf_;
   sxmpvo::PnLists pn_;
   mpvo::ExtraRelations extra_;

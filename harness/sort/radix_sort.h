@@ -20,6 +20,34 @@ inline uint32_t float_sort_key(float f) {
 void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
                        std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values);
 
+// Ids sorted by float keys with the radix sort, buffers kept from frame to frame: what the
+// centroid sorts, MPVONC's exterior cells and SXMPVO's exterior faces all need per view.
+class KeySort {
+ public:
+  std::vector<float> keys;   // fill with ids, then sort(): both come out ascending by key
+  std::vector<int32_t> ids;
+  void resize(size_t n) {
+    keys.resize(n);
+    ids.resize(n);
+  }
+  void clear() {
+    keys.clear();
+    ids.clear();
+  }
+  void push(float key, int32_t id) {
+    keys.push_back(key);
+    ids.push_back(id);
+  }
+  void sort() { radix_sort_by_key(keys, ids, scratch_keys_, scratch_ids_); }
+  size_t bytes() const {
+    return (keys.capacity() + ids.capacity() + scratch_keys_.capacity() + scratch_ids_.capacity()) * 4;
+  }
+
+ private:
+  std::vector<uint32_t> scratch_keys_;
+  std::vector<int32_t> scratch_ids_;
+};
+
 // Double keys (order-preserving 64-bit transform, six 11-bit passes): for references that
 // must not lose ties to float rounding. Sorts `values` by ascending `keys`, stable.
 void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values);
