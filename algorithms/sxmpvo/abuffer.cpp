@@ -5,9 +5,43 @@
 namespace vob::sxmpvo {
 
 void ABuffer::reset(int64_t pixels) {
-  head_.assign(static_cast<size_t>(pixels), -1);
-  pool_.clear();
+  pixels_ = pixels;
+  raw_.clear();
+  list_.clear();
+  offsets_.assign(static_cast<size_t>(pixels) + 1, 0);
   head_insertions_ = walk_steps_ = 0;
+}
+
+void ABuffer::finish() {
+  // Counting sort by pixel, stable: each pixel's entries in arrival order.
+  std::fill(offsets_.begin(), offsets_.end(), 0);
+  for (const Raw& r : raw_) ++offsets_[r.pixel + 1];
+  for (int64_t p = 0; p < pixels_; ++p) offsets_[p + 1] += offsets_[p];
+  list_.resize(raw_.size());
+  std::vector<int32_t>& cursor = cursor_;
+  cursor.assign(offsets_.begin(), offsets_.end() - 1);
+  for (const Raw& r : raw_) list_[cursor[r.pixel]++] = {r.t, r.item, -1};
+  // Per pixel, insertion one entry at a time into increasing t, behind every entry not
+  // farther than itself (the mirror of "in front of every entry farther than itself" in a
+  // decreasing list); then reversed. A new entry passes the entries farther than it.
+  for (int64_t p = 0; p < pixels_; ++p) {
+    const int32_t b = offsets_[p], e = offsets_[p + 1];
+    if (b == e) continue;
+    ++head_insertions_;  // the first entry of a list
+    for (int32_t i = b + 1; i < e; ++i) {
+      const PixEntry x = list_[i];
+      int32_t j = i;
+      while (j > b && list_[j - 1].t > x.t) {
+        list_[j] = list_[j - 1];
+        --j;
+      }
+      if (j == i) ++head_insertions_;
+      walk_steps_ += i - j;
+      list_[j] = x;
+    }
+    std::reverse(list_.begin() + b, list_.begin() + e);
+    for (int32_t k = b; k < e; ++k) list_[k].next = k + 1 < e ? k + 1 : -1;
+  }
 }
 
 void PnLists::reset(size_t cells) {

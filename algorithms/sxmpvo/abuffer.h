@@ -21,46 +21,50 @@ struct PixEntry {
   bool front() const { return item & 1; }
 };
 
+// The PIX lists. Entries arrive in face order (nearest centroid first) and each list is
+// kept in decreasing depth as if every entry were inserted into it on arrival, exactly as
+// the paper's linked lists: same order, same head-insertion count. They are laid out in
+// one array per frame, each pixel's list contiguous, because walking linked entries that
+// lie far apart in a pool cost one cache miss per entry (87% of the pairing time).
 class ABuffer {
  public:
   // Empties every list (keeps the storage) for `pixels` pixels.
   void reset(int64_t pixels);
-  // Inserts at the place that keeps the list in decreasing t from its head; an entry at
-  // least as far as the head becomes the head (the common case when faces arrive nearest
-  // first, which is what sorting them by centroid distance is for).
+  // Records an entry of pixel `pixel`; the lists are built by finish().
   void insert(int64_t pixel, double t, int32_t item) {
-    const int32_t id = static_cast<int32_t>(pool_.size());
-    const int32_t first = head_[pixel];
-    if (first < 0 || pool_[first].t <= t) {
-      ++head_insertions_;
-      pool_.push_back({t, item, first});
-      head_[pixel] = id;
-      return;
-    }
-    int32_t prev = first;  // indices, not pointers: push_back may move the pool
-    for (int32_t next = pool_[prev].next; next >= 0 && pool_[next].t > t; next = pool_[prev].next) {
-      prev = next;
-      ++walk_steps_;
-    }
-    ++walk_steps_;
-    pool_.push_back({t, item, pool_[prev].next});
-    pool_[prev].next = id;
+    raw_.push_back({t, item, static_cast<int32_t>(pixel)});
   }
-  int64_t pixels() const { return static_cast<int64_t>(head_.size()); }
-  int32_t head(int64_t pixel) const { return head_[pixel]; }
-  const PixEntry& entry(int32_t id) const { return pool_[id]; }
-  int64_t entries() const { return static_cast<int64_t>(pool_.size()); }
+  // Builds the lists: per pixel, the entries in arrival order inserted one by one so that
+  // the list stays in decreasing t; an entry at least as far as the head becomes the head
+  // (a head insertion), otherwise it goes behind every entry farther than itself.
+  void finish();
+  int64_t pixels() const { return pixels_; }
+  // First (farthest) entry of a pixel's list, or -1; entries link to the next nearer one.
+  int32_t head(int64_t pixel) const {
+    return offsets_[pixel] < offsets_[pixel + 1] ? offsets_[pixel] : -1;
+  }
+  const PixEntry& entry(int32_t id) const { return list_[id]; }
+  int64_t entries() const { return static_cast<int64_t>(raw_.size()); }
   int64_t head_insertions() const { return head_insertions_; }
-  int64_t walk_steps() const { return walk_steps_; }  // links followed by non-head inserts
-  size_t bytes() const { return head_.capacity() * sizeof(int32_t) + pool_.capacity() * sizeof(PixEntry); }
+  int64_t walk_steps() const { return walk_steps_; }  // entries passed by non-head inserts
+  size_t bytes() const {
+    return offsets_.capacity() * sizeof(int32_t) + raw_.capacity() * sizeof(Raw) +
+           list_.capacity() * sizeof(PixEntry);
+  }
 
  private:
-  std::vector<int32_t> head_;
-  std::vector<PixEntry> pool_;
+  struct Raw {
+    double t;
+    int32_t item, pixel;
+  };
+  int64_t pixels_ = 0;
+  std::vector<Raw> raw_;           // arrival order
+  std::vector<int32_t> offsets_;   // pixels + 1
+  std::vector<PixEntry> list_;     // per pixel, decreasing t
+  std::vector<int32_t> cursor_;    // scratch of finish()
   int64_t head_insertions_ = 0, walk_steps_ = 0;
 };
 
-// PN lists: per occluding cell, the cells it occludes (its dependencies), as linked lists.
 class PnLists {
  public:
   // Empties the lists of the previous frame (only the cells that had one) for `cells` cells.

@@ -149,6 +149,7 @@ class SxmpvoOrderer final : public Orderer {
         abuf_.insert(int64_t(sy) * cols + sx, t, item);
       });
     }
+    abuf_.finish();
     const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
     pn_.reset(core_.num_cells());
     const int64_t pixels = abuf_.pixels();

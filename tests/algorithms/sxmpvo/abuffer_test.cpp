@@ -37,6 +37,7 @@ TEST(ABuffer, KeepsDecreasingDepthAndCountsHeadInsertions) {
   a.insert(0, 2.0, back(2));  // between: walks one link
   a.insert(0, 0.5, back(3));  // nearest: walks to the tail
   a.insert(1, 7.0, front(4));
+  a.finish();
   EXPECT_EQ(depths(a, 0), (std::vector<double>{3.0, 2.0, 1.0, 0.5}));
   EXPECT_EQ(depths(a, 1), (std::vector<double>{7.0}));
   EXPECT_EQ(a.entries(), 5);
@@ -79,6 +80,7 @@ TEST(PairPixList, Figure6PixelD) {
                                              {5, front(c)}, {4, back(d)},  {3, front(d)},
                                              {2, back(e)},  {1, front(e)}};
   for (const auto& [t, item] : list) buf.insert(0, t, item);  // nearest first: never at head
+  buf.finish();
   PnLists pn;
   pn.reset(5);
   PairStats st;
@@ -109,6 +111,7 @@ TEST(PairPixList, TiesAreReorderedToRestoreAlternation) {
   buf.insert(1, 5 + 1e-12, front(2));  // rounding put the entry face just behind
   buf.insert(1, 7, front(3));
   buf.insert(1, 9, back(3));
+  buf.finish();
   PnLists pn;
   pn.reset(4);
   PairStats st;
