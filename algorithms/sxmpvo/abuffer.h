@@ -30,10 +30,18 @@ class ABuffer {
  public:
   // Empties every list (keeps the storage) for `pixels` pixels.
   void reset(int64_t pixels);
+  // An entry as it arrives: depth, item, pixel.
+  struct Raw {
+    double t;
+    int32_t item, pixel;
+  };
   // Records an entry of pixel `pixel`; the lists are built by finish().
   void insert(int64_t pixel, double t, int32_t item) {
     raw_.push_back({t, item, static_cast<int32_t>(pixel)});
   }
+  // Records a batch of entries that arrive, in this order, after those already recorded
+  // (faces scanned in parallel chunks keep the arrival order of a sequential scan).
+  void append(const std::vector<Raw>& batch) { raw_.insert(raw_.end(), batch.begin(), batch.end()); }
   // Builds the lists: per pixel, the entries in arrival order inserted one by one so that
   // the list stays in decreasing t; an entry at least as far as the head becomes the head
   // (a head insertion), otherwise it goes behind every entry farther than itself.
@@ -53,10 +61,6 @@ class ABuffer {
   }
 
  private:
-  struct Raw {
-    double t;
-    int32_t item, pixel;
-  };
   int64_t pixels_ = 0;
   std::vector<Raw> raw_;           // arrival order
   std::vector<int32_t> offsets_;   // pixels + 1

@@ -1,6 +1,9 @@
 #include "algorithms/sxmpvo/sxmpvo.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include <tbb/parallel_for.h>
 
 #include "algorithms/mpvo/mpvo_core.h"
 #include "algorithms/sxmpvo/abuffer.h"
@@ -101,20 +104,26 @@ class SxmpvoOrderer final : public Orderer {
     k["bytes_mpvo"] = static_cast<double>(core_.bytes());
     k["bytes_faces"] =
         static_cast<double>(core_.faces().bytes() + core_.scene().face_planes().bytes());
-    k["bytes_abuffer"] = static_cast<double>(abuf_.bytes());
+    k["bytes_abuffer"] = static_cast<double>(abuffer_bytes());
     k["bytes_pn"] = static_cast<double>(pn_.bytes() + extra_.bytes());
     k["bytes_exterior"] = static_cast<double>(exterior_bytes());
     return out;
   }
 
   size_t bytes() const override {
-    return core_.bytes() + abuf_.bytes() + pn_.bytes() + extra_.bytes() + exterior_bytes() +
+    return core_.bytes() + abuffer_bytes() + pn_.bytes() + extra_.bytes() + exterior_bytes() +
            scratch_.capacity() * sizeof(PixEntry);
   }
 
  private:
   using PixEntry = sxmpvo::PixEntry;
   using PairStats = sxmpvo::PairStats;
+
+  size_t abuffer_bytes() const {  // the lists and the scan's batches
+    size_t n = abuf_.bytes();
+    for (const auto& batch : batches_) n += batch.capacity() * sizeof(sxmpvo::ABuffer::Raw);
+    return n;
+  }
 
   size_t exterior_bytes() const {
     return ext_face_.capacity() * 4 + ext_centroid_.capacity() * sizeof(Vec3) +
@@ -139,16 +148,28 @@ class SxmpvoOrderer final : public Orderer {
     const SampleFrame frame(view, 1);
     const int cols = frame.cols();
     abuf_.reset(frame.num_samples());
-    PolygonRaster raster;
-    for (int32_t i : sort_.ids) {
-      const int s = core_.face_sign(ext_face_[i]);
-      if (s == 0) continue;  // the eye is in its plane: it covers no sample
-      if (!raster.setup(frame, &ext_points_[4 * i], ext_size_[i])) continue;
-      const int32_t item = ext_cell_[i] * 2 + (s > 0 ? 1 : 0);
-      raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
-        abuf_.insert(int64_t(sy) * cols + sx, t, item);
-      });
-    }
+    // Consecutive runs of the sorted faces are scanned in parallel, each into its own
+    // batch; appending the batches in run order gives the A-buffer exactly the arrival
+    // order of a sequential scan, so lists, counts and relations do not depend on threads.
+    const size_t b = sort_.ids.size();
+    const size_t runs = std::max<size_t>(1, std::min<size_t>(64, b / 2048));
+    batches_.resize(runs);
+    tbb::parallel_for(size_t(0), runs, [&](size_t r) {
+      std::vector<sxmpvo::ABuffer::Raw>& batch = batches_[r];
+      batch.clear();
+      PolygonRaster raster;
+      for (size_t k = b * r / runs, end = b * (r + 1) / runs; k < end; ++k) {
+        const int32_t i = sort_.ids[k];
+        const int s = core_.face_sign(ext_face_[i]);
+        if (s == 0) continue;  // the eye is in its plane: it covers no sample
+        if (!raster.setup(frame, &ext_points_[4 * i], ext_size_[i])) continue;
+        const int32_t item = ext_cell_[i] * 2 + (s > 0 ? 1 : 0);
+        raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
+          batch.push_back({t, item, static_cast<int32_t>(int64_t(sy) * cols + sx)});
+        });
+      }
+    });
+    for (const auto& batch : batches_) abuf_.append(batch);
     abuf_.finish();
     const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
     pn_.reset(core_.num_cells());
@@ -170,6 +191,7 @@ class SxmpvoOrderer final : public Orderer {
   sxmpvo::PnLists pn_;
   mpvo::ExtraRelations extra_;
   std::vector<PixEntry> scratch_;
+  std::vector<std::vector<sxmpvo::ABuffer::Raw>> batches_;  // per run of sorted faces
 };
 
 }  // namespace
