@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "algorithms/mpvo/mpvo_core.h"
@@ -45,12 +46,21 @@ class SxmpvoOrderer final : public Orderer {
     ext_points_.resize(4 * b);
     ext_size_.resize(b);
     ext_cell_.resize(b);
+    ext_vertex_.assign(4 * b, 0);
+    std::vector<int32_t> compact(mesh.points.size(), -1);
+    boundary_points_.clear();
     for (size_t i = 0; i < b; ++i) {
       const int32_t f = ext_face_[i];
       Vec3 c{};
       const int n = faces.face_size(f);
       for (int k = 0; k < n; ++k) {
-        ext_points_[4 * i + k] = mesh.points[faces.face_points(f)[k]];
+        const int32_t pid = faces.face_points(f)[k];
+        if (compact[pid] < 0) {
+          compact[pid] = static_cast<int32_t>(boundary_points_.size());
+          boundary_points_.push_back(mesh.points[pid]);
+        }
+        ext_vertex_[4 * i + k] = compact[pid];
+        ext_points_[4 * i + k] = mesh.points[pid];
         c += ext_points_[4 * i + k];
       }
       ext_centroid_[i] = c * (1.0 / n);
@@ -127,6 +137,8 @@ class SxmpvoOrderer final : public Orderer {
 
   size_t exterior_bytes() const {
     return ext_face_.capacity() * 4 + ext_centroid_.capacity() * sizeof(Vec3) +
+           ext_vertex_.capacity() * 4 + boundary_points_.capacity() * sizeof(Vec3) +
+           projected_.capacity() * sizeof(ProjectedVertex) +
            ext_points_.capacity() * sizeof(Vec3) + ext_size_.capacity() + ext_cell_.capacity() * 4 +
            sort_.bytes();
   }
@@ -151,6 +163,13 @@ class SxmpvoOrderer final : public Orderer {
     // Consecutive runs of the sorted faces are scanned in parallel, each into its own
     // batch; appending the batches in run order gives the A-buffer exactly the arrival
     // order of a sequential scan, so lists, counts and relations do not depend on threads.
+    // Each boundary point is projected once, not once per face that has it.
+    projected_.resize(boundary_points_.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, boundary_points_.size(), 8192),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        for (size_t k = r.begin(); k < r.end(); ++k)
+                          projected_[k] = ProjectedVertex::of(frame, boundary_points_[k]);
+                      });
     const size_t b = sort_.ids.size();
     const size_t runs = std::max<size_t>(1, std::min<size_t>(64, b / 2048));
     batches_.resize(runs);
@@ -162,7 +181,10 @@ class SxmpvoOrderer final : public Orderer {
         const int32_t i = sort_.ids[k];
         const int s = core_.face_sign(ext_face_[i]);
         if (s == 0) continue;  // the eye is in its plane: it covers no sample
-        if (!raster.setup(frame, &ext_points_[4 * i], ext_size_[i])) continue;
+        const int n = ext_size_[i];
+        ProjectedVertex proj[4];
+        for (int v = 0; v < n; ++v) proj[v] = projected_[ext_vertex_[4 * i + v]];
+        if (!raster.setup(frame, &ext_points_[4 * i], n, proj)) continue;
         const int32_t item = ext_cell_[i] * 2 + (s > 0 ? 1 : 0);
         raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
           batch.push_back({t, item, static_cast<int32_t>(int64_t(sy) * cols + sx)});
@@ -184,6 +206,9 @@ class SxmpvoOrderer final : public Orderer {
   std::vector<Vec3> ext_points_;    // 4 per exterior face (3 used by triangles)
   std::vector<int8_t> ext_size_;    // 3 or 4
   std::vector<int32_t> ext_cell_;   // owner
+  std::vector<int32_t> ext_vertex_;  // 4 per exterior face: index into boundary_points_
+  std::vector<Vec3> boundary_points_;      // points of exterior faces, each once
+  std::vector<ProjectedVertex> projected_;  // per view: their window positions
   Vec3 centre_{};
   double radius_ = 0;
   KeySort sort_;

@@ -50,12 +50,14 @@ int clip_halfplane(const double* px, const double* py, int n, const PolygonRaste
 // widened far beyond rounding, holds no sample centre. Most exterior faces of a fine mesh
 // cover no pixel centre at all, and this test costs a few dot products. Skipped (true)
 // when a vertex is not in front of the eye, where the projection says nothing.
-bool PolygonRaster::may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n) {
+bool PolygonRaster::may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n,
+                                       const ProjectedVertex* projected) {
   have_box_ = false;
   double lx = 0, hx = 0, ly = 0, hy = 0;
   for (int i = 0; i < n; ++i) {
-    double x, y, zc;
-    if (!frame.project(v[i], x, y, zc)) return true;
+    const ProjectedVertex q = projected ? projected[i] : ProjectedVertex::of(frame, v[i]);
+    if (!q.in_front) return true;
+    const double x = q.x, y = q.y;
     if (i == 0 || x < lx) lx = x;
     if (i == 0 || x > hx) hx = x;
     if (i == 0 || y < ly) ly = y;
@@ -76,12 +78,13 @@ bool PolygonRaster::may_cover_a_sample(const SampleFrame& frame, const Vec3* v, 
   return true;
 }
 
-bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n) {
+bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n,
+                          const ProjectedVertex* projected) {
   if (n != 3 && n != 4)
     throw InputError("raster", "polygon", "has " + std::to_string(n) + " vertices, not 3 or 4");
   frame_ = &frame;
   count_ = 0;
-  if (!may_cover_a_sample(frame, v, n)) return false;
+  if (!may_cover_a_sample(frame, v, n, projected)) return false;
   Vec3 on_plane = v[0];
   if (n == 3) {
     plane_.n = cross(v[1] - v[0], v[2] - v[0]);

@@ -33,11 +33,27 @@ struct Plane {
   double d = 0;  // n . p + d = 0 on the plane
 };
 
+// A vertex's window position as SampleFrame::project gives it (in_front false when the
+// vertex is not strictly in front of the eye). Callers rasterizing many polygons that share
+// vertices project each vertex once and hand these to setup(): same values, less work.
+struct ProjectedVertex {
+  double x = 0, y = 0;
+  bool in_front = false;
+  static ProjectedVertex of(const SampleFrame& frame, const Vec3& p) {
+    ProjectedVertex q;
+    double zc;
+    q.in_front = frame.project(p, q.x, q.y, zc);
+    return q;
+  }
+};
+
 class PolygonRaster {
  public:
   // Prepares the polygon v[0..n) (n = 3 or 4, any orientation). Returns false when it can
   // cover no sample (seen exactly edge-on, or outside the view). InputError for other n.
-  bool setup(const SampleFrame& frame, const Vec3* v, int n);
+  // `projected` (optional) holds ProjectedVertex::of(frame, v[i]) for each vertex.
+  bool setup(const SampleFrame& frame, const Vec3* v, int n,
+             const ProjectedVertex* projected = nullptr);
   // A conservative rectangle of the samples it may cover.
   SampleRect bounds() const;
   // Calls emit(sx, sy, t) for every covered sample in `clip`, row by row, bottom up.
@@ -57,7 +73,8 @@ class PolygonRaster {
 
  private:
   // False when no sample centre can be covered; sets box_ when every vertex projects.
-  bool may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n);
+  bool may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n,
+                          const ProjectedVertex* projected);
   bool add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
