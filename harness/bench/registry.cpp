@@ -6,6 +6,8 @@
 #include "algorithms/centroid/vtk_centroid.h"
 #include "algorithms/havs/havs.h"
 #include "algorithms/mpvo/mpvo.h"
+#include "algorithms/stencil/stencil_layers.h"
+#include "algorithms/stencil/stencil_xmpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
 #include "algorithms/voxel/grid_orderers.h"
@@ -21,6 +23,8 @@ const std::vector<OrdererInfo>& orderer_registry() {
       mpvonc_orderer_info(),
       sxmpvo_orderer_info(),
       triangle_centroid_orderer_info(),
+      stencil_layers_orderer_info(),
+      stencil_xmpvo_orderer_info(),
       distance_sort_orderer_info(),
       btf_orderer_info(),
       wbtf_orderer_info(),

@@ -4,6 +4,7 @@
 #include "harness/cli/experiments/botha.h"
 #include "harness/cli/experiments/cook.h"
 #include "harness/cli/experiments/havs.h"
+#include "harness/cli/experiments/krishnan.h"
 
 namespace vob {
 
@@ -36,6 +37,10 @@ const std::vector<Experiment>& experiment_registry() {
       {"cook-fig8", "Cook et al. Fig. 8: helix rendered in MPVONC and SXMPVO order, difference, oracle counts", cook_fig8},
       {"cook-fig11", "Cook et al. Fig. 11: SXMPVO time against exterior-face area over 0..95 gaps", cook_fig11},
       {"cook-table6", "Cook et al. Table 6: tiny cells (no pixel centre) against image size", cook_table6},
+      {"krishnan-table1", "Krishnan et al. Table 1: vertices, triangles, layers and depth complexity at 256^2 and 512^2 over a 30-frame orbit", krishnan_table1},
+      {"krishnan-fig2", "Krishnan et al. Fig. 2: render/read/scan shares, naive against blocked layer extraction, speedup per model", krishnan_fig2},
+      {"krishnan-fig3", "Krishnan et al. Fig. 3: triangles coloured by layer and each layer's footprint (PNGs)", krishnan_fig3},
+      {"krishnan-xmpvo", "Krishnan et al. section 4: stencil-xmpvo time and oracle error beside sxmpvo (and xmpvo, bsp-xmpvo)", krishnan_xmpvo},
   };
   return registry;
 }

@@ -1,0 +1,36 @@
+// The layer-extraction buffer machine on the harness rasterizer (polygon_raster.h): the
+// same pixel centres, top-left fill rule and depths (the ray parameter t, in doubles) as
+// the oracle, so the layers it yields are exact for the oracle's samples. Passes follow the
+// OpenGL configurations of layer_backend.h fragment by fragment, in drawing order: GL_LESS
+// keeps the first of equal depths, GL_GEQUAL the last; GL_INCR saturates at 255.
+#pragma once
+#include <memory>
+
+#include "algorithms/stencil/layer_backend.h"
+#include "harness/raster/sample_frame.h"
+
+namespace vob::stencil {
+
+class SoftwareBackend final : public LayerBackend {
+ public:
+  std::string name() const override { return "software"; }
+  void set_primitives(const std::vector<Vec3>& points, const std::vector<int8_t>& sizes) override;
+  void begin_frame(const Camera& view) override;
+  void render_candidates(const std::vector<int32_t>& ids) override;
+  void render_complexity(const std::vector<int32_t>& ids) override;
+  void finish() override {}
+  void read_colour(const PixelRect& r, uint32_t* dst) override;
+  void read_stencil(const PixelRect& r, uint8_t* dst) override;
+  size_t bytes() const override;
+
+ private:
+  std::vector<Vec3> points_;
+  std::vector<int8_t> sizes_;
+  std::unique_ptr<SampleFrame> frame_;
+  int w_ = 0, h_ = 0;
+  std::vector<double> depth_;
+  std::vector<uint32_t> colour_;
+  std::vector<uint8_t> stencil_;
+};
+
+}  // namespace vob::stencil

@@ -1,0 +1,145 @@
+#include "algorithms/stencil/stencil_layers.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "algorithms/stencil/layer_extraction.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+namespace {
+
+using namespace stencil;
+
+class StencilLayers final : public Orderer {
+ public:
+  StencilLayers(std::string backend, ExtractOptions opt) : backend_name_(std::move(backend)), opt_(opt) {}
+
+  std::string name() const override { return "stencil-layers"; }
+  SceneKind scene_kind() const override { return SceneKind::Triangles; }
+  Claims claims() const override {
+    Claims c;
+    c.image_exact = backend_name_ == "software";
+    c.detects_cycles = true;
+    return c;
+  }
+  nlohmann::json parameters() const override {
+    nlohmann::json j{{"backend", backend_name_}, {"variant", opt_.blocked ? "blocked" : "naive"}};
+    if (opt_.blocked) j["block"] = opt_.block;
+    j["cycles"] = opt_.break_cycles ? "break" : "stop";
+    return j;
+  }
+
+  void prepare(const Scene& scene, PhaseClock& clock) override {
+    auto p = clock.phase("upload triangles");
+    const TriangleSoup& s = scene.soup();
+    const size_t n = s.num_triangles();
+    if (n >= size_t(INT32_MAX) - 1)
+      throw InputError("stencil-layers", scene.name(), "too many triangles for 32-bit ids");
+    points_.assign(4 * n, Vec3{});
+    sizes_.assign(n, 3);
+    centroids_.resize(n);
+    for (size_t t = 0; t < n; ++t) {
+      for (int k = 0; k < 3; ++k) points_[4 * t + k] = s.points[s.tris[t][k]];
+      centroids_[t] = (points_[4 * t] + points_[4 * t + 1] + points_[4 * t + 2]) / 3.0;
+    }
+    backend_ = make_layer_backend(backend_name_, "stencil-layers");
+    backend_->set_primitives(points_, sizes_);
+  }
+
+  Ordering order(const Camera& view, PhaseClock& clock) override {
+    {
+      auto p = clock.phase("render");
+      backend_->begin_frame(view);
+    }
+    const int32_t n = int32_t(sizes_.size());
+    extractor_.run(*backend_, n, view, opt_, clock, result_);
+    Ordering out;
+    out.layers = result_.layer;
+    std::vector<int32_t> stuck, hidden;
+    for (int32_t t = 0; t < n; ++t)
+      if (result_.layer[size_t(t)] < 0) (result_.visible[size_t(t)] ? stuck : hidden).push_back(t);
+    std::vector<std::pair<double, int32_t>> by_depth;
+    for (int32_t t : stuck) by_depth.push_back({-view.depth(centroids_[size_t(t)]), t});
+    std::sort(by_depth.begin(), by_depth.end());
+    out.order.reserve(size_t(n));
+    for (const auto& [d, t] : by_depth) out.order.push_back(t);
+    out.order.insert(out.order.end(), hidden.begin(), hidden.end());
+    // Layers back to front: counting sort by layer, farthest first.
+    std::vector<int32_t> start(size_t(result_.layers) + 1, 0);
+    for (int32_t t = 0; t < n; ++t)
+      if (result_.layer[size_t(t)] >= 0) ++start[size_t(result_.layers - 1 - result_.layer[size_t(t)]) + 1];
+    for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+    const size_t base = out.order.size();
+    out.order.resize(size_t(n));
+    for (int32_t t = 0; t < n; ++t) {
+      const int32_t l = result_.layer[size_t(t)];
+      if (l >= 0) out.order[base + size_t(start[size_t(result_.layers - 1 - l)]++)] = t;
+    }
+    if (!stuck.empty()) out.cycles.add(stuck);
+    for (int32_t t : result_.forced) out.cycles.add({t});
+    add_counters(out, result_);
+    out.counters["bytes_buffers"] = double(extractor_.bytes() + backend_->bytes());
+    out.extras["footprint"] = result_.footprint;
+    out.extras["backend"] = backend_->name();
+    return out;
+  }
+
+  size_t bytes() const override {
+    return points_.capacity() * sizeof(Vec3) + sizes_.capacity() + centroids_.capacity() * sizeof(Vec3) +
+           extractor_.bytes() + (backend_ ? backend_->bytes() : 0) + result_.layer.capacity() * 4 +
+           result_.visible.capacity();
+  }
+
+  static void add_counters(Ordering& out, const LayerResult& r) {
+    auto& k = out.counters;
+    k["layers"] = r.layers;
+    k["candidate_passes"] = double(r.candidate_passes);
+    k["complexity_passes"] = double(r.complexity_passes);
+    k["passes"] = double(r.candidate_passes + r.complexity_passes);
+    k["reads"] = double(r.reads);
+    k["pixels_read"] = double(r.pixels_read);
+    k["blocks_read"] = double(r.blocks_read);
+    k["covered_pixels"] = double(r.covered_pixels);
+    k["fragments"] = double(r.fragments);
+    k["average_depth_complexity"] = r.average_depth_complexity();
+    k["max_stencil"] = r.max_stencil;
+    k["removals"] = double(r.removals);
+    k["uncovered_removals"] = double(r.uncovered_removals);
+    k["tie_pixels"] = double(r.tie_pixels);
+    k["forced"] = double(r.forced.size());
+    k["unclassified"] = double(r.unclassified_visible + r.unclassified_no_pixel);
+    k["unclassified_visible"] = double(r.unclassified_visible);
+    k["unclassified_no_pixel"] = double(r.unclassified_no_pixel);
+  }
+
+ private:
+  std::string backend_name_;
+  ExtractOptions opt_;
+  std::vector<Vec3> points_, centroids_;
+  std::vector<int8_t> sizes_;
+  std::unique_ptr<LayerBackend> backend_;
+  LayerExtractor extractor_;
+  LayerResult result_;
+};
+
+}  // namespace
+
+OrdererInfo stencil_layers_orderer_info() {
+  return {"stencil-layers", SceneKind::Triangles,
+          "Krishnan et al.'s layer extraction with item, z and stencil buffers (OpenGL through "
+          "OSMesa, or the same passes on the harness rasterizer)",
+          "backend=gl (gl|software); variant=blocked (naive|blocked); block=64 (8..1024): block "
+          "side in pixels; cycles=break (break|stop): a round that layers nothing forces one candidate "
+          "candidate (break) or ends the extraction (stop, the paper)",
+          [](Params& p) -> std::unique_ptr<Orderer> {
+            const std::string backend = p.get_choice("backend", "gl", {"gl", "software"});
+            ExtractOptions opt;
+            opt.blocked = p.get_choice("variant", "blocked", {"naive", "blocked"}) == "blocked";
+            opt.block = p.get_int("block", 64, 8, 1024);
+            opt.break_cycles = p.get_choice("cycles", "break", {"break", "stop"}) == "break";
+            return std::make_unique<StencilLayers>(backend, opt);
+          }};
+}
+
+}  // namespace vob
