@@ -1,21 +1,36 @@
 #include "algorithms/havs/havs.h"
 
+#include "algorithms/havs/gl/gl_kbuffer.h"
 #include "algorithms/havs/havs_frame.h"
+#include "harness/scene/input_error.h"
 
 namespace vob {
 namespace {
 
 class HavsOrderer final : public Orderer {
  public:
-  HavsOrderer(int k, bool analyze) : k_(k), analyze_(analyze) {}
+  HavsOrderer(int k, bool analyze, std::string backend, std::string gl_draw)
+      : k_(k), analyze_(analyze), backend_(std::move(backend)), gl_draw_(std::move(gl_draw)) {}
   std::string name() const override { return "havs"; }
   SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override { return {}; }
-  nlohmann::json parameters() const override { return {{"k", k_}, {"analyze", analyze_}}; }
+  nlohmann::json parameters() const override {
+    nlohmann::json j{{"k", k_}, {"analyze", analyze_}};
+    if (backend_ == "gl") j.update({{"backend", backend_}, {"gl_draw", gl_draw_}});
+    return j;
+  }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     auto p = clock.phase("faces");
     fd_ = havs::build_face_data(scene);
+    if (backend_ == "gl") {
+      gl_.reset();
+      try {
+        gl_ = std::make_unique<havs::GlKBuffer>(fd_);
+      } catch (const havs::GlUnavailable& e) {
+        throw InputError("havs", "backend=gl", e.what());
+      }
+    }
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
@@ -26,13 +41,26 @@ class HavsOrderer final : public Orderer {
     havs::RenderStats rs;
     {
       auto p = clock.phase("k-buffer");
-      rs = havs::render_kbuffer(fd_, view, face_order_, k_, image_);
+      if (gl_) {
+        const havs::GlFrameStats g = gl_->render(
+            view, face_order_, k_,
+            gl_draw_ == "serialized" ? havs::GlDrawMode::Serialized : havs::GlDrawMode::Batched, image_);
+        rs.fragments = g.fragments;
+        gl_draws_ = g.draws;
+      } else {
+        rs = havs::render_kbuffer(fd_, view, face_order_, k_, image_);
+      }
     }
     // Harness bookkeeping, untimed: the cell permutation and the error analysis.
     Ordering out;
     out.order = havs::cell_order_from_faces(fd_, face_order_);
     out.counters["havs_fragments"] = double(rs.fragments);
-    out.counters["havs_segments"] = double(rs.segments);
+    if (gl_) {
+      out.counters["havs_gl_fragments"] = double(rs.fragments);
+      out.counters["havs_gl_draws"] = double(gl_draws_);
+    } else {
+      out.counters["havs_segments"] = double(rs.segments);
+    }
     out.counters["havs_faces"] = double(face_order_.size());
     if (analyze_) {
       const std::string key = view.to_json().dump();
@@ -56,13 +84,17 @@ class HavsOrderer final : public Orderer {
   }
 
   size_t bytes() const override {
-    return fd_.bytes() + sort_.bytes() + face_order_.capacity() * 4 + image_.rgb.capacity() * 4;
+    return fd_.bytes() + sort_.bytes() + face_order_.capacity() * 4 + image_.rgb.capacity() * 4 +
+           (gl_ ? gl_->bytes() : 0);
   }
 
  private:
   int k_;
   bool analyze_;
+  std::string backend_, gl_draw_;
   havs::FaceData fd_;
+  std::unique_ptr<havs::GlKBuffer> gl_;  // backend=gl; refers to fd_
+  int gl_draws_ = 0;
   havs::SortBuffers sort_;
   std::vector<int32_t> face_order_;
   Image image_;
@@ -77,10 +109,15 @@ OrdererInfo havs_orderer_info() {
           "HAVS (Callahan et al.): face centroid radix sort + software k-buffer (heuristic; its "
           "per-pixel error is in the havs_* counters)",
           "k=2 (1..16): k-buffer entries per pixel; analyze=true: measure against the exact "
-          "per-pixel order (untimed)",
+          "per-pixel order (untimed); backend=software|gl: software k-buffer or the OpenGL "
+          "fragment-shader k-buffer on OSMesa; gl_draw=batched|serialized (gl: one draw, or "
+          "race-free runs separated by memory barriers)",
           [](Params& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<HavsOrderer>(p.get_int("k", 2, 1, havs::kMaxK),
-                                                 p.get_bool("analyze", true));
+            const int k = p.get_int("k", 2, 1, havs::kMaxK);
+            const bool analyze = p.get_bool("analyze", true);
+            std::string backend = p.get_choice("backend", "software", {"software", "gl"});
+            std::string draw = p.get_choice("gl_draw", "batched", {"batched", "serialized"});
+            return std::make_unique<HavsOrderer>(k, analyze, std::move(backend), std::move(draw));
           }};
 }
 

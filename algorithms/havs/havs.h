@@ -6,7 +6,15 @@
 //   k=2 (1..16)      k-buffer entries per pixel (the paper's hardware: 2 or 6)
 //   analyze=true     measure the k-buffer against the exact per-pixel (A-buffer) order,
 //                    untimed, once per view (the result is deterministic, so repeats of the
-//                    same view reuse it)
+//                    same view reuse it); the analysis always reruns the software k-buffer
+//   backend=software the "k-buffer" phase: `software` (kbuffer.h on the CPU, parallel over
+//                    bands of rows) or `gl` (the same k-buffer as an OpenGL 4.5 fragment
+//                    shader with image load/store on OSMesa/llvmpipe, gl/gl_kbuffer.h; the
+//                    cpu sort and the face order are the same). With gl, prepare() creates the
+//                    GL context and fails with one InputError line when it cannot.
+//   gl_draw=batched  gl only: `batched` draws all faces in one call (the paper's way; the
+//                    read-modify-write may race, Fig. 5), `serialized` draws runs of faces
+//                    with disjoint pixel rectangles separated by glMemoryBarrier (race free)
 // Ordering::order is a complete back-to-front permutation of cells derived from the face
 // sort (each cell at the position of its last-arriving face, havs_frame.h); the harness'
 // oracle judges that permutation. HAVS's own error is in Ordering::counters:
@@ -15,6 +23,7 @@
 //   (pixels whose composited segment sequence differs from the exact one),
 //   havs_violating_segments, havs_image_rmse / havs_image_max_error / havs_pixels_off (the
 //   k-buffer image against exact-order compositing of the same segments).
+//   backend=gl adds havs_gl_fragments (fragments the shader saw) and havs_gl_draws.
 // Claims: heuristic in general; exact at a view where k >= havs_max_k_needed.
 #pragma once
 #include "harness/bench/registry.h"

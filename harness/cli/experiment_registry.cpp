@@ -26,6 +26,7 @@ const std::vector<Experiment>& experiment_registry() {
       {"havs-table2", "HAVS Table 2: fragments, max A-buffer list, max k, pixels needing k > 2 and > 6 over 14 views at 512x512, Fig. 6 maps", run_havs_table2},
       {"havs-table3-4", "HAVS Tables 3 and 4: cpu sort and k-buffer time per frame and cells/s for k = 2 and 6", run_havs_table34},
       {"havs-k-tradeoff", "HAVS: time against error as k grows (1..8), beside the cell orderers", run_havs_k_tradeoff},
+      {"havs-gl", "HAVS: the k-buffer as an OpenGL fragment shader on OSMesa against the software k-buffer: times, image differences, race-changed pixels (Fig. 5)", run_havs_gl},
       {"botha-table1", "Botha and Post Table 1: ordering throughput of btf, wbtf, pbtf, ip-pbtf, distance-sort on 256^3-class volumes at 512x512", botha_table1},
       {"botha-interleaving", "Botha and Post: explicit against implicit interleaving (empty-space skipping) on sparse and dense volumes", botha_interleaving},
       {"botha-fig1", "Botha and Post Fig. 1: a close-up in btf, pbtf and ip-pbtf order, difference images against distance-sort, oracle counts", botha_fig1},
