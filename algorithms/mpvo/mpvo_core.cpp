@@ -101,7 +101,9 @@ void MpvoCore::create_partial_order(const Camera& view) {
     const double value = n.x * w.x + n.y * w.y + n.z * w.z + w0_scale * offset[f];
     const double bound = (std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z)) * k;
     int s;
-    if (std::fabs(value) > bound) {
+    if (plain_double_) {
+      s = (value > 0) - (value < 0);
+    } else if (std::fabs(value) > bound) {
       s = value > 0 ? 1 : -1;
     } else {
       s = exact_sign(static_cast<int32_t>(f), view, dir);

@@ -73,6 +73,9 @@ class MpvoCore {
 
   // ---- Phase I ----
   void create_partial_order(const Camera& view);
+  // Stability studies only: trust the double sign everywhere (no bound, no exact call).
+  // Off by default; double_sign_wrong then stays 0 because nothing is checked.
+  void set_plain_double_signs(bool on) { plain_double_ = on; }
   int face_sign(int32_t f) const { return sign_[f]; }
   const std::vector<int8_t>& face_signs() const { return sign_; }
   // Boundary face whose outside faces the eye.
@@ -128,6 +131,7 @@ class MpvoCore {
   std::vector<uint8_t> outbound_;     // per cell: arrows to neighbours in front
   std::vector<uint8_t> behind_mask_;  // per cell: bit k = the neighbour at slot k is behind
   int64_t exact_calls_ = 0, double_wrong_ = 0, arrows_ = 0;
+  bool plain_double_ = false;
 
   const ExtraRelations* extra_ = nullptr;
   std::vector<uint8_t> state_;  // kNew / kOnStack / kDone

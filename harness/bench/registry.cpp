@@ -10,6 +10,8 @@
 #include "algorithms/stencil/stencil_xmpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
+#include "algorithms/xmpvo/bsp_xmpvo.h"
+#include "algorithms/xmpvo/xmpvo.h"
 #include "algorithms/voxel/grid_orderers.h"
 #include "harness/scene/input_error.h"
 
@@ -22,6 +24,8 @@ const std::vector<OrdererInfo>& orderer_registry() {
       mpvo_orderer_info(),
       mpvonc_orderer_info(),
       sxmpvo_orderer_info(),
+      xmpvo_orderer_info(),
+      bsp_xmpvo_orderer_info(),
       triangle_centroid_orderer_info(),
       stencil_layers_orderer_info(),
       stencil_xmpvo_orderer_info(),

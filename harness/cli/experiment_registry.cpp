@@ -4,7 +4,9 @@
 #include "harness/cli/experiments/botha.h"
 #include "harness/cli/experiments/cook.h"
 #include "harness/cli/experiments/havs.h"
+#include "harness/cli/experiments/xmpvo_repro.h"
 #include "harness/cli/experiments/krishnan.h"
+#include "harness/cli/experiments/xmpvo_stability.h"
 
 namespace vob {
 
@@ -38,6 +40,9 @@ const std::vector<Experiment>& experiment_registry() {
       {"cook-fig8", "Cook et al. Fig. 8: helix rendered in MPVONC and SXMPVO order, difference, oracle counts", cook_fig8},
       {"cook-fig11", "Cook et al. Fig. 11: SXMPVO time against exterior-face area over 0..95 gaps", cook_fig11},
       {"cook-table6", "Cook et al. Table 6: tiny cells (no pixel centre) against image size", cook_table6},
+      {"cook-table2", "Cook et al. Table 2: BSP-XMPVO, XMPVO and SXMPVO per view on bluntfin / f117 stand-ins, BSP preprocessing apart", xmpvo_cook_table2},
+      {"xmpvo-scaling", "XMPVO and BSP-XMPVO: per-view time and BSP build against exterior faces b over the gap series", xmpvo_scaling},
+      {"xmpvo-stability", "XMPVO: sign decisions where plain doubles disagree with the exact predicates, and the oracle verdict of both orders, per hard case", xmpvo_stability},
       {"krishnan-table1", "Krishnan et al. Table 1: vertices, triangles, layers and depth complexity at 256^2 and 512^2 over a 30-frame orbit", krishnan_table1},
       {"krishnan-fig2", "Krishnan et al. Fig. 2: render/read/scan shares, naive against blocked layer extraction, speedup per model", krishnan_fig2},
       {"krishnan-fig3", "Krishnan et al. Fig. 3: triangles coloured by layer and each layer's footprint (PNGs)", krishnan_fig3},

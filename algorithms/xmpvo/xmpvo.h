@@ -1,0 +1,58 @@
+// Plugin `xmpvo`: Silva, Mitchell and Williams' XMPVO (VolVis 1998), as specified in issue 4:
+// MPVO's face arrows plus relations between exterior cells found at object precision.
+//
+// xmpvo[:predicates=exact|double|compare]
+//   predicates  exact (default): every sign (front/back facing, side of a projected edge,
+//               edge crossing, arrow) is an exact predicate (CGAL filtered);
+//               double: the same signs in plain double arithmetic, no filter, no fallback
+//               (face depth order stays exact) -- for the stability study only;
+//               compare: evaluate both, use the exact sign, count disagreements
+//               (counters disagree_facing, disagree_side, disagree_crossing, and
+//               disagree_arrows = MpvoCore's double_sign_wrong).
+//
+// Prepare: "unique faces", "face planes", "exterior face list".
+// Phases per view:
+//   "I create partial order"  MPVO face arrows (MpvoCore);
+//   "project"  exterior faces with their facing (edge-on faces dropped: they cover no open
+//       set; perspective faces not entirely in front of the eye skipped and counted),
+//       vertices projected to doubles for bucketing only, a uniform grid of about one face
+//       per bucket;
+//   "arrangement vertices"  projected face vertices plus proper crossings of projected
+//       edges, found among edge pairs sharing a bucket (exact crossing test);
+//   "ray queries"  at each arrangement vertex v: the faces whose closed projection holds v
+//       (exact sides), split into those with v inside (sorted by exact depth order) and
+//       those with v on their boundary (a wedge of directions). Each sector between
+//       consecutive boundary directions is a region touching v; its faces are the inside
+//       ones plus the boundary ones covering it, in depth order -- the ray shot just inside
+//       the region, symbolically. Two faces covering a region at v are ordered by where
+//       v's own ray meets their planes (exact, vertex_plane_order), and by the full
+//       depth_order only when they touch on that ray. Queries run in parallel (TBB); the
+//       relation set and the counters do not depend on the thread split.
+//       Consecutive (back-facing nearer, front-facing farther)
+//       pairs give "cell of the nearer in front of cell of the farther". Only pairs next to
+//       a boundary face are taken (inside faces' pairs straddling a boundary face
+//       included): a run of regions where a pair stays consecutive is bounded by edges of
+//       the pair or of faces between them, so one of its corners has such a face.
+//   "DFS"  MpvoCore's DFS with the relations (sinks, then unvisited cells; cycles reported
+//       and broken).
+//
+// Limits: faces crossing a perspective eye's plane (eye inside or beside the mesh) are
+// skipped (counter faces_crossing_eye_plane); rays near them may miss relations. Faces
+// are taken as planar convex polygons (the plane of the first three vertices).
+//
+// Claims: object_exact (every ray, any resolution, acyclic valid meshes), detects_cycles.
+// Counters: MpvoCore's, exterior_faces, front_facing, back_facing, edge_on_faces,
+// faces_behind_eye, faces_crossing_eye_plane, skipped_faces, projected_vertices,
+// edge_crossings, candidate_edge_pairs, vertex_queries, ray_queries (sectors),
+// faces_per_query (mean faces in a sector's list), relations (distinct extra pairs),
+// depth_order_calls, depth_order_full (those needing the full test), depth_undecided
+// (intersecting or coplanar faces), degenerate_coverage (a face whose projection is met
+// in a degenerate way at a vertex, skipped), grid_buckets, bytes_*; in compare mode the
+// disagree_* counts and decision totals facing_decisions, side_decisions,
+// crossing_decisions.
+#pragma once
+#include "harness/bench/registry.h"
+
+namespace vob {
+OrdererInfo xmpvo_orderer_info();
+}  // namespace vob

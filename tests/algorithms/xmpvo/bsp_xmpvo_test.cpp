@@ -1,0 +1,170 @@
+// The bsp-xmpvo plugin: object-space exact (no violation at the pixel centres nor between
+// them, S = 3) on nonconvex, disconnected and zoo meshes over 14 views, perspective and
+// orthographic, where MPVONC fails; relations across gaps; cycles reported and broken;
+// skipped triangles counted when the eye is inside the mesh.
+#include <gtest/gtest.h>
+
+#include "datasets/datasets.h"
+#include "harness/bench/registry.h"
+#include "harness/oracle/oracle.h"
+#include "harness/scene/input_error.h"
+#include "harness/view/view_set.h"
+#include "tests/algorithms/test_meshes.h"
+
+using namespace vob;
+using namespace vob::testing;
+
+namespace {
+
+Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
+  Params p(name);
+  for (const auto& [k, v] : set) p.set(k, v);
+  return make_dataset(name, p);
+}
+
+struct Prepared {
+  std::unique_ptr<Orderer> o;
+  explicit Prepared(const Scene& s, const std::string& spec = "bsp-xmpvo") : o(make_orderer(spec)) {
+    PhaseClock c;
+    o->prepare(s.fresh(), c);
+  }
+  Ordering order(const Camera& v) {
+    PhaseClock c;
+    return o->order(v, c);
+  }
+};
+
+// Every view of a 14-view set: complete, no cycle, zero violations at S (and at the pixel
+// centres); returns the number of views where `control` violates.
+int expect_exact(const Scene& s, int w, int h, bool ortho, int supersample, const std::string& control,
+                 const std::string& spec = "bsp-xmpvo") {
+  Prepared p(s, spec);
+  std::unique_ptr<Prepared> c = control.empty() ? nullptr : std::make_unique<Prepared>(s, control);
+  int control_failures = 0;
+  OracleOptions opt;
+  opt.supersample = supersample;
+  for (int v = 0; v < 14; ++v) {
+    ViewOptions vo{w, h};
+    vo.ortho = ortho;
+    const Camera view = fibonacci_view(s.bounds(), 14, v, vo);
+    const Ordering r = p.order(view);
+    EXPECT_TRUE(is_permutation_of(r.order, s.mesh().num_cells()));
+    const OracleResult o = check_ordering(s, view, r.order, opt);
+    EXPECT_EQ(o.violating_fragments, 0) << s.name() << " view " << v << ": " << o.to_json().dump();
+    EXPECT_EQ(r.cycles.cycles, 0) << s.name() << " view " << v;
+    for (const char* key : {"bsp_nodes", "bsp_depth", "bsp_fragments", "fragment_growth", "beam_queries",
+                            "nodes_visited", "candidates", "overlap_tests", "relations", "bytes_bsp"})
+      EXPECT_TRUE(r.counters.count(key)) << key;
+    EXPECT_EQ(r.counters.at("skipped_triangles"), 0);
+    EXPECT_EQ(r.counters.at("depth_undecided"), 0);
+    EXPECT_LE(r.counters.at("relations"), r.counters.at("overlap_tests"));
+    if (c && !check_ordering(s, view, c->order(view).order).ok()) ++control_failures;
+  }
+  return control_failures;
+}
+
+}  // namespace
+
+TEST(BspXmpvo, ClaimsObjectExactAndCycles) {
+  auto o = make_orderer("bsp-xmpvo");
+  EXPECT_TRUE(o->claims().object_exact);
+  EXPECT_TRUE(o->claims().detects_cycles);
+  EXPECT_THROW(make_orderer("bsp-xmpvo:candidates=0"), InputError);
+}
+
+// Cook et al.'s Fig. 8 configuration, small: MPVONC fails in every view, BSP-XMPVO in none.
+TEST(BspXmpvo, ExactOnHelixWhereMpvoncFails) {
+  const Scene s = dataset("helix", {{"cells", "2000"}});
+  EXPECT_EQ(expect_exact(s, 200, 200, false, 1, "mpvonc"), 14);
+}
+
+TEST(BspXmpvo, ExactOnGapMeshesBetweenPixelCentres) {
+  for (const char* gaps : {"0", "3", "7"}) {
+    const Scene s = dataset("gap", {{"nx", "5"}, {"ny", "5"}, {"nz", "12"}, {"gaps", gaps}});
+    expect_exact(s, 120, 100, false, 3, "");
+  }
+}
+
+TEST(BspXmpvo, ExactOnZooAndOrthographic) {
+  expect_exact(dataset("zoo", {{"scale", "1"}}), 160, 160, false, 1, "");
+  expect_exact(dataset("gap", {{"nx", "5"}, {"ny", "5"}, {"nz", "12"}, {"gaps", "5"}}), 120, 100, true, 1, "");
+}
+
+// Without the coverage stop every candidate in the beam is collected: still exact, and a
+// superset of the relations found with the stop (same traversal order, truncated).
+TEST(BspXmpvo, CollectAllIsExactAndASupersetOfStop) {
+  const Scene s = dataset("helix", {{"cells", "1000"}});
+  expect_exact(s, 100, 100, false, 3, "", "bsp-xmpvo:stop=false");
+  Prepared stop(s), all(s, "bsp-xmpvo:stop=false");
+  double stops = 0;
+  for (int v = 0; v < 14; ++v) {
+    const Camera view = fibonacci_view(s.bounds(), 14, v, ViewOptions{100, 100});
+    const Ordering a = stop.order(view), b = all.order(view);
+    EXPECT_LE(a.counters.at("relations"), b.counters.at("relations"));
+    EXPECT_LE(a.counters.at("candidates"), b.counters.at("candidates"));
+    EXPECT_EQ(b.counters.at("early_stops"), 0);
+    stops += a.counters.at("early_stops");
+  }
+  EXPECT_GT(stops, 0);
+}
+
+// Two blocks side by side: the beams of one block's back faces meet the other's front
+// faces, so there are relations, and each is between cells of different blocks.
+TEST(BspXmpvo, RelationsAcrossTheGap) {
+  const Scene s = Scene::from_mesh("two-blocks", two_blocks(3, 0.5));
+  Prepared p(s);
+  const Camera view = fibonacci_view(s.bounds(), 14, 2, ViewOptions{200, 200});
+  const Ordering r = p.order(view);
+  EXPECT_GT(r.counters.at("relations"), 0);
+  EXPECT_GT(r.counters.at("beam_queries"), 0);
+  EXPECT_TRUE(check_ordering(s, view, r.order).ok());
+  EXPECT_EQ(ray_check(s, view, r.order).violations.size(), 0u);
+}
+
+// A convex mesh needs no relation at all.
+TEST(BspXmpvo, ConvexMeshHasNoRelations) {
+  const Scene s = Scene::from_mesh("block", tet_block(3, 3, 3));
+  Prepared p(s);
+  for (int v = 0; v < 14; ++v) {
+    const Camera view = fibonacci_view(s.bounds(), 14, v, ViewOptions{100, 100});
+    const Ordering r = p.order(view);
+    EXPECT_EQ(r.counters.at("relations"), 0);
+    EXPECT_TRUE(check_ordering(s, view, r.order).ok());
+  }
+}
+
+// Visibility cycles: reported and broken, the order still complete.
+TEST(BspXmpvo, ReportsCycles) {
+  {
+    const Scene s = Scene::from_mesh("blade-ring", blade_ring(8));
+    Prepared p(s);
+    const Ordering r = p.order(ring_axis_view(false));
+    EXPECT_GT(r.cycles.cycles, 0);
+    EXPECT_TRUE(is_permutation_of(r.order, s.mesh().num_cells()));
+  }
+  for (const char* name : {"cycle", "cycle-sticks"}) {
+    const Scene s = dataset(name, {});
+    Prepared p(s);
+    int64_t cycles = 0;
+    for (const Camera& v : find_dataset(name).views(s, 128, 128)) {
+      const Ordering r = p.order(v);
+      cycles += r.cycles.cycles;
+      EXPECT_TRUE(is_permutation_of(r.order, s.mesh().num_cells()));
+    }
+    EXPECT_GT(cycles, 0) << name;
+  }
+}
+
+// Eyes inside the mesh: triangles crossing the eye's plane are skipped and counted; the
+// order is complete.
+TEST(BspXmpvo, EyeInsideCountsSkippedTriangles) {
+  const Scene s = dataset("eye-inside", {});
+  Prepared p(s);
+  double skipped = 0;
+  for (const Camera& v : find_dataset("eye-inside").views(s, 128, 128)) {
+    const Ordering r = p.order(v);
+    skipped += r.counters.at("skipped_triangles");
+    EXPECT_TRUE(is_permutation_of(r.order, s.mesh().num_cells()));
+  }
+  EXPECT_GT(skipped, 0);
+}
