@@ -32,9 +32,7 @@ class MpvoOrderer final : public Orderer {
     }
     {
       auto p = clock.phase("II DFS");
-      core_.begin_dfs(out);
-      core_.dfs_sinks(out);
-      core_.dfs_unvisited(out);
+      core_.dfs_all(out);
     }
     core_.add_counters(out);
     return out;

@@ -98,6 +98,13 @@ class MpvoCore {
   bool dfs_from(int32_t root, Ordering& out);
   void dfs_sinks(Ordering& out);      // every sink, in cell-id order
   void dfs_unvisited(Ordering& out);  // every cell not yet output (cycles without a sink)
+  // The whole phase for orderers with no root order of their own: begin_dfs, every sink,
+  // then every cell left by cycles.
+  void dfs_all(Ordering& out, const ExtraRelations* extra = nullptr) {
+    begin_dfs(out, extra);
+    dfs_sinks(out);
+    dfs_unvisited(out);
+  }
   // Adds exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots.
   void add_counters(Ordering& out) const;
 

@@ -112,9 +112,7 @@ class BspXmpvoOrderer final : public Orderer {
     }
     {
       auto p = clock.phase("DFS");
-      core_.begin_dfs(out, &extra_);
-      core_.dfs_sinks(out);
-      core_.dfs_unvisited(out);
+      core_.dfs_all(out, &extra_);
     }
     core_.add_counters(out);
     auto& k = out.counters;
