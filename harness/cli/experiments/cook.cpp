@@ -9,6 +9,7 @@
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/runner.h"
 #include "harness/cli/experiment_table.h"
+#include "harness/cli/experiments/measure.h"
 #include "harness/raster/cell_clip.h"
 #include "harness/render/compositor.h"
 #include "harness/view/view_set.h"
@@ -21,17 +22,7 @@ const char* kOnyx = "SGI Power Onyx, one 250 MHz MIPS R10000 (IP27)";
 const char* kP4 = "Intel Pentium 4, 2.53 GHz";
 constexpr int kW = 450, kH = 375;  // 168,750 pixels: the paper's helix image size (Table 1)
 
-struct Ds {
-  std::string label, name;
-  std::map<std::string, std::string> set;
-};
 
-Scene make(const Ds& d) {
-  Params p(d.name);
-  for (const auto& [k, v] : d.set) p.set(k, v);
-  std::fprintf(stderr, "generating %s\n", d.label.c_str());
-  return make_dataset(d.name, p);
-}
 
 Ds helix(int cells) {
   char label[32];
@@ -58,48 +49,7 @@ std::vector<Ds> real_meshes() {
           {"tet-elephant", "tet-elephant", {}}, {"tet-hand", "tet-hand", {}}};
 }
 
-std::vector<Camera> views(const Scene& s, int count, int w, int h) {
-  std::vector<Camera> out;
-  const std::vector<Camera> all = fibonacci_views(s.bounds(), 14, ViewOptions{w, h});
-  for (int i = 0; i < count; ++i) out.push_back(all[i * 14 / count]);
-  return out;
-}
 
-// Mean over views of the per-view medians of `repeats` timed frames (one warm-up).
-struct AlgoRun {
-  double total = 0, prepare = 0, bytes = 0;
-  std::map<std::string, double> phases, counters;
-  int views = 0, violating_views = 0;
-  int64_t violating_fragments = 0;
-};
-AlgoRun run_algo(const std::string& spec, const Scene& scene, const std::vector<Camera>& cams,
-                 int repeats, bool oracle) {
-  AlgoRun r;
-  PreparedOrderer p = prepare_orderer(spec, scene);
-  r.prepare = p.prepare_seconds;
-  for (const Camera& cam : cams) {
-    const FrameMeasurement m = measure_frame(p, cam, 1, repeats);
-    check_complete(scene, m.ordering, spec);
-    r.total += m.total_median();
-    const json phases = m.phases_json();  // items() must not outlive it
-    for (const auto& [name, v] : phases.items()) r.phases[name] += v["median"].get<double>();
-    for (const auto& [name, v] : m.ordering.counters) r.counters[name] += v;
-    if (oracle) {
-      const OracleResult o = check_ordering(scene, cam, m.ordering.order);
-      r.violating_views += !o.ok();
-      r.violating_fragments += o.violating_fragments;
-    }
-  }
-  r.views = static_cast<int>(cams.size());
-  const double k = 1.0 / std::max<size_t>(cams.size(), 1);
-  r.total *= k;
-  for (auto& [_, v] : r.phases) v *= k;
-  for (auto& [_, v] : r.counters) v *= k;
-  r.bytes = static_cast<double>(p.orderer->bytes());
-  std::fprintf(stderr, "  %-14s %-16s %9.4f s/frame%s\n", spec.c_str(), scene.name().c_str(),
-               r.total, oracle ? (r.violating_views ? "  VIOLATIONS" : "  oracle ok") : "");
-  return r;
-}
 
 struct Fit {
   double slope = 0, intercept = 0, r2 = 0;
@@ -197,11 +147,11 @@ std::vector<SizeRow> measure_sizes(const std::vector<Ds>& list, int w, int h, bo
     const Scene s = make(d);
     const auto cams = views(s, 3, w, h);
     SizeRow r{d.label, static_cast<double>(s.mesh().num_cells()), 0, static_cast<double>(s.bytes()), {}, {}, {}};
-    r.sx = run_algo("sxmpvo", s, cams, 3, oracle);
+    r.sx = run_algo("sxmpvo", s, cams, 1, 3, oracle);
     r.a = r.sx.counters["abuffer_entries"];
     if (peers) {
-      r.nc = run_algo("mpvonc", s, cams, 3, oracle);
-      r.vtk = run_algo("vtk-centroid", s, cams, 3, false);
+      r.nc = run_algo("mpvonc", s, cams, 1, 3, oracle);
+      r.vtk = run_algo("vtk-centroid", s, cams, 1, 3, false);
     }
     rows.push_back(std::move(r));
   }
@@ -304,7 +254,7 @@ int cook_table2_5(const ExperimentContext& ctx) {
     json times = json::array();
     int violating = 0;
     for (int side : sides) {
-      const AlgoRun r = run_algo("sxmpvo", scene, views(scene, 3, side, side), 3, side <= 1025);
+      const AlgoRun r = run_algo("sxmpvo", scene, views(scene, 3, side, side), 1, 3, side <= 1025);
       violating += r.violating_views;
       row.push_back(fmt("%.3f (%.3f)", r.total, r.phases.at("III scan faces and add dependencies")));
       times.push_back(r.total);
@@ -394,7 +344,7 @@ int cook_fig11(const ExperimentContext& ctx) {
     cam.eye = box.center() + dir * r;
     cam.target = box.center();
     cam.up = {0, 1, 0};
-    const AlgoRun sx = run_algo("sxmpvo", s, {cam}, 3, true), nc = run_algo("mpvonc", s, {cam}, 3, false);
+    const AlgoRun sx = run_algo("sxmpvo", s, {cam}, 1, 3, true), nc = run_algo("mpvonc", s, {cam}, 1, 3, false);
     const double area = sx.counters.at("abuffer_entries"), bf = static_cast<double>(s.faces().boundary.size());
     t.rows.push_back({g, static_cast<double>(s.mesh().num_cells()), bf, area, sx.total,
                       sx.phases.at("III scan faces and add dependencies"), nc.total,
