@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "harness/bench/atomic_file.h"
+#include "harness/bench/json_input.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -17,11 +18,7 @@ std::vector<nlohmann::json> ResultsFile::read_all(const std::string& path) {
   while (std::getline(in, line)) {
     ++n;
     if (line.empty()) continue;
-    try {
-      out.push_back(nlohmann::json::parse(line));
-    } catch (const nlohmann::json::exception& e) {
-      throw InputError(path, "line " + std::to_string(n), std::string("not JSON: ") + e.what());
-    }
+    out.push_back(parse_json_input(line, path, "line " + std::to_string(n)));
   }
   return out;
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "datasets/datasets.h"
+#include "harness/bench/json_input.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -125,15 +126,11 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& j, const std::string& sourc
 }
 
 SuiteSpec SuiteSpec::load(const std::string& path) {
-  std::ifstream in(path);
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "suite", "cannot be read");
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(path, "suite", std::string("is not valid JSON: ") + e.what());
-  }
-  return from_json(j, path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return from_json(parse_json_input(text.str(), path, "suite"), path);
 }
 
 }  // namespace vob
