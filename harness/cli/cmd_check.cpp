@@ -1,5 +1,7 @@
 // vobench check: run an orderer over views and judge every ordering with the oracle.
-// Exit 0: no violation in any view; 1: some violation; 2: bad usage or input.
+// Exit 0: no violation in any view; 1: some violation; 2: bad usage or input, including
+// cells the oracle sees overlapping (the input has no visibility order; no orderer is
+// blamed).
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -8,8 +10,22 @@
 #include "harness/cli/commands.h"
 #include "harness/cli/scene_args.h"
 #include "harness/render/compositor.h"
+#include "harness/scene/input_error.h"
 
 namespace vob {
+
+namespace {
+std::string overlap_fault_line(const std::string& source, const OracleResult& r, int view) {
+  const nlohmann::json& e = r.overlap_examples.at(0);
+  std::string line = source + ": cells " + std::to_string(e["cells"][0].get<int>()) + " and " +
+                     std::to_string(e["cells"][1].get<int>()) + " overlap (sample at pixel " +
+                     std::to_string(e["pixel"][0].get<int>()) + "," +
+                     std::to_string(e["pixel"][1].get<int>());
+  line += view >= 0 ? " of view " + std::to_string(view) : std::string(" of the camera");
+  return line + ", " + std::to_string(r.overlapping_pairs) +
+         " overlapping pairs): the input has no visibility order";
+}
+}  // namespace
 
 Command add_check_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("check", "check an orderer with the oracle (exit 1 on a violation)");
@@ -27,7 +43,7 @@ Command add_check_command(CLI::App& app) {
   cmd->add_option("--images", *images, "write order/exact/difference PNGs of every view here");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
-    const Scene scene = make_scene(spec);
+    const Scene scene = scene_args->load(spec);
     const auto cams = view_args->cameras(spec, scene);
     PreparedOrderer p = prepare_orderer(*algorithm, scene);
     OracleOptions oo;
@@ -41,6 +57,7 @@ Command add_check_command(CLI::App& app) {
       FrameMeasurement m = measure_frame(p, cam, 0, 1);
       check_complete(scene, m.ordering, *algorithm);
       const OracleResult r = check_ordering(scene, cam, m.ordering.order, oo);
+      if (r.input_fault()) throw InputError(overlap_fault_line(source_name(spec), r, vi));
       failing += r.ok() ? 0 : 1;
       cycles += m.ordering.cycles.cycles;
       nlohmann::json v = r.to_json();

@@ -16,7 +16,7 @@ Command add_generate_command(CLI::App& app) {
   cmd->add_option("-o,--output", *out, "output file")->required();
   return [args, out]() {
     const DatasetSpec spec = args->spec();
-    const Scene scene = make_scene(spec);
+    const Scene scene = args->load(spec);
     write_scene(scene, *out);
     nlohmann::json facts = scene_facts(scene);
     facts["dataset"] = spec.label();

@@ -24,7 +24,7 @@ Command add_order_command(CLI::App& app) {
   cmd->add_flag("--check", *check, "also run the oracle and store its counts");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
-    const Scene scene = make_scene(spec);
+    const Scene scene = scene_args->load(spec);
     const auto cams = view_args->cameras(spec, scene);
     if (cams.size() != 1)
       throw InputError("order", "view", "writes one view: give --view-index I or an explicit camera");

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   add(vob::add_run_command);
   add(vob::add_report_command);
   add(vob::add_reproduce_command);
+  add(vob::add_validate_command);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "harness/bench/runner.h"
+#include "harness/scene/cell_overlap.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
 
@@ -20,11 +21,28 @@ Vec3 parse_vec(const std::string& s, const char* what) {
 }
 }  // namespace
 
-void SceneArgs::add_to(CLI::App& cmd) {
+void SceneArgs::add_to(CLI::App& cmd, bool validate_option) {
   cmd.add_option("--dataset,-d", dataset, "built-in dataset (see: vobench list)");
   cmd.add_option("--set", sets, "generator parameter k=v (repeatable)");
   cmd.add_option("--input,-i", input, "mesh or volume file (.vtu .vtk .vti .node .inr .off)");
   cmd.add_flag("--tetrahedralize", tetrahedralize, "mesh a closed .off surface with TetGen");
+  if (validate_option)
+    cmd.add_option("--validate", validate,
+                   "cells: per-cell checks (default); full: also find interpenetrating cells")
+        ->check(CLI::IsMember({"cells", "full"}));
+}
+
+std::string source_name(const DatasetSpec& spec) {
+  return spec.input.empty() ? spec.label() : spec.input;
+}
+
+Scene SceneArgs::load(const DatasetSpec& spec) const {
+  Scene scene = make_scene(spec);
+  if (validate == "full" && scene.kind() == SceneKind::Cells) {
+    const CellOverlapReport r = find_overlapping_cells(scene.mesh());
+    if (!r.pairs.empty()) throw InputError(describe_overlap(source_name(spec), r));
+  }
+  return scene;
 }
 
 DatasetSpec SceneArgs::spec() const {

@@ -16,9 +16,18 @@ struct SceneArgs {
   std::string dataset, input;
   std::vector<std::string> sets;  // k=v
   bool tetrahedralize = false;
-  void add_to(CLI::App& cmd);
+  // --validate cells (default): per-cell checks and face sharing, as every load does;
+  // --validate full: also every pair of interpenetrating cells (cell_overlap.h).
+  std::string validate = "cells";
+  void add_to(CLI::App& cmd, bool validate_option = true);
   DatasetSpec spec() const;  // InputError unless exactly one of --dataset / --input
+  // make_scene(spec) plus what --validate asks; InputError naming the first overlapping
+  // pair under --validate full.
+  Scene load(const DatasetSpec& spec) const;
 };
+
+// How error lines name a scene: the input path as given, else the dataset label.
+std::string source_name(const DatasetSpec& spec);
 
 struct ViewArgs {
   int views = 14;

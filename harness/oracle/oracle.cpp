@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
 
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -30,7 +31,9 @@ nlohmann::json OracleResult::to_json() const {
           {"max_k", max_k},
           {"max_list", max_list},
           {"k_histogram", k_histogram},
-          {"examples", examples}};
+          {"examples", examples},
+          {"overlapping_pairs", overlapping_pairs},
+          {"overlap_examples", overlap_examples}};
 }
 
 namespace {
@@ -40,12 +43,19 @@ struct Example {
   Fragment late, blocker;
 };
 
+struct OverlapExample {
+  int sx, sy;
+  Fragment a, b;  // a has the smaller cell id
+};
+
 struct BandStats {
   int64_t fragments = 0, covered = 0, violating_samples = 0, violating_fragments = 0;
   int max_list = 0;
   std::vector<int64_t> khist{0};
   std::vector<uint64_t> pairs;  // (late << 32) | blocker
   std::vector<Example> examples;
+  std::vector<uint64_t> overlaps;  // (smaller cell << 32) | larger cell
+  std::vector<OverlapExample> overlap_examples;
 };
 
 // Neighbouring samples repeat the same pairs; a small direct-mapped table of recent pairs
@@ -68,9 +78,40 @@ class PairFilter {
 struct Scratch {
   FragmentLists lists;
   KCounter counter;
-  PairFilter pairs;
+  PairFilter pairs, overlap_pairs;
   std::vector<double> in, query;
+  std::vector<int> by_t_in, active;
 };
+
+// Cells: every pair of segments at one sample overlapping by more than `tol`. A sweep in
+// t_in order keeps the segments still open; in a valid mesh that list holds at most one
+// segment reaching past the next t_in (by less than tol), so the sweep is linear. A correct
+// back-to-front order already lists t_in decreasing, which skips the sort.
+template <class Report>
+void find_overlaps(std::span<const Fragment> frags, double tol, Scratch& s, Report&& report) {
+  const int n = int(frags.size());
+  auto& idx = s.by_t_in;
+  idx.resize(n);
+  bool descending = true;
+  for (int j = 1; j < n && descending; ++j) descending = frags[j].t_in <= frags[j - 1].t_in;
+  for (int j = 0; j < n; ++j) idx[j] = descending ? n - 1 - j : j;
+  if (!descending)
+    std::sort(idx.begin(), idx.end(), [&](int a, int b) { return frags[a].t_in < frags[b].t_in; });
+  auto& active = s.active;
+  active.clear();
+  for (const int i : idx) {
+    const Fragment& f = frags[i];
+    size_t keep = 0;
+    for (const int j : active) {
+      const Fragment& g = frags[j];
+      if (!(g.t_out - f.t_in > tol)) continue;  // closed before f opens (t_in only grows)
+      active[keep++] = j;
+      if (std::min(f.t_out, g.t_out) - f.t_in > tol) report(f, g);
+    }
+    active.resize(keep);
+    active.push_back(i);
+  }
+}
 
 nlohmann::json depth_json(const Fragment& f, bool cells) {
   if (cells) return nlohmann::json::array({f.t_in, f.t_out});
@@ -91,6 +132,7 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   const double tie = kDepthTieRelative *
                      (scene.bounds().radius() + length(view.eye - scene.bounds().center()));
   const size_t max_examples = static_cast<size_t>(opt.max_examples);
+  const double overlap_tol = kOverlapRelative * scene.bounds().radius();
 
   const int nb = collector.num_bands();
   std::vector<BandStats> bands(nb);
@@ -100,6 +142,7 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
     BandStats& st = bands[b];
     collector.collect_band(b, s.lists);
     s.pairs.clear();
+    s.overlap_pairs.clear();
     const FragmentLists& fl = s.lists;
     st.fragments = int64_t(fl.fragments.size());
     for (int64_t i = 0; i < fl.num_samples(); ++i) {
@@ -111,6 +154,17 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
       }
       ++st.covered;
       st.max_list = std::max(st.max_list, n);
+      if (cells && n > 1)
+        find_overlaps(frags, overlap_tol, s, [&](const Fragment& f, const Fragment& g) {
+          const Fragment& a = f.prim < g.prim ? f : g;
+          const Fragment& b = f.prim < g.prim ? g : f;
+          const uint64_t pair = uint64_t(uint32_t(a.prim)) << 32 | uint32_t(b.prim);
+          if (s.overlap_pairs.fresh(pair)) st.overlaps.push_back(pair);
+          if (st.overlap_examples.size() < max_examples) {
+            const int sy = fl.row0 + int(i / fl.cols), sx = int(i % fl.cols);
+            st.overlap_examples.push_back({sx, sy, a, b});
+          }
+        });
       s.in.resize(n);
       s.query.resize(n);
       for (int j = 0; j < n; ++j) {
@@ -142,15 +196,17 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
       if (k >= int(st.khist.size())) st.khist.resize(k + 1, 0);
       ++st.khist[k];
     }
-    std::sort(st.pairs.begin(), st.pairs.end());
-    st.pairs.erase(std::unique(st.pairs.begin(), st.pairs.end()), st.pairs.end());
-    st.pairs.shrink_to_fit();
+    for (auto* v : {&st.pairs, &st.overlaps}) {
+      std::sort(v->begin(), v->end());
+      v->erase(std::unique(v->begin(), v->end()), v->end());
+      v->shrink_to_fit();
+    }
   });
 
   OracleResult r;
   r.supersample = frame.supersample();
   r.samples = frame.num_samples();
-  std::vector<uint64_t> pairs;
+  std::vector<uint64_t> pairs, overlaps;
   size_t npairs = 0;
   for (const BandStats& st : bands) npairs += st.pairs.size();
   pairs.reserve(npairs);
@@ -175,7 +231,18 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
       if (S > 1) j["subsample"] = {e.sx % S, e.sy % S};
       r.examples.push_back(std::move(j));
     }
+    overlaps.insert(overlaps.end(), st.overlaps.begin(), st.overlaps.end());
+    for (const OverlapExample& e : st.overlap_examples) {
+      if (r.overlap_examples.size() >= max_examples) break;
+      nlohmann::json j{{"cells", {e.a.prim, e.b.prim}},
+                       {"pixel", {e.sx / S, e.sy / S}},
+                       {"segments", {depth_json(e.a, true), depth_json(e.b, true)}}};
+      if (S > 1) j["subsample"] = {e.sx % S, e.sy % S};
+      r.overlap_examples.push_back(std::move(j));
+    }
   }
+  std::sort(overlaps.begin(), overlaps.end());
+  r.overlapping_pairs = int64_t(std::unique(overlaps.begin(), overlaps.end()) - overlaps.begin());
   tbb::parallel_sort(pairs.begin(), pairs.end());
   r.violating_pairs = int64_t(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
   r.max_k = int(r.k_histogram.size()) - 1;

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "harness/raster/cell_clip.h"
 #include "harness/scene/scene.h"
 #include "harness/view/camera.h"
 
@@ -19,7 +20,7 @@ namespace vob {
 struct OracleOptions {
   int supersample = 1;          // S: S x S samples per pixel
   double splat_radius_px = 0;   // voxels: footprint radius in pixels; 0 = projected voxel size
-  int max_examples = 5;         // violating fragments described in the result
+  int max_examples = 5;         // violating fragments (and overlapping pairs) described
 };
 
 struct OracleResult {
@@ -34,11 +35,18 @@ struct OracleResult {
   int max_list = 0;                 // longest per-sample fragment list (HAVS "Max A")
   std::vector<int64_t> k_histogram;  // samples by their k (index = k)
   nlohmann::json examples = nlohmann::json::array();
+  // Cells only: distinct cell pairs whose segments overlap by more than kOverlapRelative of
+  // the scene radius at some sample. Such cells interpenetrate: the input has no visibility
+  // order, so their violations are the input's fault, not the orderer's.
+  int64_t overlapping_pairs = 0;
+  nlohmann::json overlap_examples = nlohmann::json::array();  // {cells, pixel, segments}
 
   bool ok() const { return violating_fragments == 0; }
+  bool input_fault() const { return overlapping_pairs > 0; }
   int64_t samples_with_k_above(int k) const;
   // Keys as everywhere: covered_pixels, violating_pixels, violating_fragments,
-  // violating_pairs, max_k (plus fragments, max_list, k_histogram, examples, supersample).
+  // violating_pairs, max_k (plus fragments, max_list, k_histogram, examples, supersample,
+  // overlapping_pairs and overlap_examples).
   nlohmann::json to_json() const;
 };
 
@@ -56,7 +64,17 @@ struct OracleResult {
 //   Equal depths (coplanar triangles, voxels at the same distance) are ties, not violations:
 //   no order between them is more correct than another.
 // The blocking primitive of a violation is the one holding the nearest depth (or t_in).
+// Overlap (cells): at every sample the segments, sorted by t_in, are swept for pairs that
+// overlap by more than kOverlapRelative * scene radius. Face neighbours compute the shared
+// face's crossing from bit-identical planes (cell_clip.h), so their segments meet exactly;
+// cells touching through duplicated nodes, an edge or a vertex meet within the rounding
+// noise of t (about 1e-15 of the eye distance), the noise kMinSegmentRelative is set far
+// above. The threshold is half the shortest kept segment because that is the smallest
+// overlap that can make the midpoint rule flag an exact order (the front segment's
+// midpoint must pass the back one's t_in): every overlap that can blame an orderer is
+// reported, while staying 10^4 above the rounding noise of t at ordinary angles.
 // Samples are processed in bands of rows in parallel; results do not depend on threads.
+constexpr double kOverlapRelative = 0.5 * kMinSegmentRelative;
 constexpr double kDepthTieRelative = 1e-9;
 
 OracleResult check_ordering(const Scene& scene, const Camera& view,

@@ -1,0 +1,237 @@
+#include "harness/scene/cell_overlap.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <CGAL/Box_intersection_d/Box_d.h>
+#include <CGAL/Mpzf.h>
+#include <CGAL/box_intersection_d.h>
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+
+namespace vob {
+
+namespace {
+
+// Exact sign of det(u1 - u0, v1 - v0, x - o). In doubles first, with Shewchuk's forward
+// error bound for a 3x3 determinant of rounded differences (his orient3d bound; the rows
+// here have different subtrahends, which his analysis does not use); exact in CGAL::Mpzf
+// (exact +, -, * on doubles) when the bound cannot call it.
+int sign_det(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, const Vec3& o,
+             const Vec3& x) {
+  const double ux = u1.x - u0.x, uy = u1.y - u0.y, uz = u1.z - u0.z;
+  const double vx = v1.x - v0.x, vy = v1.y - v0.y, vz = v1.z - v0.z;
+  const double wx = x.x - o.x, wy = x.y - o.y, wz = x.z - o.z;
+  const double a = vy * wz, b = vz * wy, c = vz * wx, d = vx * wz, e = vx * wy, f = vy * wx;
+  const double det = ux * (a - b) + uy * (c - d) + uz * (e - f);
+  const double perm = std::abs(ux) * (std::abs(a) + std::abs(b)) +
+                      std::abs(uy) * (std::abs(c) + std::abs(d)) +
+                      std::abs(uz) * (std::abs(e) + std::abs(f));
+  constexpr double eps = std::numeric_limits<double>::epsilon() / 2;  // 2^-53
+  constexpr double bound = (7.0 + 56.0 * eps) * eps;
+  // Below ~1e-250 products may underflow and the bound no longer holds: go exact.
+  if (perm > 1e-250) {
+    if (det > bound * perm) return 1;
+    if (-det > bound * perm) return -1;
+  } else if (perm == 0 && std::isfinite(det)) {
+    // Every product is zero: is every product exactly zero, or did one underflow?
+    if (ux == 0 && uy == 0 && uz == 0) return 0;
+  }
+  using M = CGAL::Mpzf;
+  const M Ux = M(u1.x) - M(u0.x), Uy = M(u1.y) - M(u0.y), Uz = M(u1.z) - M(u0.z);
+  const M Vx = M(v1.x) - M(v0.x), Vy = M(v1.y) - M(v0.y), Vz = M(v1.z) - M(v0.z);
+  const M Wx = M(x.x) - M(o.x), Wy = M(x.y) - M(o.y), Wz = M(x.z) - M(o.z);
+  const M D = Ux * (Vy * Wz - Vz * Wy) + Uy * (Vz * Wx - Vx * Wz) + Uz * (Vx * Wy - Vy * Wx);
+  return int(D.sign());
+}
+
+bool same_point(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+// A cell as the candidate planes need it: vertices, face triangles, edges.
+struct CellShape {
+  int n = 0, ntri = 0, nedge = 0;
+  Vec3 p[8];
+  int tri[24][3];   // 6 faces x up to 4 triangles (both diagonals of non-planar quads)
+  int edge[24][2];  // 12 edges + 12 diagonals at most
+
+  CellShape(const CellMesh& mesh, int32_t c) {
+    const int32_t* ids = mesh.cell_points(c);
+    n = mesh.cell_size(c);
+    for (int i = 0; i < n; ++i) p[i] = mesh.points[ids[i]];
+    const LocalFaces& lf = cell_local_faces(mesh.types[c]);
+    for (int f = 0; f < lf.count; ++f) {
+      const int* v = lf.v[f];
+      if (lf.size[f] == 3) {
+        add_tri(v[0], v[1], v[2]);
+        add_edge(v[0], v[1]), add_edge(v[1], v[2]), add_edge(v[2], v[0]);
+        continue;
+      }
+      for (int i = 0; i < 4; ++i) add_edge(v[i], v[(i + 1) % 4]);
+      add_tri(v[0], v[1], v[2]);
+      add_tri(v[0], v[2], v[3]);
+      // A non-planar quad: the hull takes one of its diagonals, which one depends on the
+      // other vertices; try both.
+      if (sign_det(p[v[0]], p[v[1]], p[v[0]], p[v[2]], p[v[0]], p[v[3]]) != 0) {
+        add_tri(v[0], v[1], v[3]);
+        add_tri(v[1], v[2], v[3]);
+        add_edge(v[0], v[2]), add_edge(v[1], v[3]);
+      }
+    }
+  }
+  void add_tri(int a, int b, int c) { tri[ntri][0] = a, tri[ntri][1] = b, tri[ntri][2] = c, ++ntri; }
+  void add_edge(int a, int b) {
+    if (a > b) std::swap(a, b);
+    for (int i = 0; i < nedge; ++i)
+      if (edge[i][0] == a && edge[i][1] == b) return;
+    edge[nedge][0] = a, edge[nedge][1] = b, ++nedge;
+  }
+};
+
+// Side of every point of `s` for a plane given by `side_of` (exact signs): -1 or +1 when
+// all points are on that closed side (at least one strictly), 0 when all lie on the plane,
+// 2 when the points straddle the plane.
+template <class SideOf>
+int side_of_all(const CellShape& s, SideOf&& side_of) {
+  int side = 0;
+  for (int i = 0; i < s.n; ++i) {
+    const int si = side_of(s.p[i]);
+    if (si == 0) continue;
+    if (side == 0) side = si;
+    else if (si != side) return 2;
+  }
+  return side;
+}
+
+// True when the plane separates P and Q: each on one closed side, the sides opposite.
+// A degenerate plane (all determinants zero) puts both "on" it and separates nothing.
+template <class SideOf>
+bool separates(const CellShape& P, const CellShape& Q, SideOf&& side_of) {
+  const int q = side_of_all(Q, side_of);
+  if (q == 2 || q == 0) return false;
+  const int p = side_of_all(P, side_of);
+  return p != 2 && p != 0 && p != q;
+}
+
+bool face_plane_separates(const CellShape& F, const CellShape& other, int t, bool f_first) {
+  const Vec3& a = F.p[F.tri[t][0]];
+  const Vec3& b = F.p[F.tri[t][1]];
+  const Vec3& c = F.p[F.tri[t][2]];
+  auto side_of = [&](const Vec3& x) {
+    if (same_point(x, a) || same_point(x, b) || same_point(x, c)) return 0;
+    return sign_det(a, b, a, c, a, x);
+  };
+  return f_first ? separates(F, other, side_of) : separates(other, F, side_of);
+}
+
+bool edge_plane_separates(const CellShape& P, const CellShape& Q, int i, int j) {
+  const Vec3& a = P.p[P.edge[i][0]];
+  const Vec3& b = P.p[P.edge[i][1]];
+  const Vec3& c = Q.p[Q.edge[j][0]];
+  const Vec3& d = Q.p[Q.edge[j][1]];
+  auto side_of = [&](const Vec3& x) {
+    if (same_point(x, a) || same_point(x, b)) return 0;
+    return sign_det(a, b, c, d, a, x);
+  };
+  return separates(P, Q, side_of);
+}
+
+bool shapes_interpenetrate(const CellShape& P, const CellShape& Q) {
+  for (int t = 0; t < P.ntri; ++t)
+    if (face_plane_separates(P, Q, t, true)) return false;
+  for (int t = 0; t < Q.ntri; ++t)
+    if (face_plane_separates(Q, P, t, true)) return false;
+  for (int i = 0; i < P.nedge; ++i)
+    for (int j = 0; j < Q.nedge; ++j)
+      if (edge_plane_separates(P, Q, i, j)) return false;
+  return true;
+}
+
+// A bounding box that knows its cell (the id the box intersection reports pairs by).
+struct CellBox : CGAL::Box_intersection_d::Box_d<double, 3, CGAL::Box_intersection_d::ID_NONE> {
+  using Base = CGAL::Box_intersection_d::Box_d<double, 3, CGAL::Box_intersection_d::ID_NONE>;
+  CellBox(const CGAL::Bbox_3& b, int32_t c) : Base(b), cell(c) {}
+  std::size_t id() const { return std::size_t(cell); }
+  int32_t cell;
+};
+
+using Pairs = std::vector<std::pair<int32_t, int32_t>>;
+
+}  // namespace
+
+bool cells_interpenetrate(const CellMesh& mesh, int32_t a, int32_t b) {
+  return shapes_interpenetrate(CellShape(mesh, a), CellShape(mesh, b));
+}
+
+CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  CellOverlapReport r;
+  const size_t nc = mesh.num_cells();
+  std::vector<CellBox> boxes;
+  boxes.reserve(nc);
+  for (size_t c = 0; c < nc; ++c) {
+    const int32_t* ids = mesh.cell_points(c);
+    CGAL::Bbox_3 bb;
+    for (int i = 0; i < mesh.cell_size(c); ++i) {
+      const Vec3& p = mesh.points[ids[i]];
+      bb += CGAL::Bbox_3(p.x, p.y, p.z, p.x, p.y, p.z);
+    }
+    boxes.emplace_back(bb, int32_t(c));
+  }
+
+  // Candidates fill a batch; a full batch is decided in parallel while the enumeration
+  // fills the next one.
+  constexpr size_t kBatch = size_t(1) << 20;
+  Pairs filling, deciding;
+  filling.reserve(kBatch);
+  deciding.reserve(kBatch);
+  tbb::combinable<Pairs> found;
+  tbb::task_group decide;
+  auto launch = [&] {
+    decide.wait();
+    std::swap(filling, deciding);
+    filling.clear();
+    r.candidates += int64_t(deciding.size());
+    decide.run([&] {
+      tbb::parallel_for(tbb::blocked_range<size_t>(0, deciding.size(), 4096),
+                        [&](const tbb::blocked_range<size_t>& range) {
+                          Pairs& out = found.local();
+                          for (size_t i = range.begin(); i < range.end(); ++i) {
+                            const auto [a, b] = deciding[i];
+                            if (cells_interpenetrate(mesh, a, b))
+                              out.emplace_back(std::min(a, b), std::max(a, b));
+                          }
+                        });
+    });
+  };
+  CGAL::box_self_intersection_d(
+      boxes.begin(), boxes.end(),
+      [&](const CellBox& a, const CellBox& b) {
+        filling.emplace_back(a.cell, b.cell);
+        if (filling.size() == kBatch) launch();
+      },
+      CGAL::Box_intersection_d::Box_traits_d<CellBox>(), std::ptrdiff_t(10),
+      CGAL::Box_intersection_d::HALF_OPEN);
+  r.box_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  launch();
+  decide.wait();
+  found.combine_each([&](const Pairs& p) { r.pairs.insert(r.pairs.end(), p.begin(), p.end()); });
+  std::sort(r.pairs.begin(), r.pairs.end());
+  r.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return r;
+}
+
+std::string describe_overlap(const std::string& source, const CellOverlapReport& r) {
+  if (r.pairs.empty()) return source + ": no interpenetrating cells";
+  const auto [a, b] = r.pairs.front();
+  return source + ": cells " + std::to_string(a) + " and " + std::to_string(b) +
+         " interpenetrate (" + std::to_string(r.pairs.size()) +
+         " such pairs): the input has no visibility order";
+}
+
+}  // namespace vob

@@ -1,0 +1,46 @@
+// Interpenetrating cells: every pair of cells of a mesh whose interiors intersect, found
+// exactly. Per-cell validation (cell_mesh.h) and face sharing (mesh_faces.h) cannot see two
+// volumes meshed over the same space (parts of an assembly that intersect, a volume meshed
+// twice): their cells share no face. Such a mesh has no visibility order at all.
+//
+// Candidates are the pairs whose bounding boxes overlap with positive volume (CGAL's
+// box_self_intersection_d, half-open boxes: boxes that only touch cannot hide
+// interpenetrating cells). Each candidate is then decided exactly: a cell is the convex hull
+// of its vertices, and two convex polytopes have disjoint interiors iff some plane has one
+// on each closed side; it suffices to try the planes of the hulls' facets and the planes
+// spanned by an edge of one and an edge of the other (the facets of the Minkowski
+// difference). Face triangles of non-planar quads are tried along both diagonals, and the
+// diagonals count as edges, so the candidate set covers every hull whatever its
+// triangulation. Signs are exact: a floating-point determinant with a forward error bound,
+// exact arithmetic (CGAL::Mpzf) when the bound cannot decide. Touching cells (a shared
+// face, edge or vertex, faces lying on each other with duplicated nodes) are separated by a
+// plane through the contact and are not reported; a cell moved into another by any amount
+// is.
+#pragma once
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "harness/scene/cell_mesh.h"
+
+namespace vob {
+
+// True when the interiors of cells a and b intersect (a != b).
+bool cells_interpenetrate(const CellMesh& mesh, int32_t a, int32_t b);
+
+struct CellOverlapReport {
+  std::vector<std::pair<int32_t, int32_t>> pairs;  // (smaller id, larger id), sorted
+  int64_t candidates = 0;                           // box pairs decided exactly
+  double box_seconds = 0;                           // box intersection, including the
+  double total_seconds = 0;                         // exact tests it overlaps with
+};
+
+// Every interpenetrating pair of the mesh. The box enumeration runs on one thread and hands
+// batches of candidates to TBB for the exact tests, which run while it continues.
+CellOverlapReport find_overlapping_cells(const CellMesh& mesh);
+
+// One line naming the first pair, e.g. "source: cells 12 and 4071 overlap (...)" - the
+// InputError message of `--validate full`; throws nothing.
+std::string describe_overlap(const std::string& source, const CellOverlapReport& r);
+
+}  // namespace vob

@@ -1,0 +1,108 @@
+// The oracle's overlapping_pairs: cells whose segments overlap at a sample are an input
+// fault it names; touching cells (shared faces, duplicated nodes, non-conforming contact)
+// and every generated test scene give none.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "datasets/datasets.h"
+#include "harness/oracle/oracle.h"
+#include "harness/raster/fragments.h"
+#include "harness/view/view_set.h"
+#include "tests/harness/scene/overlap_meshes.h"
+
+using namespace vob;
+using namespace vob::test;
+
+namespace {
+
+Scene scene_of(CellMesh m) {
+  validate_cell_mesh(m, "test mesh");
+  return Scene::from_mesh("test mesh", std::move(m));
+}
+
+std::vector<Camera> views(const Scene& s, int n, int size) {
+  ViewOptions opt;
+  opt.width = opt.height = size;
+  std::vector<Camera> v = fibonacci_views(s.bounds(), n, opt);
+  opt.ortho = true;
+  for (const Camera& c : fibonacci_views(s.bounds(), 2, opt)) v.push_back(c);
+  return v;
+}
+
+int64_t max_overlapping_pairs(const Scene& s, const std::vector<Camera>& cams) {
+  int64_t most = 0;
+  for (const Camera& cam : cams)
+    most = std::max(most, check_ordering(s, cam, all_primitives(s)).overlapping_pairs);
+  return most;
+}
+
+}  // namespace
+
+TEST(OracleOverlap, TwoOverlappingTetsAreOnePairWhateverTheOrder) {
+  const Vec3 O{0, 0, 0}, X{1, 0, 0}, Y{0, 1, 0}, Z{0, 0, 1}, s{0.3, 0.2, 0.25};
+  const Scene scene = scene_of(tet_pair(O, X, Y, Z, O + s, X + s, Y + s, Z + s));
+  int seen = 0;
+  for (const Camera& cam : views(scene, 6, 64)) {
+    const OracleResult a = check_ordering(scene, cam, {0, 1});
+    const OracleResult b = check_ordering(scene, cam, {1, 0});
+    EXPECT_EQ(a.overlapping_pairs, b.overlapping_pairs);
+    ASSERT_LE(a.overlapping_pairs, 1);
+    if (a.overlapping_pairs == 0) continue;
+    ++seen;
+    EXPECT_TRUE(a.input_fault());
+    ASSERT_FALSE(a.overlap_examples.empty());
+    const auto& e = a.overlap_examples[0];
+    EXPECT_EQ(e["cells"], nlohmann::json::array({0, 1}));
+    // The segments overlap at the named pixel.
+    const auto s0 = e["segments"][0].get<std::vector<double>>();
+    const auto s1 = e["segments"][1].get<std::vector<double>>();
+    EXPECT_GT(std::min(s0[1], s1[1]) - std::max(s0[0], s1[0]), 0.0);
+    EXPECT_EQ(a.to_json()["overlapping_pairs"], 1);
+  }
+  EXPECT_GE(seen, 6);  // the overlap is a third of the cell: every view sees it
+}
+
+TEST(OracleOverlap, InterpenetratingBlocksAreReported) {
+  const Scene scene = scene_of(interpenetrating_blocks(2));
+  for (const Camera& cam : views(scene, 4, 64)) {
+    const OracleResult r = check_ordering(scene, cam, all_primitives(scene));
+    EXPECT_GT(r.overlapping_pairs, 0);
+    for (const auto& e : r.overlap_examples) {
+      const int a = e["cells"][0], b = e["cells"][1];
+      EXPECT_TRUE(a < 48 && b >= 48) << e.dump();  // one cell of each block
+    }
+  }
+}
+
+TEST(OracleOverlap, TouchingCellsAreNotOverlapping) {
+  const Vec3 O{0, 0, 0}, X{1, 0, 0}, Y{0, 1, 0}, Z{0, 0, 1};
+  const CellMesh meshes[] = {
+      tet_block(3),
+      tet_block(3, 1.0, 0.25, 3),
+      hex_block(3),
+      // duplicated nodes: conforming, non-conforming and hexahedral contacts
+      appended(tet_block(2), translated(tet_block(2), {2, 0, 0})),
+      appended(tet_block(2), translated(tet_block(4, 0.5), {2, 0, 0})),
+      appended(hex_block(2), translated(hex_block(2), {0, 0, 2})),
+      tet_pair(O, X, Y, Z, X, Y, Z, {1, 1, 1}),
+      tet_pair(O, X, Y, Z, O, -X, -Y, -Z),
+      tet_pair(O, X, Y, Z, {0.3, 0.2, 0}, {1.3, 0.2, 0}, {0.3, 1.2, 0}, {0.3, 0.2, -1}),
+  };
+  for (const CellMesh& m : meshes) {
+    const Scene scene = scene_of(m);
+    EXPECT_EQ(max_overlapping_pairs(scene, views(scene, 8, 96)), 0) << m.num_cells() << " cells";
+  }
+}
+
+// Every generated cell dataset (the hard cases included, with their own views): no pair.
+TEST(OracleOverlap, GeneratedCellDatasetsHaveNone) {
+  for (const DatasetInfo& info : dataset_registry()) {
+    if (info.kind != SceneKind::Cells || info.name.rfind("tet-", 0) == 0) continue;  // real data: downloads
+    Params p(info.name);
+    if (info.name == "gap") p.set("nx", "8"), p.set("ny", "8"), p.set("nz", "12"), p.set("gaps", "3");
+    const Scene scene = make_dataset(info.name, p);
+    const std::vector<Camera> cams = info.views ? info.views(scene, 96, 96) : views(scene, 6, 96);
+    EXPECT_EQ(max_overlapping_pairs(scene, cams), 0) << info.name;
+  }
+}
