@@ -38,10 +38,11 @@ int sign_det(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, con
   if (perm > 1e-250) {
     if (det > bound * perm) return 1;
     if (-det > bound * perm) return -1;
-  } else if (perm == 0 && std::isfinite(det)) {
-    // Every product is zero: is every product exactly zero, or did one underflow?
-    if (ux == 0 && uy == 0 && uz == 0) return 0;
   }
+  // A zero row (equal points: a double difference is zero only then) makes det exactly 0.
+  if ((ux == 0 && uy == 0 && uz == 0) || (vx == 0 && vy == 0 && vz == 0) ||
+      (wx == 0 && wy == 0 && wz == 0))
+    return 0;
   using M = CGAL::Mpzf;
   const M Ux = M(u1.x) - M(u0.x), Uy = M(u1.y) - M(u0.y), Uz = M(u1.z) - M(u0.z);
   const M Vx = M(v1.x) - M(v0.x), Vy = M(v1.y) - M(v0.y), Vz = M(v1.z) - M(v0.z);
@@ -52,35 +53,20 @@ int sign_det(const Vec3& u0, const Vec3& u1, const Vec3& v0, const Vec3& v1, con
 
 bool same_point(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
-// A cell as the candidate planes need it: vertices, face triangles, edges.
-struct CellShape {
-  int n = 0, ntri = 0, nedge = 0;
-  Vec3 p[8];
-  int tri[24][3];   // 6 faces x up to 4 triangles (both diagonals of non-planar quads)
-  int edge[24][2];  // 12 edges + 12 diagonals at most
-
-  CellShape(const CellMesh& mesh, int32_t c) {
-    const int32_t* ids = mesh.cell_points(c);
-    n = mesh.cell_size(c);
-    for (int i = 0; i < n; ++i) p[i] = mesh.points[ids[i]];
-    const LocalFaces& lf = cell_local_faces(mesh.types[c]);
+// The face triangles and edges of a cell type, from its local faces (quads as (0,1,2),
+// (0,2,3)); built once per type.
+struct TypeShape {
+  int ntri = 0, nedge = 0;
+  int tri[12][3];
+  int edge[12][2];
+  explicit TypeShape(CellType t) {
+    const LocalFaces& lf = cell_local_faces(t);
     for (int f = 0; f < lf.count; ++f) {
       const int* v = lf.v[f];
-      if (lf.size[f] == 3) {
-        add_tri(v[0], v[1], v[2]);
-        add_edge(v[0], v[1]), add_edge(v[1], v[2]), add_edge(v[2], v[0]);
-        continue;
-      }
-      for (int i = 0; i < 4; ++i) add_edge(v[i], v[(i + 1) % 4]);
+      const int n = lf.size[f];
+      for (int i = 0; i < n; ++i) add_edge(v[i], v[(i + 1) % n]);
       add_tri(v[0], v[1], v[2]);
-      add_tri(v[0], v[2], v[3]);
-      // A non-planar quad: the hull takes one of its diagonals, which one depends on the
-      // other vertices; try both.
-      if (sign_det(p[v[0]], p[v[1]], p[v[0]], p[v[2]], p[v[0]], p[v[3]]) != 0) {
-        add_tri(v[0], v[1], v[3]);
-        add_tri(v[1], v[2], v[3]);
-        add_edge(v[0], v[2]), add_edge(v[1], v[3]);
-      }
+      if (n == 4) add_tri(v[0], v[2], v[3]);
     }
   }
   void add_tri(int a, int b, int c) { tri[ntri][0] = a, tri[ntri][1] = b, tri[ntri][2] = c, ++ntri; }
@@ -90,6 +76,59 @@ struct CellShape {
       if (edge[i][0] == a && edge[i][1] == b) return;
     edge[nedge][0] = a, edge[nedge][1] = b, ++nedge;
   }
+};
+
+const TypeShape& type_shape(CellType t) {
+  static const TypeShape tet(CellType::Tetra), hex(CellType::Hexahedron),
+      wedge(CellType::Wedge), pyramid(CellType::Pyramid);
+  switch (t) {
+    case CellType::Tetra: return tet;
+    case CellType::Hexahedron: return hex;
+    case CellType::Wedge: return wedge;
+    default: return pyramid;
+  }
+}
+
+// A cell as the candidate planes need it: vertices, face triangles, edges. The type's
+// tables are used in place unless a non-planar quad adds triangles and diagonals.
+struct CellShape {
+  int n = 0, ntri = 0, nedge = 0;
+  Vec3 p[8];
+  const int (*tri)[3];
+  const int (*edge)[2];
+  int own_tri[24][3];   // 6 faces x up to 4 triangles (both diagonals of non-planar quads)
+  int own_edge[24][2];  // 12 edges + 12 diagonals at most
+  const LocalFaces* faces = nullptr;
+  bool non_planar = false;  // some quad face is not planar
+
+  CellShape(const CellMesh& mesh, int32_t c) {
+    const int32_t* ids = mesh.cell_points(c);
+    n = mesh.cell_size(c);
+    for (int i = 0; i < n; ++i) p[i] = mesh.points[ids[i]];
+    const TypeShape& ts = type_shape(mesh.types[c]);
+    ntri = ts.ntri, nedge = ts.nedge, tri = ts.tri, edge = ts.edge;
+    faces = &cell_local_faces(mesh.types[c]);
+    if (mesh.types[c] == CellType::Tetra) return;
+    // A non-planar quad: the hull takes one of its diagonals, which one depends on the
+    // other vertices; try both.
+    const LocalFaces& lf = cell_local_faces(mesh.types[c]);
+    for (int f = 0; f < lf.count; ++f) {
+      const int* v = lf.v[f];
+      if (lf.size[f] != 4 || sign_det(p[v[0]], p[v[1]], p[v[0]], p[v[2]], p[v[0]], p[v[3]]) == 0)
+        continue;
+      non_planar = true;
+      if (tri == ts.tri) {
+        std::copy(&ts.tri[0][0], &ts.tri[0][0] + 3 * ntri, &own_tri[0][0]);
+        std::copy(&ts.edge[0][0], &ts.edge[0][0] + 2 * nedge, &own_edge[0][0]);
+        tri = own_tri, edge = own_edge;
+      }
+      const int more[2][3] = {{v[0], v[1], v[3]}, {v[1], v[2], v[3]}};
+      for (const auto& t : more) std::copy(t, t + 3, own_tri[ntri++]);
+      own_edge[nedge][0] = v[0], own_edge[nedge][1] = v[2], ++nedge;
+      own_edge[nedge][0] = v[1], own_edge[nedge][1] = v[3], ++nedge;
+    }
+  }
+  CellShape(const CellShape&) = delete;  // tri/edge may point into the object itself
 };
 
 // Side of every point of `s` for a plane given by `side_of` (exact signs): -1 or +1 when
@@ -133,14 +172,63 @@ bool edge_plane_separates(const CellShape& P, const CellShape& Q, int i, int j) 
   const Vec3& b = P.p[P.edge[i][1]];
   const Vec3& c = Q.p[Q.edge[j][0]];
   const Vec3& d = Q.p[Q.edge[j][1]];
+  // Exact zeros known without arithmetic: x is a or b; or x is c or d while the other of
+  // c, d is a or b (then x - a is a combination of b - a and d - c).
+  const bool cd_touches_ab = same_point(c, a) || same_point(c, b) || same_point(d, a) || same_point(d, b);
   auto side_of = [&](const Vec3& x) {
     if (same_point(x, a) || same_point(x, b)) return 0;
+    if (cd_touches_ab && (same_point(x, c) || same_point(x, d))) return 0;
     return sign_det(a, b, c, d, a, x);
   };
   return separates(P, Q, side_of);
 }
 
+// Index of the face of Q with the same vertex coordinates as face f of P, or -1.
+int matching_face(const CellShape& P, int f, const CellShape& Q) {
+  const int k = P.faces->size[f];
+  for (int g = 0; g < Q.faces->count; ++g) {
+    if (Q.faces->size[g] != k) continue;
+    int found = 0;
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j)
+        if (same_point(P.p[P.faces->v[f][i]], Q.p[Q.faces->v[g][j]])) ++found;
+    if (found == k) return g;
+  }
+  return -1;
+}
+
+// Every vertex of `other` that is not on face f of `F` lies strictly outside both triangle
+// planes (0,1,2), (0,2,3) of that face (outward normals: positive determinant).
+bool beyond_face(const CellShape& F, int f, const CellShape& other) {
+  const int* v = F.faces->v[f];
+  const int k = F.faces->size[f];
+  for (int i = 0; i < other.n; ++i) {
+    const Vec3& x = other.p[i];
+    bool on_face = false;
+    for (int j = 0; j < k; ++j) on_face |= same_point(x, F.p[v[j]]);
+    if (on_face) continue;
+    for (int t = 0; t + 2 < k; ++t) {
+      const Vec3& a = F.p[v[0]];
+      if (sign_det(a, F.p[v[t + 1]], a, F.p[v[t + 2]], a, x) <= 0) return false;
+    }
+  }
+  return true;
+}
+
+// Two cells sharing a non-planar quad cannot both be the convex hulls of their vertices
+// without overlapping in the sliver between the quad's two triangulations; the mesh means
+// the quad as one curved face between them. So cells that share a whole face (same
+// coordinates) and lie beyond it from each other are neighbours, not an overlap.
+bool neighbours_across_a_face(const CellShape& P, const CellShape& Q) {
+  for (int f = 0; f < P.faces->count; ++f) {
+    const int g = matching_face(P, f, Q);
+    if (g >= 0 && beyond_face(P, f, Q) && beyond_face(Q, g, P)) return true;
+  }
+  return false;
+}
+
 bool shapes_interpenetrate(const CellShape& P, const CellShape& Q) {
+  if ((P.non_planar || Q.non_planar) && neighbours_across_a_face(P, Q)) return false;
   for (int t = 0; t < P.ntri; ++t)
     if (face_plane_separates(P, Q, t, true)) return false;
   for (int t = 0; t < Q.ntri; ++t)

@@ -116,3 +116,18 @@ TEST(CellOverlap, InterpenetratingBlocksGiveWhatBruteForceGives) {
                                                std::to_string(expected[0].second)),
             std::string::npos);
 }
+
+TEST(CellOverlap, HexahedraSharingANonPlanarQuadAreNeighbours) {
+  // Two unit hexahedra stacked along z whose shared quad is bent (one corner raised):
+  // their hulls would overlap in the sliver between the quad's two triangulations, but
+  // they lie on either side of the face.
+  CellMesh lower;
+  lower.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1.05}, {0, 1, 1}};
+  lower.add_cell(CellType::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  CellMesh upper;
+  upper.points = {{0, 0, 1}, {1, 0, 1}, {1, 1, 1.05}, {0, 1, 1}, {0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}};
+  upper.add_cell(CellType::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  EXPECT_FALSE(overlap(appended(lower, upper)));
+  EXPECT_TRUE(overlap(appended(lower, translated(upper, {0, 0, -0.01}))));
+  EXPECT_TRUE(overlap(appended(lower, lower)));
+}
