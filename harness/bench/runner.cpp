@@ -279,7 +279,9 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
                                     {"examples", r.overlap_examples}};
             violated = !r.ok() && !r.input_fault();
             if (violated) ++summary.violations;
-            verdict = ", " + std::to_string(r.violating_pixels) + " violating pixels";
+            verdict = r.input_fault() ? ", input fault: " + std::to_string(r.overlapping_pairs) +
+                                            " overlapping cell pairs"
+                                      : ", " + std::to_string(r.violating_pixels) + " violating pixels";
           }
           const bool want_images =
               std::count(suite.image_views.begin(), suite.image_views.end(), vi) > 0 ||

@@ -127,5 +127,6 @@ TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
   EXPECT_GT(j["input_fault"]["overlapping_pairs"].get<int>(), 0);
   EXPECT_EQ(j["input_fault"]["overlapping_pairs"], j["oracle"]["overlapping_pairs"]);
   EXPECT_FALSE(j["input_fault"]["examples"].empty());
-  EXPECT_NE(r.out.find("0 with oracle violations"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("input fault: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(", 0 with oracle violations"), std::string::npos) << r.err;
 }
