@@ -156,7 +156,7 @@ bool separates(const CellShape& P, const CellShape& Q, SideOf&& side_of) {
   return p != 2 && p != 0 && p != q;
 }
 
-bool face_plane_separates(const CellShape& F, const CellShape& other, int t, bool f_first) {
+bool face_plane_separates(const CellShape& F, const CellShape& other, int t) {
   const Vec3& a = F.p[F.tri[t][0]];
   const Vec3& b = F.p[F.tri[t][1]];
   const Vec3& c = F.p[F.tri[t][2]];
@@ -164,7 +164,7 @@ bool face_plane_separates(const CellShape& F, const CellShape& other, int t, boo
     if (same_point(x, a) || same_point(x, b) || same_point(x, c)) return 0;
     return sign_det(a, b, a, c, a, x);
   };
-  return f_first ? separates(F, other, side_of) : separates(other, F, side_of);
+  return separates(F, other, side_of);
 }
 
 bool edge_plane_separates(const CellShape& P, const CellShape& Q, int i, int j) {
@@ -230,9 +230,9 @@ bool neighbours_across_a_face(const CellShape& P, const CellShape& Q) {
 bool shapes_interpenetrate(const CellShape& P, const CellShape& Q) {
   if ((P.non_planar || Q.non_planar) && neighbours_across_a_face(P, Q)) return false;
   for (int t = 0; t < P.ntri; ++t)
-    if (face_plane_separates(P, Q, t, true)) return false;
+    if (face_plane_separates(P, Q, t)) return false;
   for (int t = 0; t < Q.ntri; ++t)
-    if (face_plane_separates(Q, P, t, true)) return false;
+    if (face_plane_separates(Q, P, t)) return false;
   for (int i = 0; i < P.nedge; ++i)
     for (int j = 0; j < Q.nedge; ++j)
       if (edge_plane_separates(P, Q, i, j)) return false;
