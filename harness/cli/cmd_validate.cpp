@@ -26,6 +26,8 @@ Command add_validate_command(CLI::App& app) {
       if (!args.input.empty()) throw InputError("validate", *file, "give the file or --input, not both");
       args.input = *file;
     }
+    if (args.input.empty() && args.dataset.empty())
+      throw InputError("validate: give FILE, --input FILE or --dataset NAME");
     const DatasetSpec spec = args.spec();
     const Scene scene = make_scene(spec);  // per-cell validation and face sharing
     const std::string source = source_name(spec);
