@@ -2,8 +2,9 @@
 // every orderer that claims object exactness gives zero oracle violations at 4 x 4 samples
 // per pixel over 14 views, perspective and orthographic, with no cycle and no undecided
 // face pair. Before coincident exterior faces were ordered (face_pairs.h, coplanar_order)
-// xmpvo failed 2 to 6 and bsp-xmpvo more of these views; MPVO, which has no relation
-// between the blocks, fails some, which shows the cases need the exterior relations.
+// xmpvo failed up to 6 and bsp-xmpvo 7 to 13 of the 14 views per case (512x512, S = 4; at
+// this test's 96x96 on touching-rotated 5 and 13); MPVO, which has no relation between
+// the blocks, fails some, which shows the cases need the exterior relations.
 #include <gtest/gtest.h>
 
 #include "datasets/datasets.h"
