@@ -8,6 +8,7 @@
 #include "datasets/generators/helix.h"
 #include "datasets/generators/icosphere.h"
 #include "datasets/generators/real_data.h"
+#include "datasets/generators/touching_blocks.h"
 #include "datasets/generators/view_cases.h"
 #include "datasets/generators/volumes.h"
 #include "datasets/generators/zoo.h"
@@ -59,6 +60,26 @@ std::vector<DatasetInfo> build_registry() {
       {"tiny", K::Cells, "scattered tetrahedra too small to cover pixel centres",
        "count=2000 (1..2M); size=0.001 (1e-9..0.05): edge length in a unit cube; seed=1", true,
        make_tiny, nullptr},
+      {"touching-conforming", K::Cells,
+       "two stacked tet blocks touching face to face, interface nodes duplicated (conforming)",
+       "n=6 (1..40): hexahedra per side (6 tets each), n/2 layers per block", true,
+       make_touching_conforming, nullptr},
+      {"touching-shifted", K::Cells, "two stacked tet blocks touching, the upper shifted by half a cell",
+       "n=6 (1..40): hexahedra per side (6 tets each), n/2 layers per block", true,
+       make_touching_shifted, nullptr},
+      {"touching-rotated", K::Cells, "two stacked tet blocks touching, the upper rotated about the vertical",
+       "n=6 (1..40): hexahedra per side (6 tets each), n/2 layers per block; angle=11 (-180..180): "
+       "degrees",
+       true, make_touching_rotated, nullptr},
+      {"touching-overhang", K::Cells,
+       "a finer tet block on a coarser one, its bottom partly over the top and partly over nothing",
+       "n=6 (1..40): hexahedra per side (6 tets each), n/2 layers per block", true,
+       make_touching_overhang, nullptr},
+      {"touching-edge", K::Cells, "three non-conforming tet blocks touching face to face, meeting along an edge",
+       "n=6 (1..40): hexahedra per side of the first block (6 tets each)", true, make_touching_edge,
+       nullptr},
+      {"touching-hex", K::Cells, "two stacked hexahedral blocks touching, the upper shifted by half a cell",
+       "n=6 (1..40): hexahedra per side, n/2 layers per block", true, make_touching_hex, nullptr},
   };
   for (const RealModel& m : real_models()) {
     r.push_back({"surface-" + m.name, K::Triangles, "surface of " + m.summary + " (CGAL data)", "",

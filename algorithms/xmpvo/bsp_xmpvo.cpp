@@ -184,15 +184,18 @@ class BspXmpvoOrderer final : public Orderer {
   // the plane); `complete` whether every ray of the beam meets the plane at s >= 1 (X's
   // vertices on the closed near side, every recession direction pointing to the far side),
   // so that the beam's cross-section there is the whole of it.
-  int beam_vs_node(const Beam& bm, int32_t n, int& near, bool& complete) {
+  // `starts_here`: X lies in the plane, so the beam starts in it.
+  int beam_vs_node(const Beam& bm, int32_t n, int& near, bool& complete, bool& starts_here) {
     const BspNode& nd = tree_.nodes()[n];
     const BspTriangle& s = tree_.triangles()[nd.splitter];
     const int e = node_side(n, s);
     near = g_.ortho ? -e : e;
     bool pos = true, neg = true;
     complete = near != 0;
+    starts_here = true;
     for (int i = 0; i < 3; ++i) {
       const int si = node_det_sign(nd, s, bm.t->p[i], nd.a, true);
+      starts_here &= si == 0;
       int ri;  // sign of the plane's value along the recession direction
       if (g_.ortho) {
         ri = e;
@@ -227,9 +230,10 @@ class BspXmpvoOrderer final : public Orderer {
     } box{blo_, bhi_};
     const double lo[3] = {box.lo.x, box.lo.y, box.lo.z}, hi[3] = {box.hi.x, box.hi.y, box.hi.z};
     const double blo[3] = {bm.lo.x, bm.lo.y, bm.lo.z}, bhi[3] = {bm.hi.x, bm.hi.y, bm.hi.z};
+    // Strict: a box touching the beam's start (coplanar faces of a touching volume) counts.
     for (int k = 0; k < 3; ++k) {
-      if (bm.dirs_nonneg[k] && blo[k] >= hi[k]) return true;
-      if (bm.dirs_nonpos[k] && bhi[k] <= lo[k]) return true;
+      if (bm.dirs_nonneg[k] && blo[k] > hi[k]) return true;
+      if (bm.dirs_nonpos[k] && bhi[k] < lo[k]) return true;
     }
     // The box corner farthest into each bounding plane: if even it is outside by more than
     // a margin far above the rounding of the double evaluation (~1e-15 relative), the box
@@ -245,12 +249,17 @@ class BspXmpvoOrderer final : public Orderer {
     return false;
   }
 
-  // Whether X's plane or one of its edge planes separates triangle Y from X's beam.
+  // Whether X's plane or one of its edge planes separates triangle Y from X's beam. A Y in
+  // X's plane is not separated by it: the beam starts there (a volume touching X's).
   bool separated(const Beam& bm, const BspTriangle& y) const {
     const BspTriangle& x = *bm.t;
-    bool behind = false;
-    for (int k = 0; k < 3; ++k) behind |= orient3d(x.p[0], x.p[1], x.p[2], y.p[k]) > 0;
-    if (!behind) return true;
+    bool behind = false, in_plane = true;
+    for (int k = 0; k < 3; ++k) {
+      const int s = orient3d(x.p[0], x.p[1], x.p[2], y.p[k]);
+      behind |= s > 0;
+      in_plane &= s == 0;
+    }
+    if (!behind && !in_plane) return true;
     for (int j = 0; j < 3; ++j) {
       const Vec3 a = x.p[j], b = x.p[(j + 1) % 3];
       bool inside = false;
@@ -375,11 +384,17 @@ class BspXmpvoOrderer final : public Orderer {
           if (box_separated(bm, node.lo, node.hi)) continue;
           ++st.nodes;
           int near;
-          bool complete;
-          const int side = beam_vs_node(bm, e, near, complete);
+          bool complete, starts_here;
+          const int side = beam_vs_node(bm, e, near, complete, starts_here);
           if (side != 0) {
             const int32_t child = side > 0 ? node.front : node.back;
             if (child >= 0) stack_.push_back(child);
+            // X in the node's plane: the coplanar items are at X's depth, before the far side
+            // (front-facing ones are where a touching volume begins).
+            if (starts_here && node.count > 0) {
+              stack_.push_back(~e);
+              complete_[e] = complete ? xi : -1;
+            }
             continue;
           }
           const int32_t first = near >= 0 ? node.front : node.back;

@@ -22,14 +22,17 @@
 //       that side only, otherwise near side, the node's coplanar items (through their box
 //       hierarchy, culled by the box's axis planes, X's plane and X's edge planes, exactly;
 //       whole subtrees are culled the same way by the box of their triangles),
-//       then far side. Candidates are front-facing exterior triangles of another cell not
-//       separated from the beam by X's plane or one of X's edge planes (exact). With stop,
+//       then far side; when X lies in the node's plane, the node's coplanar items and then
+//       the far side (a volume touching X's face to face starts there). Candidates are
+//       front-facing exterior triangles of another cell not separated from the beam by X's
+//       plane (triangles in X's plane are not) or one of X's edge planes (exact). With stop,
 //       when a node's plane cuts every ray of the beam and its front-facing items cover that
 //       cross-section (proved without constructions: no boundary edge of their union meets
 //       the open cone of X, and one of them overlaps X), every ray has entered the mesh by
 //       then, so the traversal ends (`early_stops`); BSP order puts everything later behind;
 //   "glue"  per candidate pair (X, Y): exact projections_overlap and depth_order
-//       (face_pairs.h); X in front gives the relation cell(X) in front of cell(Y). Every such
+//       (face_pairs.h; coplanar X and Y are ordered by coplanar_order, X first); X in front
+//       gives the relation cell(X) in front of cell(Y). Every such
 //       relation holds along a real ray (cells do not overlap), so this superset of the pairs
 //       consecutive along rays is consistent; deduplicated, it becomes MpvoCore's extra
 //       relations, and cells behind lose their sink flag;

@@ -184,7 +184,8 @@ std::vector<EPoint> to_exact(const Vec3* a, int n) {
 
 // Sides of B's vertices relative to A's plane, in units of "towards the eye": +1 when
 // every vertex is on the eye's closed side (and not all on the plane), -1 on the far
-// closed side, 0 when B straddles or lies in the plane.
+// closed side, 0 when B straddles the plane, kCoplanar when every vertex lies in it.
+constexpr int kCoplanar = 2;
 int plane_side_of(const ViewGeometry& g, const Vec3* a, const Vec3* b, int nb) {
   const int near = eye_side(g, a[0], a[1], a[2]);
   if (near == 0) return 0;
@@ -196,7 +197,8 @@ int plane_side_of(const ViewGeometry& g, const Vec3* a, const Vec3* b, int nb) {
     any_near |= s > 0;
     any_far |= s < 0;
   }
-  if (any_near == any_far) return 0;  // straddles, or coplanar
+  if (!any_near && !any_far) return kCoplanar;
+  if (any_near == any_far) return 0;  // straddles
   return any_near ? 1 : -1;
 }
 
@@ -410,10 +412,18 @@ bool projections_overlap(const ViewGeometry& g, const Vec3* a, int na, const Vec
   return overlap_generic(a, na, b, nb, side, na > 3 || nb > 3);
 }
 
+int coplanar_order(const ViewGeometry& g, const Vec3* a, const Vec3* b) {
+  const int fa = eye_side(g, a[0], a[1], a[2]), fb = eye_side(g, b[0], b[1], b[2]);
+  if (fa == 0 || fa == fb) return 0;  // edge-on, or both cells on one side: they overlap
+  return fa < 0 ? -1 : 1;
+}
+
 int depth_order(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb) {
   // B entirely on the far (near) closed side of A's plane: A (B) is in front wherever they
   // overlap, because every ray meets A's plane once and the eye is on the near side.
-  if (int s = plane_side_of(g, a, b, nb)) return s > 0 ? 1 : -1;
+  const int b_side = plane_side_of(g, a, b, nb);
+  if (b_side == kCoplanar) return coplanar_order(g, a, b);
+  if (b_side != 0) return b_side > 0 ? 1 : -1;
   if (int s = plane_side_of(g, b, a, na)) return s > 0 ? -1 : 1;
   // Each straddles the other's plane (or they are coplanar). Split A by B's plane: along a
   // ray through the overlap, A's point on the eye's side of B's plane means A is in front.

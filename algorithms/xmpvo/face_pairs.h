@@ -40,9 +40,20 @@ bool projections_overlap(const ViewGeometry& g, const Vec3* a, int na, const Vec
 
 // Depth order of A and B over the overlap of their projections (which must share an open
 // set): -1 when A is in front of B (nearer the eye along every ray through the overlap),
-// +1 when B is in front, 0 when it cannot be decided because the faces intersect or are
-// coplanar (invalid input, reported by the caller).
+// +1 when B is in front, 0 when it cannot be decided because the faces intersect, or are
+// coplanar and face the same way (invalid input, reported by the caller).
+// Coplanar exterior faces facing opposite ways (volumes touching face to face) are at
+// equal depth on every ray through the overlap; there the ray leaves the cell of the
+// back-facing face and enters the cell of the front-facing one, so the back-facing face
+// counts as in front: see coplanar_order.
 int depth_order(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb);
+
+// The tie rule for coplanar exterior faces A and B (outward normals by the right-hand
+// rule of their first three vertices) whose projections overlap: -1 when A is back-facing
+// and B front-facing (A's cell lies on the eye's side of the plane, B's behind it), +1 the
+// other way round, 0 when both face the same way (their cells would overlap) or edge-on.
+// Exact: two orientation signs, no construction.
+int coplanar_order(const ViewGeometry& g, const Vec3* a, const Vec3* b);
 
 // ---- Additions for XMPVO's arrangement and the stability study ----
 

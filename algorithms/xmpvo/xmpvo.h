@@ -46,7 +46,8 @@
 // edge_crossings, candidate_edge_pairs, vertex_queries, ray_queries (sectors),
 // faces_per_query (mean faces in a sector's list), relations (distinct extra pairs),
 // depth_order_calls, depth_order_full (those needing the full test), depth_undecided
-// (intersecting or coplanar faces), degenerate_coverage (a face whose projection is met
+// (intersecting faces, or coplanar ones facing the same way; coplanar faces facing
+// opposite ways -- volumes touching face to face -- are ordered by coplanar_order), degenerate_coverage (a face whose projection is met
 // in a degenerate way at a vertex, skipped), grid_buckets, bytes_*; in compare mode the
 // disagree_* counts and decision totals facing_decisions, side_decisions,
 // crossing_decisions.

@@ -32,6 +32,12 @@ const std::map<std::string, std::vector<std::pair<std::string, std::string>>> kS
     {"cycle", {}},
     {"cycle-sticks", {}},
     {"tiny", {{"count", "300"}}},
+    {"touching-conforming", {{"n", "4"}}},
+    {"touching-shifted", {{"n", "4"}}},
+    {"touching-rotated", {{"n", "4"}}},
+    {"touching-overhang", {{"n", "4"}}},
+    {"touching-edge", {{"n", "4"}}},
+    {"touching-hex", {{"n", "4"}}},
 };
 
 bool is_real(const std::string& name) {
@@ -100,6 +106,13 @@ TEST(Generators, ParameterCornersAreValid) {
       {"sphere", {{"subdiv", "0"}}},
       {"block", {{"nx", "2"}, {"ny", "2"}, {"nz", "2"}}},
       {"sparse", {{"blobs", "0"}, {"nx", "8"}, {"ny", "8"}, {"nz", "8"}}},
+      {"touching-conforming", {{"n", "1"}}},
+      {"touching-shifted", {{"n", "1"}}},
+      {"touching-rotated", {{"n", "1"}, {"angle", "-180"}}},
+      {"touching-rotated", {{"n", "7"}, {"angle", "180"}}},
+      {"touching-overhang", {{"n", "1"}}},
+      {"touching-edge", {{"n", "1"}}},
+      {"touching-hex", {{"n", "1"}}},
   };
   for (const auto& [name, params] : corners) {
     std::string trace = name;

@@ -28,6 +28,7 @@ struct Totals {
   int64_t exact_pixels = 0, double_pixels = 0;
   int exact_views = 0, double_views = 0;  // views with a violation
   int64_t exact_cycles = 0, double_cycles = 0;
+  double exact_undecided = 0;  // face pairs whose depth order was not decided (invalid input)
 };
 
 Ordering order_once(const std::string& spec, const Scene& scene, const Camera& cam) {
@@ -68,6 +69,7 @@ Totals study(const Case& c) {
     t.exact_views += !oe.ok();
     t.double_views += !od.ok();
     t.exact_cycles += exact.cycles.cycles;
+    t.exact_undecided += k.at("depth_undecided");
     t.double_cycles += plain.cycles.cycles;
     ++t.views;
   }
@@ -94,7 +96,7 @@ int xmpvo_stability(const ExperimentContext& ctx) {
   ExperimentTable verdict{"Oracle verdict of the order built from each kind of sign",
                           {"data set", "views", "exact: failing views", "exact: violating pixels",
                            "double: failing views", "double: violating pixels", "cycles exact",
-                           "cycles double"},
+                           "cycles double", "undecided face pairs"},
                           {}, ""};
   for (const Case& c : cases) {
     std::fprintf(stderr, "xmpvo-stability: %s\n", c.label.c_str());
@@ -102,7 +104,7 @@ int xmpvo_stability(const ExperimentContext& ctx) {
     dis.rows.push_back({c.label, t.views, t.arrows, t.dis_arrows, t.facing, t.dis_facing,
                         t.crossings, t.dis_crossings, t.sides, t.dis_sides});
     verdict.rows.push_back({c.label, t.views, t.exact_views, t.exact_pixels, t.double_views,
-                            t.double_pixels, t.exact_cycles, t.double_cycles});
+                            t.double_pixels, t.exact_cycles, t.double_cycles, t.exact_undecided});
   }
   dis.notes =
       "Arrow signs: MPVO's double value n.eye + d of every face against the exact sign; the "
@@ -114,7 +116,10 @@ int xmpvo_stability(const ExperimentContext& ctx) {
       "`exact` is xmpvo:predicates=compare (decides with the exact signs, identical to the "
       "default); `double` is xmpvo:predicates=double (every sign above in plain doubles, "
       "MPVO arrows without the error bound; the depth order of two faces stays exact). "
-      "Hard cases use their own cameras; the others 14 Fibonacci views; 256x256, S = 1.";
+      "Hard cases use their own cameras; the others 14 Fibonacci views; 256x256, S = 1. "
+      "The touching-* cases are blocks meeting face to face with duplicated nodes: their "
+      "interface faces are coplanar exterior faces, ordered by face_pairs.h's coplanar_order "
+      "(the last column counts face pairs left undecided, 0 on valid input).";
   ExperimentDoc doc{"xmpvo-stability", "XMPVO: double against exact predicates on the hard cases",
                     "`vobench reproduce xmpvo-stability`", {dis, verdict}, {}, {}};
   write_experiment_doc(ctx, doc);

@@ -3,6 +3,7 @@
 // straddle the other's plane, crossing sides; perspective and orthographic.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "algorithms/xmpvo/face_pairs.h"
@@ -218,3 +219,65 @@ TEST(FacePairs, PlaneOrderAtVertexRays) {
 }
 
 }  // namespace
+
+// Volumes touching face to face: the upper block's bottom (outward normal -z) and the lower
+// block's top (outward normal +z) lie in one plane. Seen from above the ray leaves the
+// upper cell through its back-facing bottom and then enters the lower cell through its
+// front-facing top, so the back-facing face is in front; from below the roles swap.
+TEST(FacePairs, CoplanarTouchingFacesOrderBackFacingFirst) {
+  const Tri top = tri(0, 0, 1, 0, 0, 1, 0);               // lower block's top, normal +z
+  const Tri bottom = tri(0.2, 0.1, 0.2, 1.1, 1.2, 0.1, 0);  // upper block's bottom, normal -z
+  const Tri same = tri(0, 0, 0, 1, 1, 0, 0);              // top's twin, reversed: -z
+  ViewGeometry below_p = persp({0.3, 0.2, -10}), below_o = ortho();
+  below_o.dir = {0, 0, 1};
+  for (const ViewGeometry& g : {persp(), ortho()}) {
+    ASSERT_EQ(eye_side(g, top.v[0], top.v[1], top.v[2]), 1);
+    ASSERT_TRUE(projections_overlap(g, top.v, 3, bottom.v, 3));
+    EXPECT_EQ(coplanar_order(g, bottom.v, top.v), -1);
+    EXPECT_EQ(coplanar_order(g, top.v, bottom.v), 1);
+    EXPECT_EQ(depth_order(g, bottom.v, 3, top.v, 3), -1);
+    EXPECT_EQ(depth_order(g, top.v, 3, bottom.v, 3), 1);
+    // Coincident triangles (a conforming interface with duplicated nodes).
+    EXPECT_EQ(depth_order(g, same.v, 3, top.v, 3), -1);
+    EXPECT_EQ(depth_order(g, top.v, 3, same.v, 3), 1);
+  }
+  for (const ViewGeometry& g : {below_p, below_o}) {
+    EXPECT_EQ(depth_order(g, bottom.v, 3, top.v, 3), 1);
+    EXPECT_EQ(depth_order(g, top.v, 3, bottom.v, 3), -1);
+  }
+}
+
+// Coplanar faces facing the same way would belong to overlapping cells: undecided (0), as
+// for intersecting faces. A quad works like a triangle.
+TEST(FacePairs, CoplanarFacesFacingTheSameWayAreUndecided) {
+  const Tri a = tri(0, 0, 1, 0, 0, 1, 0), b = tri(0.2, 0.1, 1.2, 0.1, 0.2, 1.1, 0);
+  const Vec3 quad[4] = {{0.5, 0.5, 0}, {0.5, -1, 0}, {-1, -1, 0}, {-1, 0.5, 0}};  // normal -z
+  for (const ViewGeometry& g : {persp(), ortho()}) {
+    EXPECT_EQ(depth_order(g, a.v, 3, b.v, 3), 0);
+    EXPECT_EQ(coplanar_order(g, a.v, b.v), 0);
+    EXPECT_EQ(depth_order(g, quad, 4, a.v, 3), -1);
+    EXPECT_EQ(depth_order(g, a.v, 3, quad, 4), 1);
+  }
+  // Seen edge-on there is no order to give.
+  ViewGeometry edge_on = ortho();
+  edge_on.dir = {1, 0, 0};
+  EXPECT_EQ(coplanar_order(edge_on, a.v, quad), 0);
+}
+
+// Exactly coplanar after a rotation: coordinates with no short binary form, still one
+// plane (z = 3), the tie decided; lifting the upper face by one ulp makes it an ordinary
+// pair, decided the same way by the plane test.
+TEST(FacePairs, CoplanarRuleIsExactOffTheGrid) {
+  const double c = std::cos(0.19198621771937624), s = std::sin(0.19198621771937624);
+  auto rot = [&](double x, double y, double z) { return Vec3{c * x - s * y, s * x + c * y, z}; };
+  const Vec3 top[3] = {{0, 0, 3}, {1, 0, 3}, {0, 1, 3}};
+  Vec3 bottom[3] = {rot(0.1, 0.1, 3), rot(0.1, 0.9, 3), rot(0.9, 0.1, 3)};
+  for (const ViewGeometry& g : {persp({0.3, 0.2, 10}), ortho()}) {
+    EXPECT_EQ(depth_order(g, bottom, 3, top, 3), -1);
+    Vec3 lifted[3] = {bottom[0], bottom[1], bottom[2]};
+    for (Vec3& p : lifted) p.z = std::nextafter(3.0, 4.0);
+    EXPECT_EQ(depth_order(g, lifted, 3, top, 3), -1);
+    for (Vec3& p : lifted) p.z = std::nextafter(3.0, 2.0);  // now intersecting the volume below
+    EXPECT_EQ(depth_order(g, lifted, 3, top, 3), 1);
+  }
+}
