@@ -385,3 +385,38 @@ TEST(DatasetIO, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
   e = input_error([&] { load_input(dir.file("o.vti")); });
   EXPECT_TRUE(contains(e, "o.vti: ImageData Origin: 'nan' is not a finite number")) << e;
 }
+
+// VTK reports a short binary read only as a warning; it must still refuse the file.
+TEST(DatasetIO, TruncatedBinaryLegacyVtkIsRefused) {
+  TempDir dir;
+  const Scene zoo = make("zoo");
+  write_scene(zoo, dir.file("full.vtk"));
+  std::ifstream in(dir.file("full.vtk"), std::ios::binary);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string bytes = all.str();
+  for (const double keep : {0.3, 0.6, 0.9}) {
+    write_text(dir.file("cut.vtk"), bytes.substr(0, static_cast<size_t>(bytes.size() * keep)));
+    const std::string e = input_error([&] { load_input(dir.file("cut.vtk")); });
+    EXPECT_TRUE(contains(e, "cut.vtk: ")) << keep << ": " << e;
+  }
+}
+
+// ParaView extracts mix surface cells into .vtu files too.
+TEST(DatasetIO, LowerDimensionalCellsInVtuAreSkipped) {
+  TempDir dir;
+  write_text(dir.file("m.vtu"),
+             "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+             "<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"2\"><Points>"
+             "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1"
+             "</DataArray></Points><Cells>"
+             "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 2 1 0 1 2 3</DataArray>"
+             "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3 7</DataArray>"
+             "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 10</DataArray>"
+             "</Cells></Piece></UnstructuredGrid></VTKFile>\n");
+  std::string note;
+  const Scene s = read_vtk_file(dir.file("m.vtu"), &note);
+  EXPECT_EQ(s.mesh().num_cells(), 1u);
+  EXPECT_EQ(s.mesh().types[0], CellType::Tetra);
+  EXPECT_TRUE(contains(note, "skipped 1 cells of lower dimension (vtkTriangle 1)")) << note;
+}
