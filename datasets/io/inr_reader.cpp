@@ -8,6 +8,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include "harness/scene/input_error.h"
 
@@ -62,9 +63,9 @@ VoxelGrid read_inr(const std::string& path) {
       if (required) throw InputError(path, std::string("header ") + key, "is missing");
       return def;
     }
-    long v = 0;
+    long v = 0;  // the whole value, strictly: "4abc" or "4 " is not 4
     const auto [p, ec] = std::from_chars(it->second.data(), it->second.data() + it->second.size(), v);
-    if (ec != std::errc() || v <= 0)
+    if (ec != std::errc() || p != it->second.data() + it->second.size() || v <= 0)
       throw InputError(path, std::string("header ") + key, "'" + it->second + "' is not a positive integer");
     return v;
   };
@@ -73,7 +74,7 @@ VoxelGrid read_inr(const std::string& path) {
     if (it == kv.end()) return 1.0;
     char* end = nullptr;
     const double v = std::strtod(it->second.c_str(), &end);
-    if (end == it->second.c_str() || !std::isfinite(v) || v <= 0)
+    if (end == it->second.c_str() || *end != '\0' || !std::isfinite(v) || v <= 0)
       throw InputError(path, std::string("header ") + key, "'" + it->second + "' is not a positive number");
     return v;
   };
@@ -86,8 +87,10 @@ VoxelGrid read_inr(const std::string& path) {
   g.spacing = {real("VX"), real("VY"), real("VZ")};
   const std::string type = kv.count("TYPE") ? kv["TYPE"] : "";
   const std::string pix = kv.count("PIXSIZE") ? kv["PIXSIZE"] : "";
-  int bits = 0;
-  std::sscanf(pix.c_str(), "%d", &bits);
+  int bits = 0;  // "32 bits", strictly
+  if (const auto [p, ec] = std::from_chars(pix.data(), pix.data() + pix.size(), bits);
+      ec != std::errc() || std::string_view(p, pix.data() + pix.size() - p) != " bits")
+    throw InputError(path, "header PIXSIZE", "'" + pix + "' is not '<n> bits'");
   const bool is_float = type == "float";
   const bool is_unsigned = type == "unsigned fixed";
   if (!is_float && !is_unsigned && type != "signed fixed")

@@ -28,6 +28,8 @@ TriangleSoup read_off(const std::string& path) {
   const int64_t nv = in.integer(count_token, "counts"), nf = in.integer(count_token + 1, "counts");
   if (nv < 0 || nv >= (int64_t(1) << 31)) in.fail("counts", "vertex count " + std::to_string(nv) + " is out of range");
   if (nf < 0 || nf >= (int64_t(1) << 30)) in.fail("counts", "face count " + std::to_string(nf) + " is out of range");
+  in.require_fits(nv, 6, "counts", "vertex count");  // "0 0 0\n"
+  in.require_fits(nf, 8, "counts", "face count");    // "3 0 1 2\n"
   TriangleSoup s;
   s.points.reserve(in.capacity_for(nv, 6));  // "0 0 0\n"
   s.tris.reserve(in.capacity_for(nf, 8));    // "3 0 1 2\n"

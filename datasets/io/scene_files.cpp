@@ -1,7 +1,10 @@
 // load_input and write_scene: dispatch on the file extension; loads are validated (DESIGN.md:
 // finite coordinates, indices in range, non-degenerate positively oriented cells, no face
 // shared by more than two cells). Nothing is repaired.
+#include <cstdio>
 #include <filesystem>
+#include <new>
+#include <stdexcept>
 
 #include "datasets/datasets.h"
 #include "datasets/io/file_util.h"
@@ -28,14 +31,21 @@ Scene validated(Scene s, const std::string& path) {
 }
 }  // namespace
 
-Scene load_input(const std::string& path, const InputOptions& opt) {
+namespace {
+Scene load_unguarded(const std::string& path, const InputOptions& opt) {
   require_readable_file(path);
   const std::string ext = file_extension(path);
   const std::string name = std::filesystem::path(path).stem().string();
   nlohmann::json params{{"input", path}};
   if (opt.tetrahedralize && ext != ".off")
     throw InputError(path, "file", "--tetrahedralize applies to .off surfaces only");
-  if (ext == ".vtu" || ext == ".vtk" || ext == ".vti") return validated(read_vtk_file(path), path);
+  if (ext == ".vtu" || ext == ".vtk" || ext == ".vti") {
+    std::string note;
+    Scene s = validated(read_vtk_file(path, &note), path);
+    // Told only now that the whole read succeeded, so a refused file still gets one line.
+    if (!note.empty()) std::fprintf(stderr, "vobench: note: %s: %s\n", path.c_str(), note.c_str());
+    return s;
+  }
   if (ext == ".node" || ext == ".ele") {
     const std::string node = ext == ".node" ? path : tetgen_partner(path, ".node");
     const std::string ele = tetgen_partner(node, ".ele");
@@ -56,6 +66,17 @@ Scene load_input(const std::string& path, const InputOptions& opt) {
     throw InputError(path, "file", "compressed input is not supported; decompress it first");
   throw InputError(path, "file", "unknown extension '" + ext +
                                      "' (expected .vtu .vtk .vti .node .ele .inr .off)");
+}
+}  // namespace
+
+Scene load_input(const std::string& path, const InputOptions& opt) {
+  try {
+    return load_unguarded(path, opt);
+  } catch (const std::bad_alloc&) {
+    throw InputError(path, "file", "not enough memory to read it");
+  } catch (const std::length_error&) {
+    throw InputError(path, "file", "declares more data than can be held in memory");
+  }
 }
 
 void write_scene(const Scene& scene, const std::string& path) {

@@ -26,6 +26,7 @@ CellMesh read_tetgen(const std::string& node_path, const std::string& ele_path) 
   if (dim != 3) n.fail("header", "dimension " + std::to_string(dim) + " is not 3");
   if (nattr < 0 || nattr > 1000) n.fail("header", "attribute count " + std::to_string(nattr) + " is out of range");
   if (nmark != 0 && nmark != 1) n.fail("header", "boundary marker flag " + std::to_string(nmark) + " is not 0 or 1");
+  n.require_fits(np, 8, "header", "point count");  // "0 0 0 0\n"
   m.points.reserve(n.capacity_for(np, 8));  // "0 0 0 0\n"
   if (nattr > 0) m.scalars.reserve(n.capacity_for(np, 8));
   int64_t base = 0;
@@ -58,6 +59,7 @@ CellMesh read_tetgen(const std::string& node_path, const std::string& ele_path) 
   if (per == 10) e.fail("header", "10-node (second-order) tetrahedra are not supported");
   if (per != 4) e.fail("header", "nodes per tetrahedron is " + std::to_string(per) + ", expected 4");
   if (eattr < 0 || eattr > 1000) e.fail("header", "attribute count " + std::to_string(eattr) + " is out of range");
+  e.require_fits(nt, 10, "header", "tetrahedron count");  // "0 0 1 2 3\n"
   const size_t cap = e.capacity_for(nt, 10);  // "0 0 1 2 3\n"
   m.types.reserve(cap);
   m.offsets.reserve(cap + 1);

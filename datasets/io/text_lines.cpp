@@ -55,6 +55,13 @@ void TextLines::need(size_t n, const std::string& element, const std::string& wh
     fail(element, "expected " + what + ", found " + std::to_string(tokens_.size()) + " values");
 }
 
+void TextLines::require_fits(int64_t promised, size_t min_record_bytes, const std::string& element,
+                             const std::string& what) const {
+  if (promised > 0 && static_cast<uint64_t>(promised) > text_.size() / min_record_bytes + 1)
+    fail(element, what + " " + std::to_string(promised) + " cannot fit in a file of " +
+                      std::to_string(text_.size()) + " bytes");
+}
+
 double TextLines::number(size_t t, const std::string& element) const {
   const std::string_view s = tokens_.at(t);
   double v = 0;

@@ -24,6 +24,10 @@ class TextLines {
     const size_t fit = text_.size() / min_record_bytes + 1;
     return promised < 0 ? 0 : std::min(static_cast<size_t>(promised), fit);
   }
+  // Fails unless `promised` records of at least `min_record_bytes` each fit in the file:
+  // a header's count is checked against the file before anything is allocated for it.
+  void require_fits(int64_t promised, size_t min_record_bytes, const std::string& element,
+                    const std::string& what) const;
   // "line 12 (point 3)" style element names for errors.
   std::string where(const std::string& element) const;
 

@@ -1,6 +1,7 @@
 #include "datasets/io/vtk_io.h"
 
 #include <filesystem>
+#include <map>
 #include <mutex>
 
 #include <vtkCallbackCommand.h>
@@ -11,6 +12,7 @@
 #include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
+#include <vtkGenericCell.h>
 #include <vtkGenericDataObjectReader.h>
 #include <vtkImageData.h>
 #include <vtkLogger.h>
@@ -30,6 +32,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "datasets/io/file_util.h"
+#include "datasets/io/vtk_prescan.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -44,10 +47,13 @@ class CaptureWindow : public vtkOutputWindow {
   vtkTypeMacro(CaptureWindow, vtkOutputWindow);
   void DisplayText(const char* t) override { keep(t); }
   void DisplayErrorText(const char* t) override { keep(t); }
-  void DisplayWarningText(const char*) override {}
-  void DisplayGenericWarningText(const char*) override {}
+  // A warning on reading is a problem with the file too (VTK reports a short binary read
+  // as one), so it is kept like an error.
+  void DisplayWarningText(const char* t) override { keep(t); }
+  void DisplayGenericWarningText(const char* t) override { keep(t); }
   void DisplayDebugText(const char*) override {}
-  // VTK messages read "ERROR: In file, line N\nClass (0x...): text": keep the text.
+  // VTK messages read "ERROR: In file, line N\nClass (0x...): text" (or "Warning: In ..."):
+  // keep the text.
   void keep(const char* t) {
     if (!first.empty() || !t) return;
     std::string msg = t;
@@ -58,7 +64,9 @@ class CaptureWindow : public vtkOutputWindow {
       if (end == std::string::npos) end = msg.size();
       std::string line = msg.substr(start, end - start);
       start = end + 1;
-      if (line.empty() || line.rfind("ERROR: In ", 0) == 0) continue;
+      if (line.empty() || line.rfind("ERROR: In ", 0) == 0 || line.rfind("Warning: In ", 0) == 0 ||
+          line.rfind("Generic Warning: In ", 0) == 0)
+        continue;
       if (const auto p = line.find("): "); p != std::string::npos && line.find(" (0x") < p)
         line = line.substr(p + 3);
       best = line;
@@ -85,7 +93,10 @@ class ScopedCapture {
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   }
   ~ScopedCapture() {
-    if (algo_) algo_->RemoveObserver(tag_);  // the window dies with us; so must the link
+    if (algo_) {  // the window dies with us; so must the links
+      algo_->RemoveObserver(tag_);
+      algo_->RemoveObserver(warning_tag_);
+    }
     vtkLogger::SetStderrVerbosity(level_);
     vtkOutputWindow::SetInstance(prev_);
   }
@@ -96,6 +107,7 @@ class ScopedCapture {
     cb_->SetClientData(win_.Get());
     algo_ = algo;
     tag_ = algo->AddObserver(vtkCommand::ErrorEvent, cb_);
+    warning_tag_ = algo->AddObserver(vtkCommand::WarningEvent, cb_);
   }
   const std::string& first() const { return win_->first; }
 
@@ -106,7 +118,7 @@ class ScopedCapture {
   vtkNew<CaptureWindow> win_;
   vtkNew<vtkCallbackCommand> cb_;
   vtkObject* algo_ = nullptr;
-  unsigned long tag_ = 0;
+  unsigned long tag_ = 0, warning_tag_ = 0;
 };
 
 template <class Algo>
@@ -125,7 +137,26 @@ vtkDataArray* pick_array(vtkDataSetAttributes* a) {
   return nullptr;
 }
 
-CellMesh from_unstructured(vtkUnstructuredGrid* ug, const std::string& path) {
+// Dimension of a VTK cell type as VTK itself defines it (-1 for a code VTK does not know).
+int cell_dimension(int type) {
+  const char* cls = vtkCellTypes::GetClassNameFromTypeId(type);
+  if (!cls || std::string(cls) == "UnknownClass") return -1;
+  vtkSmartPointer<vtkCell> cell;
+  cell.TakeReference(vtkGenericCell::InstantiateCell(type));
+  return cell ? cell->GetCellDimension() : -1;
+}
+
+std::string type_label(int type) {
+  const char* cls = vtkCellTypes::GetClassNameFromTypeId(type);
+  return "type " + std::to_string(type) + " (" + (cls ? cls : "unknown") + ")";
+}
+
+// The volume cells of `ug`. Vertices, lines and surface cells beside them (gmsh writes its
+// boundary and edge elements into the same file) are skipped and counted in `skipped` by
+// class name; a volume cell other than the four linear types is refused. Points are kept
+// as numbered in the file, so point data stays aligned with them.
+CellMesh from_unstructured(vtkUnstructuredGrid* ug, const std::string& path,
+                           std::map<std::string, size_t>& skipped) {
   CellMesh m;
   const vtkIdType np = ug->GetNumberOfPoints(), nc = ug->GetNumberOfCells();
   if (np >= (vtkIdType(1) << 31)) throw InputError(path, "points", "more than 2^31 points");
@@ -136,18 +167,29 @@ CellMesh from_unstructured(vtkUnstructuredGrid* ug, const std::string& path) {
     m.points[i] = {p[0], p[1], p[2]};
   }
   if (vtkDataArray* s = pick_array(ug->GetPointData())) {
+    if (s->GetNumberOfTuples() != np)
+      throw InputError(path, std::string("point data ") + (s->GetName() ? s->GetName() : "?"),
+                       "has " + std::to_string(s->GetNumberOfTuples()) + " values for " +
+                           std::to_string(np) + " points");
     m.scalars.resize(np);
     for (vtkIdType i = 0; i < np; ++i) m.scalars[i] = s->GetComponent(i, 0);
   }
-  m.types.reserve(nc);
-  m.offsets.reserve(nc + 1);
+  std::map<int, int> dimension;  // per type code, asked of VTK once
   for (vtkIdType c = 0; c < nc; ++c) {
     const int type = ug->GetCellType(c);
     if (!is_supported_cell_code(type)) {
-      const char* cls = vtkCellTypes::GetClassNameFromTypeId(type);
+      auto [it, fresh] = dimension.try_emplace(type, 0);
+      if (fresh) it->second = cell_dimension(type);
+      if (it->second < 0)
+        throw InputError(path, "cell " + std::to_string(c), type_label(type) + " is not a VTK cell type");
+      if (it->second < 3) {
+        const char* cls = vtkCellTypes::GetClassNameFromTypeId(type);
+        ++skipped[cls ? cls : type_label(type)];
+        continue;
+      }
       throw InputError(path, "cell " + std::to_string(c),
-                       "type " + std::to_string(type) + " (" + (cls ? cls : "unknown") +
-                           ") is not supported (tetra, pyramid, wedge, hexahedron only)");
+                       type_label(type) +
+                           " is not supported (volume cells must be linear tetra, pyramid, wedge or hexahedron)");
     }
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
@@ -165,6 +207,10 @@ CellMesh from_unstructured(vtkUnstructuredGrid* ug, const std::string& path) {
     m.types.push_back(t);
     m.offsets.push_back(static_cast<int32_t>(m.conn.size()));
   }
+  if (m.num_cells() == 0)
+    throw InputError(path, "cells", nc == 0 ? "the file has no cells"
+                                            : "none of the " + std::to_string(nc) +
+                                                  " cells is a volume cell (tetra, pyramid, wedge, hexahedron)");
   return m;
 }
 
@@ -198,6 +244,19 @@ VoxelGrid from_image(vtkImageData* img, const std::string& path) {
     if (vtkDataArray* t = fd->GetArray("vobench_threshold"); t && t->GetNumberOfTuples() > 0)
       g.threshold = static_cast<float>(t->GetComponent(0, 0));
   return g;
+}
+
+// "skipped 40 cells of lower dimension (vtkLine 12, vtkTriangle 28)", or "" for none.
+std::string skipped_note(const std::map<std::string, size_t>& skipped) {
+  size_t total = 0;
+  std::string list;
+  for (const auto& [name, n] : skipped) {
+    total += n;
+    list += (list.empty() ? "" : ", ") + name + " " + std::to_string(n);
+  }
+  if (total == 0) return "";
+  return "read the volume cells only; skipped " + std::to_string(total) +
+         " cells of lower dimension (" + list + ")";
 }
 
 std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
@@ -238,16 +297,24 @@ void write_with(Writer* w, const std::string& path) {
 }
 }  // namespace
 
-Scene read_vtk_file(const std::string& path) {
+Scene read_vtk_file(const std::string& path, std::string* note) {
   require_readable_file(path);
   const std::string ext = file_extension(path);
   const nlohmann::json params{{"input", path}};
+  std::map<std::string, size_t> skipped;
+  const auto noted = [&](Scene s) {
+    if (note) *note = skipped_note(skipped);
+    return s;
+  };
+  if (ext == ".vtu") prescan_vtk_xml(path, "UnstructuredGrid");
+  if (ext == ".vti") prescan_vtk_xml(path, "ImageData");
+  if (ext == ".vtk") prescan_vtk_legacy(path);
   if (ext == ".vtu") {
     vtkNew<vtkXMLUnstructuredGridReader> r;
     r->SetFileName(path.c_str());
     run_checked(r.Get(), path, "file");
     if (!r->GetOutput()) throw InputError(path, "file", "VTK read no unstructured grid");
-    return Scene::from_mesh(stem(path), from_unstructured(r->GetOutput(), path), params);
+    return noted(Scene::from_mesh(stem(path), from_unstructured(r->GetOutput(), path, skipped), params));
   }
   if (ext == ".vti") {
     vtkNew<vtkXMLImageDataReader> r;
@@ -263,7 +330,7 @@ Scene read_vtk_file(const std::string& path) {
     if (r->GetErrorCode() != 0)
       throw InputError(path, "file", std::string("VTK: ") + vtkErrorCode::GetStringFromErrorCode(r->GetErrorCode()));
     if (auto* ug = vtkUnstructuredGrid::SafeDownCast(r->GetOutput()))
-      return Scene::from_mesh(stem(path), from_unstructured(ug, path), params);
+      return noted(Scene::from_mesh(stem(path), from_unstructured(ug, path, skipped), params));
     if (auto* img = vtkImageData::SafeDownCast(r->GetOutput()))
       return Scene::from_grid(stem(path), from_image(img, path), params);
     const char* what = r->GetOutput() ? r->GetOutput()->GetClassName() : "nothing";

@@ -1,5 +1,7 @@
 // VTK files through VTK's own readers and writers.
-//   .vtu  XML unstructured grid -> cells (tetra, pyramid, wedge, hexahedron only).
+//   .vtu  XML unstructured grid -> cells (tetra, pyramid, wedge, hexahedron); vertices,
+//         lines and surface cells beside them are skipped (see read_vtk_file's note),
+//         other volume cells (quadratic, polyhedron, ...) are refused.
 //   .vtk  legacy: an unstructured grid -> cells; structured points -> voxels.
 //   .vti  XML image data -> voxels.
 // Point scalars: the active scalars, else the first point-data array (component 0).
@@ -13,7 +15,9 @@
 
 namespace vob {
 
-Scene read_vtk_file(const std::string& path);
+// `note`, when given, receives what the caller should tell once the scene has been
+// validated ("" when nothing): cells of lower dimension skipped beside the volume cells.
+Scene read_vtk_file(const std::string& path, std::string* note = nullptr);
 void write_vtu(const CellMesh& m, const std::string& path);
 void write_vtk_legacy(const CellMesh& m, const std::string& path);  // binary, exact doubles
 void write_vti(const VoxelGrid& g, const std::string& path);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "harness/geometry/predicates.h"
+#include "harness/scene/coordinates.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -49,9 +50,8 @@ size_t CellMesh::bytes() const {
 }
 
 void validate_cell_mesh(const CellMesh& m, const std::string& source) {
-  for (size_t i = 0; i < m.points.size(); ++i)
-    if (!is_finite(m.points[i]))
-      throw InputError(source, "point " + std::to_string(i), "coordinate is not finite");
+  if (m.num_cells() == 0) throw InputError(source, "cells", "the mesh has no cells");
+  check_coordinates(m.points, source);
   if (!m.scalars.empty() && m.scalars.size() != m.points.size())
     throw InputError(source, "scalars", "expected " + std::to_string(m.points.size()) +
                                             " point scalars, got " +
@@ -82,25 +82,31 @@ void validate_cell_mesh(const CellMesh& m, const std::string& source) {
                                              " (degenerate cell)");
     }
     // Convex and positively oriented: each vertex not on a face lies strictly inside it.
-    // Quads are tested as the two triangles (0,1,2) and (0,2,3).
+    // A quad is tested in both of its triangulations, (0,1,2)+(0,2,3) and (0,1,3)+(1,2,3):
+    // a non-planar quad is drawn split one way or the other, and the cell must be convex
+    // whichever way, or orderers and the oracle would disagree about its boundary.
+    static constexpr int kTriangles[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 1, 3}, {1, 2, 3}};
     const LocalFaces& lf = cell_local_faces(m.types[c]);
     for (int f = 0; f < lf.count; ++f) {
-      const int ntri = lf.size[f] - 2;
+      const int ntri = lf.size[f] == 4 ? 4 : 1;
       for (int t = 0; t < ntri; ++t) {
-        const Vec3 a = m.points[p[lf.v[f][0]]], b = m.points[p[lf.v[f][t + 1]]],
-                   cc = m.points[p[lf.v[f][t + 2]]];
+        const int* tri = kTriangles[t];
+        const Vec3 a = m.points[p[lf.v[f][tri[0]]]], b = m.points[p[lf.v[f][tri[1]]]],
+                   cc = m.points[p[lf.v[f][tri[2]]]];
         for (int k = 0; k < n; ++k) {
           bool on_face = false;
           for (int q = 0; q < lf.size[f]; ++q) on_face |= (lf.v[f][q] == k);
           if (on_face) continue;
           const int s = orient3d(a, b, cc, m.points[p[k]]);
-          if (s >= 0)
+          if (s >= 0) {
+            const std::string split =
+                lf.size[f] == 4 ? std::string(" split ") + (t < 2 ? "0-2" : "1-3") : "";
             throw InputError(source, cell,
-                             s == 0 ? std::string("is degenerate (a vertex lies on face ") +
-                                          std::to_string(f) + ")"
-                                    : std::string("is inverted or not convex (vertex ") +
-                                          std::to_string(k) + " outside face " +
-                                          std::to_string(f) + ")");
+                             s == 0 ? "is degenerate (vertex " + std::to_string(k) +
+                                          " lies on face " + std::to_string(f) + split + ")"
+                                    : "is inverted or not convex (vertex " + std::to_string(k) +
+                                          " outside face " + std::to_string(f) + split + ")");
+          }
         }
       }
     }

@@ -1,13 +1,13 @@
 #include "harness/scene/triangle_soup.h"
 
+#include "harness/scene/coordinates.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
 
 void validate_triangle_soup(const TriangleSoup& s, const std::string& source) {
-  for (size_t i = 0; i < s.points.size(); ++i)
-    if (!is_finite(s.points[i]))
-      throw InputError(source, "point " + std::to_string(i), "coordinate is not finite");
+  if (s.tris.empty()) throw InputError(source, "triangles", "the surface has no triangles");
+  check_coordinates(s.points, source);
   const auto np = static_cast<int64_t>(s.points.size());
   for (size_t t = 0; t < s.tris.size(); ++t) {
     const auto& tr = s.tris[t];

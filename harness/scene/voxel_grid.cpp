@@ -1,10 +1,22 @@
 #include "harness/scene/voxel_grid.h"
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 
+#include "harness/scene/coordinates.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
+
+namespace {
+std::string short_number(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+}  // namespace
 
 Vec3 VoxelGrid::centre_of(int64_t id) const {
   const int64_t nx = dims[0], ny = dims[1];
@@ -53,6 +65,20 @@ void validate_voxel_grid(const VoxelGrid& g, const std::string& source) {
   if (!is_finite(g.spacing) || g.spacing.x <= 0 || g.spacing.y <= 0 || g.spacing.z <= 0)
     throw InputError(source, "spacing", "must be positive and finite");
   if (!is_finite(g.origin)) throw InputError(source, "origin", "is not finite");
+  const Aabb box = g.bounds();
+  for (const Vec3 corner : {box.lo, box.hi})
+    if (!is_finite(corner) || std::max({std::abs(corner.x), std::abs(corner.y), std::abs(corner.z)}) >
+                                  kMaxAbsCoordinate)
+      throw InputError(source, "origin/spacing", "the grid reaches beyond +-1e150 (squared distances would overflow)");
+  check_extent(box, source);
+  // Each step must be resolvable too: a spacing that underflows when squared, or that is
+  // lost against the coordinates, leaves voxels that no depth can separate.
+  const double scale = std::max({std::abs(box.lo.x), std::abs(box.lo.y), std::abs(box.lo.z),
+                                 std::abs(box.hi.x), std::abs(box.hi.y), std::abs(box.hi.z)});
+  for (const double step : {g.spacing.x, g.spacing.y, g.spacing.z})
+    if (step < kMinExtent || step < kMinRelativeExtent * scale)
+      throw InputError(source, "spacing", "a step of " + short_number(step) +
+                                              " is degenerate at coordinates of " + short_number(scale));
   if (g.values.size() != g.num_voxels())
     throw InputError(source, "values", "expected " + std::to_string(g.num_voxels()) +
                                            " values, got " + std::to_string(g.values.size()));

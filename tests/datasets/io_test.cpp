@@ -8,6 +8,7 @@
 
 #include "datasets/io/inr_reader.h"
 #include "datasets/io/tetgen_bridge.h"
+#include "datasets/io/vtk_io.h"
 #include "tests/datasets/test_util.h"
 
 using namespace vob;
@@ -150,7 +151,7 @@ TEST(DatasetIO, TruncatedOrMalformedTetgenFiles) {
   write_text(dir.file("h.node"), "2000000000 3 0 0\n0 0 0 0\n");
   write_text(dir.file("h.ele"), "1 4 0\n0 0 1 2 3\n");
   e = input_error([&] { load_input(dir.file("h.node")); });
-  EXPECT_TRUE(contains(e, "h.node: point 1: file ends early: the header promises 2000000000 points")) << e;
+  EXPECT_TRUE(contains(e, "h.node: header (line 1): point count 2000000000 cannot fit in a file of")) << e;
 }
 
 TEST(DatasetIO, FaceSharedByThreeCellsIsRejected) {
@@ -198,15 +199,15 @@ TEST(DatasetIO, OffErrors) {
 
 TEST(DatasetIO, VtkErrors) {
   TempDir dir;
-  // A wedge-free mesh with an unsupported cell type (a triangle) in legacy VTK.
+  // A file with a triangle and no volume cell.
   write_text(dir.file("tri.vtk"),
              "# vtk DataFile Version 3.0\ntri\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n"
              "0 0 0 1 0 0 0 1 0\nCELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\n");
   std::string e = input_error([&] { load_input(dir.file("tri.vtk")); });
-  EXPECT_TRUE(contains(e, "tri.vtk: cell 0: type 5 (vtkTriangle) is not supported")) << e;
+  EXPECT_TRUE(contains(e, "tri.vtk: cells: none of the 1 cells is a volume cell")) << e;
   write_text(dir.file("bad.vtu"), "<VTKFile type=\"UnstructuredGrid\"><Unstr");
   e = input_error([&] { load_input(dir.file("bad.vtu")); });
-  EXPECT_TRUE(contains(e, "bad.vtu: file: VTK: ")) << e;
+  EXPECT_TRUE(contains(e, "bad.vtu: XML byte 33: tag is not closed")) << e;
   EXPECT_EQ(e.find('\n'), std::string::npos) << e;
   std::printf("%s\n", e.c_str());
   e = input_error([&] { load_input(dir.file("missing.vtu")); });
@@ -325,4 +326,97 @@ TEST(DatasetIO, TetgenSwitchesReachTheMesh) {
   opt.tetgen_switches = "po2";  // second-order output
   EXPECT_TRUE(contains(input_error([&] { load_input(dir.file("cube.off"), opt); }),
                        "cube.off: tetgen switches 'po2': 'o' is not allowed"));
+}
+
+namespace {
+// A cube hexahedron with point scalars, plus what gmsh writes beside volume cells: a
+// vertex, a line and a triangle; `types` replaces the hexahedron's type.
+std::string gmsh_like_vtk(int hex_type = 12) {
+  return "# vtk DataFile Version 2.0\ncube, Created by Gmsh\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+         "POINTS 9 double\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n0.5 0.5 0.5\n"
+         "CELLS 4 18\n1 8\n2 0 1\n3 0 1 2\n8 0 1 2 3 4 5 6 7\n"
+         "CELL_TYPES 4\n1\n3\n5\n" + std::to_string(hex_type) +
+         "\nPOINT_DATA 9\nSCALARS s double 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7 8\n";
+}
+}  // namespace
+
+TEST(DatasetIO, LowerDimensionalCellsBesideVolumeCellsAreSkippedAndNoted) {
+  TempDir dir;
+  write_text(dir.file("g.vtk"), gmsh_like_vtk());
+  std::string note;
+  const Scene s = read_vtk_file(dir.file("g.vtk"), &note);
+  ASSERT_EQ(s.mesh().num_cells(), 1u);
+  EXPECT_EQ(s.mesh().types[0], CellType::Hexahedron);
+  EXPECT_EQ(s.mesh().conn, (std::vector<int32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
+  // Points keep the file's numbering, so the scalars stay with their points.
+  ASSERT_EQ(s.mesh().num_points(), 9u);
+  EXPECT_EQ(s.mesh().scalars[5], 5.0);
+  EXPECT_EQ(note, "read the volume cells only; skipped 3 cells of lower dimension "
+                  "(vtkLine 1, vtkTriangle 1, vtkVertex 1)");
+  EXPECT_EQ(load_input(dir.file("g.vtk")).mesh().num_cells(), 1u);
+  // Volume cells outside the four are refused by name, not skipped.
+  write_text(dir.file("q.vtk"), gmsh_like_vtk(25));
+  std::string e = input_error([&] { load_input(dir.file("q.vtk")); });
+  EXPECT_TRUE(contains(e, "q.vtk: cell 3: type 25 (vtkQuadraticHexahedron) is not supported")) << e;
+  write_text(dir.file("v.vtk"), gmsh_like_vtk(11));
+  e = input_error([&] { load_input(dir.file("v.vtk")); });
+  EXPECT_TRUE(contains(e, "v.vtk: cell 3: type 11 (vtkVoxel) is not supported")) << e;
+}
+
+std::string repeat(const std::string& s, int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) out += s;
+  return out;
+}
+
+TEST(DatasetIO, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
+  TempDir dir;
+  std::string text = gmsh_like_vtk();
+  text.replace(text.find("POINTS 9"), 8, "POINTS 900000000");
+  write_text(dir.file("p.vtk"), text);
+  std::string e = input_error([&] { load_input(dir.file("p.vtk")); });
+  EXPECT_TRUE(contains(e, "p.vtk: POINTS (line 5): point count 900000000 cannot fit")) << e;
+  write_text(dir.file("d.vtu"), "<VTKFile type=\"UnstructuredGrid\">" + repeat("<a>", 20000) + repeat("</a>", 20000) + "</VTKFile>");
+  e = input_error([&] { load_input(dir.file("d.vtu")); });
+  EXPECT_TRUE(contains(e, "d.vtu: XML byte")) << e;
+  write_text(dir.file("o.vti"),
+             "<VTKFile type=\"ImageData\"><ImageData WholeExtent=\"0 1 0 1 0 1\" Origin=\"nan 0 0\" "
+             "Spacing=\"1 1 1\"></ImageData></VTKFile>");
+  e = input_error([&] { load_input(dir.file("o.vti")); });
+  EXPECT_TRUE(contains(e, "o.vti: ImageData Origin: 'nan' is not a finite number")) << e;
+}
+
+// VTK reports a short binary read only as a warning; it must still refuse the file.
+TEST(DatasetIO, TruncatedBinaryLegacyVtkIsRefused) {
+  TempDir dir;
+  const Scene zoo = make("zoo");
+  write_scene(zoo, dir.file("full.vtk"));
+  std::ifstream in(dir.file("full.vtk"), std::ios::binary);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string bytes = all.str();
+  for (const double keep : {0.3, 0.6, 0.9}) {
+    write_text(dir.file("cut.vtk"), bytes.substr(0, static_cast<size_t>(bytes.size() * keep)));
+    const std::string e = input_error([&] { load_input(dir.file("cut.vtk")); });
+    EXPECT_TRUE(contains(e, "cut.vtk: ")) << keep << ": " << e;
+  }
+}
+
+// ParaView extracts mix surface cells into .vtu files too.
+TEST(DatasetIO, LowerDimensionalCellsInVtuAreSkipped) {
+  TempDir dir;
+  write_text(dir.file("m.vtu"),
+             "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+             "<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"2\"><Points>"
+             "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1"
+             "</DataArray></Points><Cells>"
+             "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 2 1 0 1 2 3</DataArray>"
+             "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3 7</DataArray>"
+             "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 10</DataArray>"
+             "</Cells></Piece></UnstructuredGrid></VTKFile>\n");
+  std::string note;
+  const Scene s = read_vtk_file(dir.file("m.vtu"), &note);
+  EXPECT_EQ(s.mesh().num_cells(), 1u);
+  EXPECT_EQ(s.mesh().types[0], CellType::Tetra);
+  EXPECT_TRUE(contains(note, "skipped 1 cells of lower dimension (vtkTriangle 1)")) << note;
 }

@@ -1,0 +1,263 @@
+#include "datasets/io/vtk_prescan.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string_view>
+#include <vector>
+
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+namespace {
+uint64_t file_size(const std::string& path) {
+  std::error_code ec;
+  const auto n = std::filesystem::file_size(path, ec);
+  if (ec) throw InputError(path, "file", "size cannot be read: " + ec.message());
+  return n;
+}
+
+// The file's text up to `stop` (exclusive), read in chunks so that a large appended
+// binary section is never held in memory.
+std::string text_before(const std::string& path, std::string_view stop) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "file", "cannot be opened");
+  std::string text;
+  std::vector<char> buf(1 << 20);
+  while (in) {
+    in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+    const size_t from = text.size() >= stop.size() ? text.size() - stop.size() : 0;
+    text.append(buf.data(), static_cast<size_t>(in.gcount()));
+    if (const size_t at = text.find(stop, from); at != std::string::npos) {
+      text.resize(at);
+      break;
+    }
+  }
+  return text;
+}
+
+std::vector<std::string_view> split(std::string_view s) {
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r' || s[i] == '\n')) ++i;
+    const size_t b = i;
+    while (i < s.size() && !(s[i] == ' ' || s[i] == '\t' || s[i] == '\r' || s[i] == '\n')) ++i;
+    if (i > b) out.push_back(s.substr(b, i - b));
+  }
+  return out;
+}
+
+bool parse_int(std::string_view s, int64_t& v) {
+  const char* b = s.data();
+  if (!s.empty() && *b == '+') ++b;
+  const auto [p, ec] = std::from_chars(b, s.data() + s.size(), v);
+  return ec == std::errc() && p == s.data() + s.size() && b != s.data() + s.size();
+}
+
+bool parse_finite(std::string_view s, double& v) {
+  const char* b = s.data();
+  if (!s.empty() && *b == '+') ++b;
+  const auto [p, ec] = std::from_chars(b, s.data() + s.size(), v);
+  return ec == std::errc() && p == s.data() + s.size() && b != s.data() + s.size() && std::isfinite(v);
+}
+
+// A count promised by the file: a non-negative integer no larger than `budget` values.
+uint64_t count(const std::string& path, const std::string& element, std::string_view text,
+               double budget, const char* what) {
+  int64_t v = 0;
+  if (!parse_int(text, v) || v < 0)
+    throw InputError(path, element, "'" + std::string(text) + "' is not a valid " + what);
+  if (static_cast<double>(v) > budget)
+    throw InputError(path, element, std::string(what) + " " + std::to_string(v) +
+                                        " cannot fit in a file of this size (" +
+                                        std::to_string(static_cast<uint64_t>(budget)) +
+                                        " values at most)");
+  return static_cast<uint64_t>(v);
+}
+
+struct Tag {
+  std::string name;
+  std::map<std::string, std::string> attrs;
+};
+
+// Attributes of a start tag's text (between '<' and '>'), name="value" or name='value'.
+Tag parse_tag(std::string_view t) {
+  Tag tag;
+  size_t i = 0;
+  while (i < t.size() && !std::isspace(static_cast<unsigned char>(t[i])) && t[i] != '/') ++i;
+  tag.name = std::string(t.substr(0, i));
+  while (i < t.size()) {
+    while (i < t.size() && (std::isspace(static_cast<unsigned char>(t[i])) || t[i] == '/')) ++i;
+    const size_t nb = i;
+    while (i < t.size() && t[i] != '=' && !std::isspace(static_cast<unsigned char>(t[i]))) ++i;
+    const std::string name(t.substr(nb, i - nb));
+    while (i < t.size() && std::isspace(static_cast<unsigned char>(t[i]))) ++i;
+    if (i >= t.size() || t[i] != '=') continue;
+    ++i;
+    while (i < t.size() && std::isspace(static_cast<unsigned char>(t[i]))) ++i;
+    if (i >= t.size() || (t[i] != '"' && t[i] != '\'')) break;
+    const char q = t[i++];
+    const size_t vb = i;
+    while (i < t.size() && t[i] != q) ++i;
+    tag.attrs[name] = std::string(t.substr(vb, i - vb));
+    ++i;
+  }
+  return tag;
+}
+
+void check_numbers(const std::string& path, const Tag& tag, const char* attr, size_t n, bool integers) {
+  const auto it = tag.attrs.find(attr);
+  if (it == tag.attrs.end()) return;
+  const std::string element = tag.name + " " + attr;
+  const auto parts = split(it->second);
+  if (parts.size() != n)
+    throw InputError(path, element, "'" + it->second + "' needs " + std::to_string(n) +
+                                        (integers ? " integers" : " numbers"));
+  for (auto p : parts) {
+    int64_t i = 0;
+    double d = 0;
+    if (integers ? !parse_int(p, i) || std::abs(i) > (int64_t(1) << 30) : !parse_finite(p, d))
+      throw InputError(path, element, "'" + std::string(p) + "' is not " +
+                                          (integers ? "an integer" : "a finite number"));
+  }
+}
+
+// Points of an extent "x0 x1 y0 y1 z0 z1" (already checked to hold 6 integers).
+double extent_points(const std::string& path, const std::string& element, const std::string& text) {
+  const auto parts = split(text);
+  double n = 1;
+  for (int a = 0; a < 3; ++a) {
+    int64_t lo = 0, hi = 0;
+    parse_int(parts[2 * a], lo);
+    parse_int(parts[2 * a + 1], hi);
+    if (hi < lo)
+      throw InputError(path, element, "'" + text + "' has an upper bound below its lower bound");
+    n *= static_cast<double>(hi - lo + 1);
+  }
+  return n;
+}
+}  // namespace
+
+void prescan_vtk_xml(const std::string& path, const std::string& expected_type) {
+  const double bytes = static_cast<double>(file_size(path));
+  const std::string text = text_before(path, "<AppendedData");
+  double budget = bytes;
+  int depth = 0;
+  size_t i = 0;
+  while ((i = text.find('<', i)) != std::string::npos) {
+    if (text.compare(i, 4, "<!--") == 0) {
+      const size_t e = text.find("-->", i);
+      if (e == std::string::npos) throw InputError(path, "XML", "comment is not closed");
+      i = e + 3;
+      continue;
+    }
+    const size_t e = text.find('>', i);
+    if (e == std::string::npos)
+      throw InputError(path, "XML byte " + std::to_string(i), "tag is not closed");
+    const std::string_view body(text.data() + i + 1, e - i - 1);
+    i = e + 1;
+    if (body.empty() || body[0] == '?' || body[0] == '!') continue;
+    if (body[0] == '/') {
+      --depth;
+      continue;
+    }
+    const bool closed = body.back() == '/';
+    if (!closed && ++depth > kMaxXmlDepth)
+      throw InputError(path, "XML byte " + std::to_string(i - body.size() - 2),
+                       "tags nest deeper than " + std::to_string(kMaxXmlDepth) + " levels");
+    const Tag tag = parse_tag(body);
+    if (tag.name == "VTKFile") {
+      const auto t = tag.attrs.find("type");
+      if (t == tag.attrs.end() || t->second != expected_type)
+        throw InputError(path, "VTKFile type", "'" + (t == tag.attrs.end() ? "" : t->second) +
+                                                  "' is not " + expected_type);
+      if (tag.attrs.count("compressor")) budget = bytes * kMaxCompressionRatio;
+    }
+    if (tag.name == "Piece") {
+      if (auto a = tag.attrs.find("NumberOfPoints"); a != tag.attrs.end())
+        count(path, "Piece NumberOfPoints", a->second, budget / 3, "point count");
+      if (auto a = tag.attrs.find("NumberOfCells"); a != tag.attrs.end())
+        count(path, "Piece NumberOfCells", a->second, budget, "cell count");
+    }
+    if (tag.name == "DataArray") {
+      const auto a = tag.attrs.find("NumberOfTuples");
+      const auto c = tag.attrs.find("NumberOfComponents");
+      const std::string name = tag.attrs.count("Name") ? tag.attrs.at("Name") : "?";
+      const uint64_t comps = c == tag.attrs.end() ? 1
+                             : count(path, "DataArray " + name + " NumberOfComponents", c->second, budget, "component count");
+      if (a != tag.attrs.end())
+        count(path, "DataArray " + name + " NumberOfTuples", a->second,
+              budget / static_cast<double>(std::max<uint64_t>(comps, 1)), "tuple count");
+    }
+    if (tag.name == "ImageData" || tag.name == "Piece") {
+      const char* ext = tag.name == "ImageData" ? "WholeExtent" : "Extent";
+      check_numbers(path, tag, ext, 6, true);
+      check_numbers(path, tag, "Origin", 3, false);
+      check_numbers(path, tag, "Spacing", 3, false);
+      check_numbers(path, tag, "Direction", 9, false);
+      if (auto a = tag.attrs.find(ext); a != tag.attrs.end() &&
+                                        extent_points(path, tag.name + " " + ext, a->second) > budget)
+        throw InputError(path, tag.name + " " + ext,
+                         "'" + a->second + "' promises more points than a file of this size can hold");
+    }
+  }
+}
+
+void prescan_vtk_legacy(const std::string& path) {
+  const double bytes = static_cast<double>(file_size(path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "file", "cannot be opened");
+  // Keyword lines are ASCII lines of their own, also in binary files; a line of binary data
+  // that happens to start with a keyword would need the exact spelling below.
+  std::string line;
+  int64_t number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (line.size() > 256 || line.empty() || !std::isupper(static_cast<unsigned char>(line[0]))) continue;
+    const auto t = split(line);
+    const std::string key(t[0]);
+    // VTK matches keywords by prefix; "POINTS\x01" or "POINTSX" must not pass as POINTS.
+    for (const char* k : {"POINTS", "CELLS", "CELL_TYPES", "POINT_DATA", "CELL_DATA", "DIMENSIONS",
+                          "SPACING", "ORIGIN", "DATASET", "SCALARS", "LOOKUP_TABLE"})
+      if (key.rfind(k, 0) == 0 && key != k)
+        throw InputError(path, "line " + std::to_string(number), "'" + key + "' is not a keyword (" + k + "?)");
+    const std::string where = key + " (line " + std::to_string(number) + ")";
+    auto need = [&](size_t n) {
+      if (t.size() < n)
+        throw InputError(path, where, "expected " + std::to_string(n - 1) + " numbers after the keyword");
+    };
+    if (key == "POINTS") {
+      need(3);
+      count(path, where, t[1], bytes / 3, "point count");
+    } else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES" ||
+               key == "TRIANGLE_STRIPS") {
+      need(3);
+      count(path, where, t[1], bytes, "cell count");
+      count(path, where, t[2], bytes, "connectivity size");
+    } else if (key == "CELL_TYPES" || key == "POINT_DATA" || key == "CELL_DATA") {
+      need(2);
+      count(path, where, t[1], bytes, "count");
+    } else if (key == "DIMENSIONS") {
+      need(4);
+      double n = 1;
+      for (int a = 1; a <= 3; ++a) n *= static_cast<double>(count(path, where, t[a], bytes, "dimension"));
+      if (n > bytes)
+        throw InputError(path, where, "dimensions promise more points than a file of this size can hold");
+    } else if (key == "SPACING" || key == "ORIGIN" || key == "ASPECT_RATIO") {
+      need(4);
+      for (int a = 1; a <= 3; ++a) {
+        double d = 0;
+        if (!parse_finite(t[a], d))
+          throw InputError(path, where, "'" + std::string(t[a]) + "' is not a finite number");
+      }
+    }
+  }
+}
+
+}  // namespace vob

@@ -1,0 +1,23 @@
+// Cheap checks on a VTK file's own text before VTK parses it, for what VTK would turn into
+// a crash (deep XML nesting), a huge allocation (a small file declaring 10^9 points) or a
+// silent default (a .vti origin of "nan" or "abc" read as 0). Each throws one InputError
+// naming the file, the element and the reason.
+#pragma once
+#include <string>
+
+namespace vob {
+
+inline constexpr int kMaxXmlDepth = 64;
+// A compressed XML file may promise at most this many values per byte of file (zlib's
+// deflate peaks near 1032:1, and VTK compresses in blocks that each carry a header).
+inline constexpr double kMaxCompressionRatio = 1100;
+
+// .vtu and .vti: tag nesting depth, Piece/DataArray counts against the file size, and for
+// image data WholeExtent/Extent (integers) and Origin/Spacing/Direction (finite numbers).
+// `expected_type` is the VTKFile type the extension promises (UnstructuredGrid, ImageData).
+void prescan_vtk_xml(const std::string& path, const std::string& expected_type);
+// Legacy .vtk: POINTS, CELLS, CELL_TYPES, POINT_DATA, CELL_DATA and DIMENSIONS counts are
+// integers and fit the file (every value takes at least one byte).
+void prescan_vtk_legacy(const std::string& path);
+
+}  // namespace vob
