@@ -90,7 +90,9 @@ class SuiteReader {
   int integer(const nlohmann::json& v, const std::string& where, int64_t lo, int64_t hi) const {
     const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
     if (!v.is_number_integer()) fail(where, v.dump().substr(0, 40) + " is not " + range);
-    if (v.is_number_unsigned() ? v.get<uint64_t>() > static_cast<uint64_t>(hi)
+    // nlohmann keeps non-negative integers unsigned: compare as unsigned first.
+    if (v.is_number_unsigned() ? (v.get<uint64_t>() > static_cast<uint64_t>(hi) ||
+                                  static_cast<int64_t>(v.get<uint64_t>()) < lo)
                                : (v.get<int64_t>() < lo || v.get<int64_t>() > hi))
       fail(where, v.dump() + " is not " + range);
     return static_cast<int>(v.get<int64_t>());

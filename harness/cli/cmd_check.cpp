@@ -8,6 +8,7 @@
 #include "harness/cli/commands.h"
 #include "harness/cli/scene_args.h"
 #include "harness/render/compositor.h"
+#include "harness/scene/input_error.h"
 
 namespace vob {
 
@@ -29,6 +30,9 @@ Command add_check_command(CLI::App& app) {
     const DatasetSpec spec = scene_args->spec();
     view_args->validate(spec);
     check_algorithm(*algorithm, spec);
+    std::error_code ec;
+    if (!images->empty() && std::filesystem::exists(*images, ec) && !std::filesystem::is_directory(*images, ec))
+      throw InputError("--images", "'" + *images + "'", "exists and is not a folder");
     const Scene scene = make_scene(spec);
     const auto cams = view_args->cameras(spec, scene);
     PreparedOrderer p = prepare_orderer(*algorithm, scene);

@@ -33,6 +33,16 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", vob::error_line("vobench: " + where + message).c_str());
     return code;
   };
+  // CLI11 would only say that a subcommand is required; name the word it did not know.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      found = found || sub->get_name() == argv[1];
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!found) return fail("'" + std::string(argv[1]) + "' is not a subcommand (known: " + known + ")", 2);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

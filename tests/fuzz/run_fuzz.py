@@ -56,6 +56,7 @@ def problems_of(case, proc):
 
 
 def run_case(binary, case, case_dir):
+    case_dir.mkdir(parents=True, exist_ok=True)
     for rel, data in case.get("files", {}).items():
         path = case_dir / rel
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -68,7 +69,10 @@ def run_case(binary, case, case_dir):
         return [f"timed out after {TIMEOUT_S} s"]
     if proc.returncode < 0:
         return [f"killed by signal {-proc.returncode}; stderr {proc.stderr[-300:]!r}"]
-    return problems_of(case, proc)
+    problems = problems_of(case, proc)
+    if not problems and case.get("show"):
+        print(f"ok   {case['show']}: {proc.stderr.decode('utf-8', 'replace').rstrip()}")
+    return problems
 
 
 def main():
@@ -76,6 +80,7 @@ def main():
     ap.add_argument("binary")
     ap.add_argument("workdir")
     ap.add_argument("--only", help="run only this module of cases/ (e.g. suite)")
+    ap.add_argument("--show", action="store_true", help="also print the error line of every passing case")
     a = ap.parse_args()
     binary = str(pathlib.Path(a.binary).resolve())
     workdir = pathlib.Path(a.workdir).resolve()
@@ -108,6 +113,8 @@ def main():
                 problems = [f"case name {name!r} is empty, repeated or has a '/'"]
             else:
                 seen.add(name)
+                if a.show:
+                    case = dict(case, show=f"{path.stem}/{name}")
                 problems = run_case(binary, case, mod_dir / name)
             if problems:
                 failed += 1

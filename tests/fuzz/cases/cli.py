@@ -86,6 +86,7 @@ def cases(work):
     out.append(case("stray-argument", CHECK + ["stray"], "stray"))
     out.append(case("no-subcommand", [], "subcommand"))
     out.append(case("unknown-subcommand", ["frobnicate"], "frobnicate"))
+    out.append(case("images-is-a-file", CHECK + ["--images", "{dir}/img"], "--images", files={"img": b"x"}))
     # Other subcommands.
     out.append(case("order-needs-one-view", ORDER, "--view-index"))
     out.append(case("order-view-index-negative", ORDER + ["--view-index", "-2"], "--view-index"))

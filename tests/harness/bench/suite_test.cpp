@@ -47,10 +47,15 @@ TEST(SuiteValidation, IntegersAreRangeCheckedBeforeNarrowing) {
   auto j = valid();
   j["views"] = (int64_t(1) << 32) + 2;  // would wrap to 2 as an int
   EXPECT_TRUE(starts_with(error_of(j), "s.json: views: ")) << error_of(j);
+  j["views"] = 0;  // nlohmann holds it unsigned
+  EXPECT_TRUE(starts_with(error_of(j), "s.json: views: ")) << error_of(j);
   j["views"] = 10001;
   EXPECT_TRUE(starts_with(error_of(j), "s.json: views: ")) << error_of(j);
   j = valid();
   j["repeats"] = (int64_t(1) << 31);
+  EXPECT_TRUE(starts_with(error_of(j), "s.json: repeats: ")) << error_of(j);
+  j = valid();
+  j["repeats"] = 0;
   EXPECT_TRUE(starts_with(error_of(j), "s.json: repeats: ")) << error_of(j);
   j = valid();
   j["views"] = 2.5;
