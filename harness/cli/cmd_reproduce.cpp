@@ -26,7 +26,7 @@ Command add_reproduce_command(CLI::App& app) {
       }
     std::string all;
     for (const auto& e : experiment_registry()) all += (all.empty() ? "" : ", ") + e.name;
-    throw InputError("reproduce", *name, "unknown experiment (known: " + all + ")");
+    throw InputError("experiment", "'" + *name + "'", "is not known (known: " + all + ")");
   };
 }
 

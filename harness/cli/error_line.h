@@ -1,6 +1,6 @@
 // One printable line for an error message: messages can quote bytes of a bad file, so
-// control bytes are shown as \xNN and a very long message is cut, keeping the line readable
-// and a single line.
+// control bytes and bytes that are not UTF-8 are shown as \xNN, and a message longer than
+// kMaxErrorLine bytes is cut (at a character boundary) and marked " [...]".
 #pragma once
 #include <string>
 

@@ -44,7 +44,7 @@ CLI::Validator integer_in(int64_t lo, int64_t hi) {
           return "'" + s + "' is not an integer in " + range;
         return {};
       },
-      "INT in " + range);
+      "");  // the option's help text gives the range
 }
 
 CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open) {
@@ -59,7 +59,7 @@ CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open) {
         if (!ok) return "'" + s + "' is not a number in " + range;
         return {};
       },
-      "NUMBER in " + range);
+      "");
 }
 
 void check_algorithm(const std::string& algorithm, const DatasetSpec& spec) {
@@ -121,7 +121,7 @@ void ViewArgs::add_to(CLI::App& cmd) {
   cmd.add_option("--fov", fov, "explicit camera: vertical field of view in degrees, in (0, 180)")
       ->check(number_in(0, 180, true, true));
   cmd.add_option("--ortho", ortho, "explicit camera: orthographic view height, positive")
-      ->check(number_in(0, 1e300, true, false));
+      ->check(number_in(0, HUGE_VAL, true, true));
   cmd.add_flag("--ortho-views", ortho_views, "orthographic views for the view set or orbit");
   cmd.add_option("--zoom", zoom, "view set or orbit: move the eye closer by this factor, in (0, 100]")
       ->check(number_in(0, kMaxZoom, true, false));
