@@ -2,6 +2,7 @@
 // the suite file and the entry.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include "datasets/datasets.h"
@@ -145,4 +146,15 @@ TEST(SuiteValidation, SizesAreStrict) {
   } catch (const InputError& e) {
     EXPECT_TRUE(starts_with(e.what(), "s.json: sizes[2]: '0x5': ")) << e.what();
   }
+}
+
+TEST(SuiteValidation, EverySuiteOfTheRepositoryIsValid) {
+  // The validation must not refuse what the reproductions run.
+  int n = 0;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(VOB_SOURCE_DIR) + "/datasets/suites")) {
+    if (e.path().extension() != ".json") continue;
+    EXPECT_NO_THROW(SuiteSpec::load(e.path().string())) << e.path();
+    ++n;
+  }
+  EXPECT_GE(n, 4);
 }
