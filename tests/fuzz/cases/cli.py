@@ -100,6 +100,10 @@ def cases(work):
     out.append(case("run-missing-suite", ["run", "{dir}/none.json", "-o", "{dir}/r.jsonl"], "none.json"))
     out.append(case("run-suite-is-folder", ["run", "{dir}", "-o", "{dir}/r.jsonl"], "suite"))
     out.append(case("run-missing-output", ["run", "{dir}/none.json"], "--output"))
+    out.append(case("run-output-is-a-folder", ["run", "{dir}/s.json", "-o", "{dir}"], "--output",
+                    files={"s.json": b'{"datasets": [{"name": "sphere"}], "algorithms": ["triangle-centroid"]}'}))
+    out.append(case("reproduce-output-is-a-file", ["reproduce", "quick", "-o", "{dir}/f"], "--output",
+                    files={"f": b"x"}))
     out.append(case("report-missing-results", ["report", "{dir}/none.jsonl", "-o", "{dir}/rep"], "none.jsonl"))
     out.append(case("report-no-results", ["report", "-o", "{dir}/rep"], "results"))
     out.append(case("reproduce-unknown", ["reproduce", "nope"], "nope"))
