@@ -27,6 +27,9 @@ const std::vector<DatasetInfo>& dataset_registry();
 // validates it. Deterministic for its parameters. InputError on anything bad.
 Scene make_dataset(const std::string& name, Params params);
 const DatasetInfo& find_dataset(const std::string& name);  // InputError if unknown
+// Checks dataset `name` and its parameters as make_dataset would (names known, values in
+// range, combinations possible) without generating anything. InputError on anything bad.
+void check_dataset_params(const std::string& name, Params params);
 
 struct InputOptions {
   bool tetrahedralize = false;  // .off: mesh the closed surface with TetGen (else triangles)

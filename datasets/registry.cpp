@@ -121,4 +121,12 @@ Scene make_dataset(const std::string& name, Params params) {
   return s;
 }
 
+void check_dataset_params(const std::string& name, Params params) {
+  const DatasetInfo& info = find_dataset(name);
+  params.set_owner(name);
+  params.set_dry_run(true);
+  info.make(params);
+  params.check_all_used();
+}
+
 }  // namespace vob

@@ -22,6 +22,7 @@ Camera top_view(Vec3 eye, Vec3 target, double fov, int width, int height) {
 Scene make_cycle(Params& p) {
   const int k = p.get_int("cells", 6, 6, 64);  // with twist <= 30: convex for k >= 6
   const double twist = p.get_double("twist", 30.0, 5.0, 30.0) * kPi / 180.0;
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   CellMesh m;
   // Points: per separating segment i, inner a_i and outer b_i at z=1, then both at z=2
   // (the same directions from the apex, doubled).
@@ -61,6 +62,7 @@ Scene make_cycle_sticks(Params& p) {
   // n_i . x = d, runs along u_i for t in [-len, len] at height slope * t. Lines i and i+1
   // cross at t_i = +sqrt(3) d and t_i+1 = -sqrt(3) d, so stick i is 2 sqrt(3) d slope
   // higher there: 1.04 apart, far more than thickness plus the rise across a stick width.
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   const double d = 1.0, slope = 0.3, len = 3.0, width = 0.3, thick = 0.2;
   CellMesh m;
   for (int i = 0; i < 3; ++i) {

@@ -52,6 +52,7 @@ Scene make_gap(Params& p) {
   // Connectivity offsets are int32: 4 ids per tetrahedron must stay below 2^31.
   if (24.0 * s.nx * s.ny * s.nz >= 2147483647.0)
     throw InputError("gap", "parameters nx ny nz", "more than 536 million tetrahedra");
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   return Scene::from_mesh("gap", make_gap_mesh(s), p.to_json());
 }
 

@@ -24,6 +24,7 @@ double cross2(Vec3 a, Vec3 b, Vec3 c) { return (b.x - a.x) * (c.y - a.y) - (b.y 
 Scene make_offset(Params& p) {
   const std::string shape = p.get_choice("shape", "helix", {"helix", "gap"});
   const double off = p.get_double("offset", 1e7, -1e9, 1e9);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   CellMesh m = shape == "helix" ? make_helix_mesh({2000, 2, {off, off, off}})
                                 : make_gap_mesh({6, 6, 12, 2, {off, off, off}});
   return Scene::from_mesh("offset", std::move(m), p.to_json());
@@ -32,6 +33,7 @@ Scene make_offset(Params& p) {
 Scene make_slivers(Params& p) {
   const int n = p.get_int("n", 8, 1, 200);
   const double eps = p.get_double("flatness", 1e-6, 1e-12, 0.25);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   CellMesh m;
   const int s = n + 1;
   // Layers: 0 bottom (z=-1), 1 middle (z=+-eps), 2 top (z=1).
@@ -89,6 +91,7 @@ Scene make_tiny(Params& p) {
     throw InputError("tiny", "parameter size", std::to_string(size) + " is too large for " +
                                                    std::to_string(count) + " cells (max " +
                                                    std::to_string(0.25 / g / 1.1) + ")");
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   SplitMix64 rng(static_cast<uint64_t>(seed));
   std::vector<int32_t> slots(static_cast<size_t>(g) * g * g);
   std::iota(slots.begin(), slots.end(), 0);

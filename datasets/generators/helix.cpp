@@ -189,6 +189,7 @@ Scene make_helix(Params& p) {
   HelixSpec s;
   s.turns = p.get_int("turns", 3, 1, 20);
   s.cells = p.get_int("cells", 20000, helix_min_cells(s.turns), 50000000);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   return Scene::from_mesh("helix", make_helix_mesh(s), p.to_json());
 }
 

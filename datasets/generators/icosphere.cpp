@@ -47,6 +47,7 @@ void append_icosphere(TriangleSoup& soup, Vec3 centre, double radius, int subdiv
 
 Scene make_sphere(Params& p) {
   const int subdiv = p.get_int("subdiv", 3, 0, 8);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   TriangleSoup soup;
   append_icosphere(soup, {0, 0, 0}, 1.0, subdiv);
   return Scene::from_soup("sphere", std::move(soup), p.to_json());
@@ -54,6 +55,7 @@ Scene make_sphere(Params& p) {
 
 Scene make_spheres(Params& p) {
   const int subdiv = p.get_int("subdiv", 2, 0, 7);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   TriangleSoup soup;
   const Vec3 groups[3] = {{-2.3, 0.3, 0.2}, {0, 0, 0}, {2.3, -0.2, 0.4}};
   for (const Vec3& g : groups)

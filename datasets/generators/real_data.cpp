@@ -29,6 +29,7 @@ const std::vector<RealModel>& real_models() {
 
 Scene make_skull(Params& p) {
   const double threshold = p.get_double("threshold", 0.5, 0.0, 5.0);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   const std::string member = "data/images/skull_2.9.inr";
   VoxelGrid g = read_inr(cgal_data_file(member));
   g.threshold = static_cast<float>(threshold);
@@ -44,12 +45,14 @@ TriangleSoup load_surface(const RealModel& m) {
 }  // namespace
 
 Scene make_surface(const RealModel& m, Params& p) {
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   return Scene::from_soup("surface-" + m.name, load_surface(m), p.to_json());
 }
 
 Scene make_tet(const RealModel& m, Params& p) {
   const double quality = p.get_double("quality", m.quality, 1.05, 100.0);
   const double maxvol = p.get_double("maxvol", 0.0, 0.0, 1.0);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   const TriangleSoup surface = load_surface(m);
   check_closed_surface(surface, m.member);
   const Aabb box = surface.bounds();

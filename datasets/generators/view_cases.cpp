@@ -12,6 +12,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 Scene block_scene(const char* name, Params& p, int def, int lo = 1) {
   const int n = p.get_int("n", def, lo, 100);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   CellMesh m;
   append_kuhn_block(m, {n, n, n, {0, 0, 0}, {1, 1, 1}});
   const Vec3 centre{n / 2.0, n / 2.0, n / 2.0};

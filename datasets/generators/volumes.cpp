@@ -15,7 +15,7 @@ constexpr double kPi = 3.14159265358979323846;
 VoxelGrid grid_from_params(Params& p) {
   VoxelGrid g;
   g.dims = {p.get_int("nx", 64, 2, 512), p.get_int("ny", 64, 2, 512), p.get_int("nz", 64, 2, 512)};
-  g.values.resize(g.num_voxels());
+  if (!p.dry_run()) g.values.resize(g.num_voxels());
   return g;
 }
 
@@ -34,6 +34,7 @@ double sq(double a) { return a * a; }
 
 Scene make_block_volume(Params& p) {
   VoxelGrid g = grid_from_params(p);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   fill(g, [](double x, double y, double z) -> float {
     if (x < 0.08 || x > 0.92 || y < 0.2 || y > 0.8 || z < 0.1 || z > 0.9) return 0.0f;
     if (sq(x - 0.33) + sq(y - 0.5) < sq(0.12) || sq(x - 0.67) + sq(y - 0.5) < sq(0.12))
@@ -49,6 +50,7 @@ Scene make_block_volume(Params& p) {
 
 Scene make_shells_volume(Params& p) {
   VoxelGrid g = grid_from_params(p);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   fill(g, [](double x, double y, double z) -> float {
     const double r = std::sqrt(sq(x - 0.5) + sq(y - 0.5) + sq(z - 0.5));
     if (r < 0.14) return static_cast<float>(200.0 * (1.0 - r / 0.2));
@@ -67,6 +69,7 @@ Scene make_sparse_volume(Params& p) {
   VoxelGrid g = grid_from_params(p);
   const int blobs = p.get_int("blobs", 40, 0, 10000);
   const int seed = p.get_int("seed", 1, 0, 1 << 30);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   const int nx = g.dims[0], ny = g.dims[1], nz = g.dims[2];
   const int n[3] = {nx, ny, nz};
   // Visits the voxels whose centres may lie within r of (cx, cy, cz) (normalised units).

@@ -79,6 +79,7 @@ CellMesh make_zoo_mesh(int scale) {
 
 Scene make_zoo(Params& p) {
   const int scale = p.get_int("scale", 1, 1, 10);
+  if (p.dry_run()) return {};  // parameters checked, nothing generated
   return Scene::from_mesh("zoo", make_zoo_mesh(scale), p.to_json());
 }
 

@@ -29,11 +29,16 @@ class Params {
   const std::map<std::string, std::string>& values() const { return values_; }
   nlohmann::json to_json() const;  // numbers as numbers where they parse
   void set_owner(std::string o) { owner_ = std::move(o); }
+  // A dry run: a generator reads and checks its parameters, then returns an empty scene
+  // without generating, so a whole suite is validated before any work starts.
+  void set_dry_run(bool on) { dry_run_ = on; }
+  bool dry_run() const { return dry_run_; }
 
  private:
   std::string owner_;
   std::map<std::string, std::string> values_;
   std::set<std::string> used_;
+  bool dry_run_ = false;
 };
 
 }  // namespace vob

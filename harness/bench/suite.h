@@ -43,12 +43,22 @@ struct SuiteSpec {
   std::vector<int> image_views;   // views whose images are written
   bool images_of_violations = false;  // also every view the oracle finds violations in
 
+  // Validates the whole suite before any work: dataset names and generator parameters
+  // (checked without generating), input files present, orderer names and parameters
+  // (constructed, not prepared), views, sizes, repeats. InputError naming `source` and the
+  // entry ("quick.json: datasets[1].set: ...").
   static SuiteSpec from_json(const nlohmann::json& j, const std::string& source);
   static SuiteSpec load(const std::string& path);
 };
 
-// "640x480" -> (640, 480); InputError otherwise.
-std::pair<int, int> parse_size(const std::string& s);
+// Limits of what a suite or the command line may ask for (documented in --help).
+constexpr int kMaxViews = 10000;      // views in a view set or frames of an orbit
+constexpr int kMaxRepeats = 1000;     // repeats and warm-up frames per view
+constexpr int kMaxImageSide = 16384;  // W and H of an image size
+constexpr double kMaxZoom = 100.0;    // view-set zoom factor
+
+// "640x480" -> (640, 480); InputError(where, ...) otherwise.
+std::pair<int, int> parse_size(const std::string& s, const std::string& where = "--size");
 Scene make_scene(const DatasetSpec& spec);
 
 }  // namespace vob

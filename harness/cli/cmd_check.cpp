@@ -38,11 +38,16 @@ Command add_check_command(CLI::App& app) {
   cmd->add_option("--algorithm,-a", *algorithm, "orderer NAME[:k=v,...]")->required();
   scene_args->add_to(*cmd);
   view_args->add_to(*cmd);
-  cmd->add_option("--supersample", *supersample, "S x S samples per pixel")->check(CLI::Range(1, 16));
+  cmd->add_option("--supersample", *supersample, "S x S samples per pixel")->check(integer_in(1, 16));
   cmd->add_flag("--json", *json, "print the oracle's counts per view as JSON");
   cmd->add_option("--images", *images, "write order/exact/difference PNGs of every view here");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
+    view_args->validate(spec);
+    check_algorithm(*algorithm, spec);
+    std::error_code ec;
+    if (!images->empty() && std::filesystem::exists(*images, ec) && !std::filesystem::is_directory(*images, ec))
+      throw InputError("--images", "'" + *images + "'", "exists and is not a folder");
     const Scene scene = scene_args->load(spec);
     const auto cams = view_args->cameras(spec, scene);
     PreparedOrderer p = prepare_orderer(*algorithm, scene);

@@ -24,10 +24,12 @@ Command add_order_command(CLI::App& app) {
   cmd->add_flag("--check", *check, "also run the oracle and store its counts");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
+    view_args->validate(spec);
+    if (!view_args->explicit_camera() && view_args->view_index < 0)
+      throw InputError("--view-index", "view", "order writes one view: give --view-index I or an explicit camera (--eye/--target)");
+    check_algorithm(*algorithm, spec);
     const Scene scene = scene_args->load(spec);
     const auto cams = view_args->cameras(spec, scene);
-    if (cams.size() != 1)
-      throw InputError("order", "view", "writes one view: give --view-index I or an explicit camera");
     const Camera& cam = cams[0].second;
     PreparedOrderer p = prepare_orderer(*algorithm, scene);
     FrameMeasurement m = measure_frame(p, cam, 0, 1);

@@ -1,4 +1,5 @@
 // vobench reproduce NAME: run one experiment into reports/out/NAME (or -o DIR).
+#include <filesystem>
 #include <iostream>
 
 #include "harness/cli/commands.h"
@@ -20,13 +21,16 @@ Command add_reproduce_command(CLI::App& app) {
       if (e.name == *name) {
         ExperimentContext c = *ctx;
         if (c.out_dir.empty()) c.out_dir = std::string(VOB_SOURCE_DIR) + "/reports/out/" + *name;
+        std::error_code ec;
+        if (std::filesystem::exists(c.out_dir, ec) && !std::filesystem::is_directory(c.out_dir, ec))
+          throw InputError("--output", "'" + c.out_dir + "'", "exists and is not a folder");
         const int status = e.run(c);
         if (status == 0) std::cerr << "reproduce " << *name << ": wrote " << c.out_dir << "/" << *name << ".md\n";
         return status == 0 ? 0 : 2;
       }
     std::string all;
     for (const auto& e : experiment_registry()) all += (all.empty() ? "" : ", ") + e.name;
-    throw InputError("reproduce", *name, "unknown experiment (known: " + all + ")");
+    throw InputError("experiment", "'" + *name + "'", "is not known (known: " + all + ")");
   };
 }
 

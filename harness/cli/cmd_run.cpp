@@ -1,8 +1,10 @@
 // vobench run: run a suite and append its records to a results file (JSONL).
+#include <filesystem>
 #include <iostream>
 
 #include "harness/bench/runner.h"
 #include "harness/cli/commands.h"
+#include "harness/scene/input_error.h"
 
 namespace vob {
 
@@ -14,6 +16,9 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("-o,--output", *out, "results file (JSONL); existing records are skipped")->required();
   return [=]() {
     const SuiteSpec s = SuiteSpec::load(*suite);
+    std::error_code ec;
+    if (std::filesystem::exists(*out, ec) && !std::filesystem::is_regular_file(*out, ec))
+      throw InputError("--output", "'" + *out + "'", "exists and is not a results file");
     RunOptions opt;
     opt.results_path = *out;
     opt.progress = [](const std::string& line) { std::cerr << line << std::endl; };

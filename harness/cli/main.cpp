@@ -4,6 +4,7 @@
 #include <map>
 
 #include "harness/cli/commands.h"
+#include "harness/cli/error_line.h"
 #include "harness/scene/input_error.h"
 
 int main(int argc, char** argv) {
@@ -24,24 +25,40 @@ int main(int argc, char** argv) {
   add(vob::add_report_command);
   add(vob::add_reproduce_command);
   add(vob::add_validate_command);
+  // Every failure is one line on stderr, "vobench: SUBCOMMAND: what: reason", exit 2 (3 for
+  // an internal error): scripts and the fuzz suite read exactly that line.
+  const auto fail = [&](const std::string& message, int code) {
+    std::string where;
+    for (auto& [sub, run] : commands)
+      if (sub->parsed()) where = sub->get_name() + ": ";
+    std::fprintf(stderr, "%s\n", vob::error_line("vobench: " + where + message).c_str());
+    return code;
+  };
+  // CLI11 would only say that a subcommand is required; name the word it did not know.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      found = found || sub->get_name() == argv[1];
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!found) return fail("'" + std::string(argv[1]) + "' is not a subcommand (known: " + known + ")", 2);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --help-all
+    return fail(e.what(), 2);
   }
   try {
     for (auto& [sub, run] : commands)
       if (sub->parsed()) return run();
   } catch (const vob::InputError& e) {
-    std::fprintf(stderr, "vobench: %s\n", e.what());
-    return 2;
+    return fail(e.what(), 2);
   } catch (const std::logic_error& e) {
-    std::fprintf(stderr, "vobench: internal error: %s\n", e.what());
-    return 3;
+    return fail(std::string("internal error: ") + e.what(), 3);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "vobench: %s\n", e.what());
-    return 2;
+    return fail(e.what(), 2);
   }
   return 2;
 }

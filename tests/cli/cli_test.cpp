@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -148,4 +149,101 @@ TEST(Cli, MalformedSuiteIsBadInput) {
   const Outcome r = vobench("run " + suite.string() + " -o " + scratch("x.jsonl").string());
   EXPECT_EQ(r.code, 2) << r.out;
   EXPECT_NE(r.out.find("broken.json"), std::string::npos) << r.out;
+}
+
+namespace {
+// Lines of the output (stdout and stderr together), without empty ones.
+std::vector<std::string> lines_of(const std::string& out) {
+  std::vector<std::string> v;
+  size_t start = 0;
+  while (start < out.size()) {
+    const size_t end = out.find('\n', start);
+    const std::string line = out.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (!line.empty()) v.push_back(line);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return v;
+}
+}  // namespace
+
+TEST(Cli, UsageErrorsAreOneLineNamingSubcommandAndOption) {
+  for (const auto& [args, prefix] : std::vector<std::pair<std::string, std::string>>{
+           {"check --algorithm mpvo --views 0", "vobench: check: --views: "},
+           {"check --algorithm mpvo --views 4294967298", "vobench: check: --views: "},
+           {"check --algorithm mpvo --view-index -1", "vobench: check: --view-index: "},
+           {"order --algorithm mpvo --orbit -3 -o x.json", "vobench: order: --orbit: "},
+           {"check --algorithm mpvo --views 1000000", "vobench: check: --views: "},
+           {"check --algorithm mpvo --supersample 17", "vobench: check: --supersample: "},
+           {"check --algorithm mpvo --views", "vobench: check: --views"},
+           {"generate --dataset gap", "vobench: generate: --output"}}) {
+    const Outcome r = vobench(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
+    const auto lines = lines_of(r.out);
+    ASSERT_EQ(lines.size(), 1u) << args << "\n" << r.out;
+    EXPECT_EQ(lines[0].rfind(prefix, 0), 0u) << args << "\n" << r.out;
+  }
+}
+
+TEST(Cli, OptionsThatWouldBeIgnoredAreRefusedWithTheReason) {
+  const std::string check = std::string("check --algorithm mpvo ") + kSmallGap;
+  for (const auto& [args, names] : std::vector<std::pair<std::string, std::string>>{
+           {check + " --fov 30", "--fov"},  // a view set fits its own field of view
+           {check + " --fov 0 --eye 3,0,0 --target 0,0,0", "--fov"},
+           {check + " --eye 3,0,0 --target 0,0,0 --views 5", "--views"},
+           {check + " --eye 3,0,0 --target 0,0,0 --fov 30 --ortho 2", "--fov"},
+           {check + " --orbit 4 --views 6", "--views"},
+           {check + " --view-index 14", "--view-index"},
+           {check + " --set nx=5", "--set"},  // given twice
+           {"check --algorithm btf " + std::string(kSmallGap), "btf"},
+           {"order --algorithm mpvo " + std::string(kSmallGap) + " -o x.json", "--view-index"}}) {
+    const Outcome r = vobench(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
+    const auto lines = lines_of(r.out);
+    ASSERT_EQ(lines.size(), 1u) << args << "\n" << r.out;
+    EXPECT_NE(lines[0].find(names), std::string::npos) << args << "\n" << r.out;
+  }
+}
+
+TEST(Cli, UnknownNamesAreRefusedBeforeTheDatasetIsMade) {
+  // The default gap has 1.5 million cells: refusing within the test's time means the name
+  // was checked first. The message is the only output.
+  for (const std::string& args : {std::string("check --algorithm nosuch --dataset gap"),
+                                  std::string("check --algorithm havs:k=99 --dataset gap"),
+                                  std::string("check --algorithm mpvo --dataset gap --set colour=3"),
+                                  std::string("check --algorithm mpvo --dataset gap --size 0x1")}) {
+    const Outcome r = vobench(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.out;
+    EXPECT_EQ(lines_of(r.out).size(), 1u) << args << "\n" << r.out;
+  }
+}
+
+TEST(Cli, SuiteErrorsNameTheFileAndEntryBeforeAnyDatasetIsMade) {
+  const fs::path suite = scratch("late-error.json");
+  // datasets[0] is valid and would print a progress line if it were generated first.
+  write(suite, R"({"name": "t", "datasets": [{"name": "gap", "set": {"nx": 3, "ny": 3, "nz": 4}},
+                   {"name": "gap", "set": {"nx": 100000}}], "algorithms": ["mpvo"], "views": 2})");
+  Outcome r = vobench("run " + suite.string() + " -o " + scratch("late.jsonl").string());
+  EXPECT_EQ(r.code, 2) << r.out;
+  auto lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 1u) << r.out;
+  EXPECT_NE(lines[0].find("late-error.json: datasets[1].set: gap: parameter nx"), std::string::npos) << r.out;
+  write(suite, R"({"name": "t", "datasets": [{"name": "gap", "set": {"nx": 3, "ny": 3, "nz": 4}}],
+                   "algorithms": ["mpvo"], "views": 4294967298})");
+  r = vobench("run " + suite.string() + " -o " + scratch("late.jsonl").string());
+  EXPECT_EQ(r.code, 2) << r.out;
+  lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 1u) << r.out;
+  EXPECT_NE(lines[0].find("late-error.json: views: "), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(scratch("late.jsonl")));
+}
+
+TEST(Cli, ReportRefusesALineThatIsNotARecord) {
+  const fs::path results = scratch("not-records.jsonl");
+  write(results, "[1, 2]\n");
+  const Outcome r = vobench("report " + results.string() + " -o " + scratch("rep").string());
+  EXPECT_EQ(r.code, 2) << r.out;
+  const auto lines = lines_of(r.out);
+  ASSERT_EQ(lines.size(), 1u) << r.out;
+  EXPECT_NE(lines[0].find("not-records.jsonl: line 1: is not a JSON object"), std::string::npos) << r.out;
 }

@@ -15,6 +15,7 @@
 #include "algorithms/havs/havs_frame.h"
 #include "algorithms/havs/reference_sorts.h"
 #include "datasets/datasets.h"
+#include "harness/bench/json_input.h"
 #include "harness/bench/registry.h"
 #include "harness/bench/runner.h"
 #include "harness/cli/experiment_table.h"
@@ -308,14 +309,15 @@ int run_havs_k_tradeoff(const ExperimentContext& ctx) {
   const int status = run_suite_experiment({"havs-k-tradeoff.json"}, "havs-k-tradeoff-report",
                                           "HAVS: speed against error as k grows", ctx);
   // Our table from the results: per mesh and orderer, mean time and summed error.
-  std::ifstream in(fs::path(ctx.out_dir) / "results.jsonl");
+  const std::string results_path = (fs::path(ctx.out_dir) / "results.jsonl").string();
+  std::ifstream in(results_path);
   struct Acc {
     double time = 0, views = 0, vpix = 0, cov = 0, rmse = 0;
   };
   std::map<std::pair<std::string, std::string>, Acc> acc;
   std::string line;
-  while (std::getline(in, line)) {
-    const auto r = nlohmann::json::parse(line);
+  for (int n = 1; std::getline(in, line); ++n) {
+    const auto r = parse_json_input(line, results_path, "line " + std::to_string(n));
     Acc& a = acc[{r["dataset"].get<std::string>(), r["algorithm"].get<std::string>()}];
     a.time += r["total"]["median"].get<double>();
     a.views += 1;

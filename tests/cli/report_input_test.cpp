@@ -1,0 +1,66 @@
+// The results check that `vobench report` runs before the Python report sees a file.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "harness/cli/report_input.h"
+#include "harness/scene/input_error.h"
+
+using namespace vob;
+
+namespace {
+nlohmann::json record() {
+  return nlohmann::json::parse(R"({"key": "k", "algorithm": "mpvo", "dataset": "gap", "w": 8, "h": 8,
+      "n": 6, "phases": {"order": {"median": 0.1}}, "total": {"median": 0.1},
+      "prepare": {"seconds": 0.0}, "cycles": {"count": 0}, "bytes": {"orderer": 1, "derived": 2},
+      "oracle": {"covered_pixels": 4, "violating_pixels": 0, "max_k": 0}})");
+}
+}  // namespace
+
+TEST(ReportInput, AcceptsARecordAndNamesTheFirstProblem) {
+  EXPECT_EQ(report_record_problem(record()), "");
+  auto r = record();
+  r.erase("algorithm");
+  EXPECT_EQ(report_record_problem(r), "field 'algorithm' is missing");
+  r = record();
+  r["total"]["median"] = "fast";
+  EXPECT_EQ(report_record_problem(r), "field 'total.median' must be a number");
+  r = record();
+  r["total"] = 3;
+  EXPECT_EQ(report_record_problem(r), "field 'total' must be an object");
+  r = record();
+  r["w"] = 1.5;
+  EXPECT_EQ(report_record_problem(r), "field 'w' must be an integer");
+  r = record();
+  r["phases"]["order"] = 3;
+  EXPECT_EQ(report_record_problem(r), "field 'phases.order' must be an object with a number 'median'");
+  r = record();
+  r["images"] = {{"order", "a.png"}};
+  EXPECT_EQ(report_record_problem(r), "field 'images.exact' must be a string");
+  EXPECT_EQ(report_record_problem(nlohmann::json::array()), "is not a JSON object (a results record)");
+}
+
+TEST(ReportInput, FileErrorsNameTheFileAndLine) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("vob_report_input_" + std::to_string(getpid()) + ".jsonl");
+  std::ofstream(path) << record().dump() << "\n\n" << "[1]\n";
+  try {
+    check_report_inputs({path.string()});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path.string() + ": line 3: is not a JSON object (a results record)");
+  }
+  std::ofstream(path) << std::string(100000, '[') << "\n";
+  EXPECT_THROW(check_report_inputs({path.string()}), InputError);
+  std::ofstream(path) << "\n \n";
+  try {
+    check_report_inputs({path.string()});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds no records"), std::string::npos) << e.what();
+  }
+  std::ofstream(path) << record().dump() << "\n";
+  EXPECT_NO_THROW(check_report_inputs({path.string()}));
+  std::filesystem::remove(path);
+}
