@@ -4,9 +4,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <string>
 
 #include <CGAL/Box_intersection_d/Box_d.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mpzf.h>
 #include <CGAL/box_intersection_d.h>
 #include <tbb/blocked_range.h>
@@ -312,6 +314,245 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
   std::sort(r.pairs.begin(), r.pairs.end());
   r.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return r;
+}
+
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// A boundary face triangle: its points and the cell that owns the face.
+struct BoundaryTri {
+  int32_t v[3];
+  int32_t cell;
+};
+
+// A bounding box reporting by index (triangles, sample points).
+struct IndexBox : CGAL::Box_intersection_d::Box_d<double, 3, CGAL::Box_intersection_d::ID_NONE> {
+  using Base = CGAL::Box_intersection_d::Box_d<double, 3, CGAL::Box_intersection_d::ID_NONE>;
+  IndexBox(const CGAL::Bbox_3& b, int32_t i) : Base(b), index(i) {}
+  std::size_t id() const { return std::size_t(index); }
+  int32_t index;
+};
+
+CGAL::Bbox_3 point_box(const Vec3& p) { return CGAL::Bbox_3(p.x, p.y, p.z, p.x, p.y, p.z); }
+
+CGAL::Bbox_3 cell_box(const CellMesh& mesh, size_t c) {
+  const int32_t* ids = mesh.cell_points(c);
+  CGAL::Bbox_3 bb = point_box(mesh.points[ids[0]]);
+  for (int i = 1; i < mesh.cell_size(c); ++i) bb += point_box(mesh.points[ids[i]]);
+  return bb;
+}
+
+bool face_neighbours(const MeshFaces& faces, int32_t a, int32_t b) {
+  for (int32_t i = faces.cell_face_offsets[a]; i < faces.cell_face_offsets[a + 1]; ++i)
+    if (faces.other(size_t(faces.cell_faces[i]), a) == b) return true;
+  return false;
+}
+
+// A point strictly inside cell c (planar faces): its vertex mean, or failing that (rounding
+// on a very thin cell) a mean weighted towards one vertex; false when none is. Exact test.
+bool interior_point(const CellMesh& mesh, int32_t c, Vec3& out) {
+  const int32_t* ids = mesh.cell_points(c);
+  const int n = mesh.cell_size(c);
+  const TypeShape& ts = type_shape(mesh.types[c]);
+  for (int attempt = 0; attempt <= n; ++attempt) {
+    Vec3 p{0, 0, 0};
+    double wsum = 0;
+    for (int i = 0; i < n; ++i) {
+      const double w = (attempt > 0 && i == attempt - 1) ? double(n) : 1.0;
+      p += mesh.points[ids[i]] * w;
+      wsum += w;
+    }
+    p = p * (1.0 / wsum);
+    bool inside = true;
+    for (int t = 0; t < ts.ntri && inside; ++t) {
+      const Vec3& a = mesh.points[ids[ts.tri[t][0]]];
+      const Vec3& b = mesh.points[ids[ts.tri[t][1]]];
+      const Vec3& d = mesh.points[ids[ts.tri[t][2]]];
+      inside = sign_det(a, b, a, d, a, p) < 0;  // outward normals: beyond a face is positive
+    }
+    if (inside) {
+      out = p;
+      return true;
+    }
+  }
+  return false;
+}
+
+struct UnionFind {
+  std::vector<int32_t> parent;
+  explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int32_t find(int32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(int32_t a, int32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+}  // namespace
+
+OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces& faces) {
+  const auto t0 = Clock::now();
+  OverlapCertificate r;
+  auto undecided = [&](std::string why) {
+    r.result = OverlapCertificate::Undecided;
+    r.why = std::move(why);
+    r.seconds = since(t0);
+    return r;
+  };
+  // The argument needs every cell to be the polyhedron its faces bound: planar quads.
+  for (size_t f = 0; f < faces.num_faces(); ++f) {
+    if (faces.face_size(f) != 4) continue;
+    const int32_t* v = faces.face_points(f);
+    const Vec3 &a = mesh.points[v[0]], &b = mesh.points[v[1]], &c = mesh.points[v[2]],
+               &d = mesh.points[v[3]];
+    if (sign_det(a, b, a, c, a, d) != 0) return undecided("a quad face is not planar");
+  }
+
+  // (1) Contacts between boundary faces.
+  std::vector<BoundaryTri> tris;
+  tris.reserve(faces.boundary.size() * 2);
+  for (int32_t f : faces.boundary) {
+    const int32_t* v = faces.face_points(size_t(f));
+    tris.push_back({{v[0], v[1], v[2]}, faces.cell0[f]});
+    if (faces.face_size(size_t(f)) == 4) tris.push_back({{v[0], v[2], v[3]}, faces.cell0[f]});
+  }
+  r.boundary_triangles = int64_t(tris.size());
+  std::vector<IndexBox> boxes;
+  boxes.reserve(tris.size());
+  for (size_t i = 0; i < tris.size(); ++i) {
+    CGAL::Bbox_3 bb = point_box(mesh.points[tris[i].v[0]]);
+    bb += point_box(mesh.points[tris[i].v[1]]);
+    bb += point_box(mesh.points[tris[i].v[2]]);
+    boxes.emplace_back(bb, int32_t(i));
+  }
+  Pairs tri_pairs;  // triangle index pairs of different cells, closed boxes intersecting
+  CGAL::box_self_intersection_d(
+      boxes.begin(), boxes.end(),
+      [&](const IndexBox& a, const IndexBox& b) {
+        if (tris[a.index].cell != tris[b.index].cell) tri_pairs.emplace_back(a.index, b.index);
+      },
+      CGAL::Box_intersection_d::Box_traits_d<IndexBox>(), std::ptrdiff_t(10),
+      CGAL::Box_intersection_d::CLOSED);
+  r.triangle_pairs = int64_t(tri_pairs.size());
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  auto triangle = [&](const BoundaryTri& t) {
+    const Vec3 &a = mesh.points[t.v[0]], &b = mesh.points[t.v[1]], &c = mesh.points[t.v[2]];
+    return K::Triangle_3(K::Point_3(a.x, a.y, a.z), K::Point_3(b.x, b.y, b.z), K::Point_3(c.x, c.y, c.z));
+  };
+  tbb::combinable<Pairs> contact;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, tri_pairs.size(), 4096),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      Pairs& out = contact.local();
+                      for (size_t i = range.begin(); i < range.end(); ++i) {
+                        const BoundaryTri& s = tris[tri_pairs[i].first];
+                        const BoundaryTri& t = tris[tri_pairs[i].second];
+                        if (face_neighbours(faces, s.cell, t.cell)) continue;
+                        if (CGAL::do_intersect(triangle(s), triangle(t)))
+                          out.emplace_back(std::min(s.cell, t.cell), std::max(s.cell, t.cell));
+                      }
+                    });
+  Pairs cell_pairs;
+  contact.combine_each([&](const Pairs& p) { cell_pairs.insert(cell_pairs.end(), p.begin(), p.end()); });
+  std::sort(cell_pairs.begin(), cell_pairs.end());
+  cell_pairs.erase(std::unique(cell_pairs.begin(), cell_pairs.end()), cell_pairs.end());
+  r.contact_pairs = int64_t(cell_pairs.size());
+
+  // (2) Nesting: one interior point per connected component of the boundary (faces joined
+  // through shared point ids), tested against every cell whose closed box contains it.
+  UnionFind uf(mesh.num_points());
+  for (int32_t f : faces.boundary) {
+    const int32_t* v = faces.face_points(size_t(f));
+    for (int i = 1; i < faces.face_size(size_t(f)); ++i) uf.unite(v[0], v[i]);
+  }
+  std::vector<int32_t> sample_cell;
+  {
+    std::vector<char> seen(mesh.num_points(), 0);
+    for (int32_t f : faces.boundary) {
+      const int32_t root = uf.find(faces.face_points(size_t(f))[0]);
+      if (!seen[root]) seen[root] = 1, sample_cell.push_back(faces.cell0[f]);
+    }
+  }
+  r.components = int64_t(sample_cell.size());
+  std::vector<Vec3> sample(sample_cell.size());
+  for (size_t i = 0; i < sample.size(); ++i)
+    if (!interior_point(mesh, sample_cell[i], sample[i]))
+      return undecided("no interior point found in cell " + std::to_string(sample_cell[i]));
+  Pairs nest_pairs;  // (sample index, cell)
+  auto contains = [](const CGAL::Bbox_3& b, const Vec3& p) {
+    return b.xmin() <= p.x && p.x <= b.xmax() && b.ymin() <= p.y && p.y <= b.ymax() &&
+           b.zmin() <= p.z && p.z <= b.zmax();
+  };
+  if (sample.size() <= 16) {
+    tbb::combinable<Pairs> hits;
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.num_cells(), 1 << 14),
+                      [&](const tbb::blocked_range<size_t>& range) {
+                        Pairs& out = hits.local();
+                        for (size_t c = range.begin(); c < range.end(); ++c) {
+                          const CGAL::Bbox_3 bb = cell_box(mesh, c);
+                          for (size_t i = 0; i < sample.size(); ++i)
+                            if (contains(bb, sample[i])) out.emplace_back(int32_t(i), int32_t(c));
+                        }
+                      });
+    hits.combine_each([&](const Pairs& p) { nest_pairs.insert(nest_pairs.end(), p.begin(), p.end()); });
+  } else {
+    std::vector<IndexBox> points, cells;
+    for (size_t i = 0; i < sample.size(); ++i) points.emplace_back(point_box(sample[i]), int32_t(i));
+    cells.reserve(mesh.num_cells());
+    for (size_t c = 0; c < mesh.num_cells(); ++c) cells.emplace_back(cell_box(mesh, c), int32_t(c));
+    CGAL::box_intersection_d(
+        points.begin(), points.end(), cells.begin(), cells.end(),
+        [&](const IndexBox& p, const IndexBox& c) { nest_pairs.emplace_back(p.index, c.index); },
+        CGAL::Box_intersection_d::Box_traits_d<IndexBox>(), std::ptrdiff_t(10),
+        CGAL::Box_intersection_d::CLOSED);
+  }
+  for (const auto& [i, c] : nest_pairs) {
+    const int32_t s = sample_cell[size_t(i)];
+    if (c == s) continue;
+    cell_pairs.emplace_back(std::min(s, c), std::max(s, c));
+    ++r.nesting_pairs;
+  }
+
+  // Exact decisions: every contact pair and every nesting pair.
+  std::sort(cell_pairs.begin(), cell_pairs.end());
+  cell_pairs.erase(std::unique(cell_pairs.begin(), cell_pairs.end()), cell_pairs.end());
+  tbb::combinable<Pairs> bad;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, cell_pairs.size(), 256),
+                    [&](const tbb::blocked_range<size_t>& range) {
+                      for (size_t i = range.begin(); i < range.end(); ++i)
+                        if (cells_interpenetrate(mesh, cell_pairs[i].first, cell_pairs[i].second))
+                          bad.local().push_back(cell_pairs[i]);
+                    });
+  Pairs found;
+  bad.combine_each([&](const Pairs& p) { found.insert(found.end(), p.begin(), p.end()); });
+  r.result = found.empty() ? OverlapCertificate::Clean : OverlapCertificate::Overlap;
+  if (!found.empty()) r.witness = *std::min_element(found.begin(), found.end());
+  r.seconds = since(t0);
+  return r;
+}
+
+CellOverlapReport check_overlapping_cells(const CellMesh& mesh, const MeshFaces& faces,
+                                          OverlapSearch search) {
+  const auto t0 = Clock::now();
+  CellOverlapReport r;
+  if (search == OverlapSearch::Fast) {
+    r.certificate = certify_cells_disjoint(mesh, faces);
+    if (r.certificate.result == OverlapCertificate::Clean) {
+      r.method = "boundary";
+      r.total_seconds = since(t0);
+      return r;
+    }
+  }
+  CellOverlapReport full = find_overlapping_cells(mesh);
+  full.certificate = r.certificate;
+  full.method = "exhaustive";
+  full.total_seconds = since(t0);
+  return full;
 }
 
 std::string describe_overlap(const std::string& source, const CellOverlapReport& r) {

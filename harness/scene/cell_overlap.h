@@ -27,23 +27,55 @@
 #include <utility>
 #include <vector>
 
+#include <string>
+
 #include "harness/scene/cell_mesh.h"
+#include "harness/scene/mesh_faces.h"
 
 namespace vob {
 
 // True when the interiors of cells a and b intersect (a != b).
 bool cells_interpenetrate(const CellMesh& mesh, int32_t a, int32_t b);
 
+// The fast path's verdict (see the comment at the top).
+struct OverlapCertificate {
+  enum Result { NotRun, Clean, Overlap, Undecided } result = NotRun;
+  std::pair<int32_t, int32_t> witness{-1, -1};  // Overlap: the smallest interpenetrating pair found
+  std::string why;                               // Undecided: the reason
+  int64_t boundary_triangles = 0;  // (1): boundary faces as triangles
+  int64_t triangle_pairs = 0;      //      their closed boxes intersecting (different cells)
+  int64_t contact_pairs = 0;       //      cell pairs whose boundary triangles intersect
+  int64_t components = 0;          // (2): connected components of the boundary
+  int64_t nesting_pairs = 0;       //      cells whose box holds a component's sample point
+  double seconds = 0;
+};
+
+// True: the mesh has no interpenetrating cells (proven); Overlap: it has (the witness);
+// Undecided: the argument does not apply (a non-planar quad). `faces` are the mesh's faces
+// (build_mesh_faces), whose checks the argument relies on.
+OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces& faces);
+
 struct CellOverlapReport {
   std::vector<std::pair<int32_t, int32_t>> pairs;  // (smaller id, larger id), sorted
   int64_t candidates = 0;                           // box pairs decided exactly
   double box_seconds = 0;                           // box intersection, including the
   double total_seconds = 0;                         // exact tests it overlaps with
+  std::string method = "exhaustive";  // or "boundary": certified clean, nothing to list
+  OverlapCertificate certificate;     // the fast path's, when it ran
 };
 
 // Every interpenetrating pair of the mesh. The box enumeration runs on one thread and hands
 // batches of candidates to TBB for the exact tests, which run while it continues.
+// This is the reference (exhaustive) search.
 CellOverlapReport find_overlapping_cells(const CellMesh& mesh);
+
+enum class OverlapSearch { Fast, Exhaustive };
+
+// Fast: certify_cells_disjoint, and only when it does not certify a clean mesh (an overlap
+// exists, or it is undecided) the exhaustive search, so that every pair is listed.
+// Exhaustive: find_overlapping_cells. Either way `pairs` is complete.
+CellOverlapReport check_overlapping_cells(const CellMesh& mesh, const MeshFaces& faces,
+                                          OverlapSearch search = OverlapSearch::Fast);
 
 // One line naming the first pair, e.g. "source: cells 12 and 4071 overlap (...)" - the
 // InputError message of `--validate full`; throws nothing.
