@@ -58,7 +58,7 @@ Command add_validate_command(CLI::App& app) {
       out["certificate"] = {{"result", verdict[cert.result]},
                             {"why", cert.why},
                             {"boundary_triangles", cert.boundary_triangles},
-                            {"triangle_pairs", cert.triangle_pairs},
+                            {"triangle_cell_pairs", cert.triangle_cell_pairs},
                             {"contact_pairs", cert.contact_pairs},
                             {"components", cert.components},
                             {"nesting_pairs", cert.nesting_pairs},
@@ -74,20 +74,25 @@ Command add_validate_command(CLI::App& app) {
     if (*json) {
       std::cout << out.dump(2) << "\n";
     } else {
-      if (cert.result != OverlapCertificate::NotRun)
-        std::printf("%s: %zu cells; boundary check: %lld boundary triangles, %lld contact pairs, "
-                    "%lld boundary components -> %s (%.2f s)\n",
+      if (r.method == "boundary") {
+        std::printf("%s: %zu cells, 0 interpenetrating pairs (certified by the boundary check: "
+                    "%lld boundary triangles, %lld exact pair tests, %lld components; "
+                    "%.2f s)\n",
                     source.c_str(), scene.num_primitives(), (long long)cert.boundary_triangles,
-                    (long long)cert.contact_pairs, (long long)cert.components,
-                    cert.result == OverlapCertificate::Clean     ? "no interpenetrating cells"
-                    : cert.result == OverlapCertificate::Overlap ? "cells interpenetrate"
-                                                                 : ("undecided: " + cert.why).c_str(),
-                    cert.seconds);
-      if (r.method == "exhaustive")
-        std::printf("%s: %zu cells, %lld candidate box pairs, %zu interpenetrating pairs, every "
-                    "one listed (exhaustive search, %.2f s)\n",
+                    (long long)cert.contact_pairs, (long long)cert.components, cert.seconds);
+      } else {
+        if (cert.result == OverlapCertificate::Overlap)
+          std::printf("%s: the boundary check found cells %d and %d interpenetrating (%.2f s); "
+                      "the exhaustive search lists every pair\n",
+                      source.c_str(), cert.witness.first, cert.witness.second, cert.seconds);
+        else if (cert.result == OverlapCertificate::Undecided)
+          std::printf("%s: the boundary check does not apply (%s); exhaustive search\n",
+                      source.c_str(), cert.why.c_str());
+        std::printf("%s: %zu cells, %lld candidate box pairs, %zu interpenetrating pairs, all "
+                    "listed (exhaustive search, %.2f s)\n",
                     source.c_str(), scene.num_primitives(), (long long)r.candidates,
                     r.pairs.size(), r.total_seconds);
+      }
       const size_t shown = std::min<size_t>(r.pairs.size(), 20);
       for (size_t i = 0; i < shown; ++i)
         std::printf("  cells %d and %d\n", r.pairs[i].first, r.pairs[i].second);

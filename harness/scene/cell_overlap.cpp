@@ -329,11 +329,13 @@ struct BoundaryTri {
 };
 
 // A bounding box reporting by index (triangles, sample points).
+// `key` is unique across both sequences of a bipartite search (CGAL breaks ties by it).
 struct IndexBox : CGAL::Box_intersection_d::Box_d<double, 3, CGAL::Box_intersection_d::ID_NONE> {
   using Base = CGAL::Box_intersection_d::Box_d<double, 3, CGAL::Box_intersection_d::ID_NONE>;
-  IndexBox(const CGAL::Bbox_3& b, int32_t i) : Base(b), index(i) {}
-  std::size_t id() const { return std::size_t(index); }
+  IndexBox(const CGAL::Bbox_3& b, int32_t i, size_t k) : Base(b), index(i), key(k) {}
+  std::size_t id() const { return key; }
   int32_t index;
+  size_t key;
 };
 
 CGAL::Bbox_3 point_box(const Vec3& p) { return CGAL::Bbox_3(p.x, p.y, p.z, p.x, p.y, p.z); }
@@ -414,7 +416,7 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
     if (sign_det(a, b, a, c, a, d) != 0) return undecided("a quad face is not planar");
   }
 
-  // (1) Contacts between boundary faces.
+  // (1) Boundary triangles against the cells their closed boxes meet.
   std::vector<BoundaryTri> tris;
   tris.reserve(faces.boundary.size() * 2);
   for (int32_t f : faces.boundary) {
@@ -423,61 +425,85 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
     if (faces.face_size(size_t(f)) == 4) tris.push_back({{v[0], v[2], v[3]}, faces.cell0[f]});
   }
   r.boundary_triangles = int64_t(tris.size());
-  std::vector<IndexBox> boxes;
-  boxes.reserve(tris.size());
+  std::vector<IndexBox> tri_boxes, cell_boxes;
+  tri_boxes.reserve(tris.size());
   for (size_t i = 0; i < tris.size(); ++i) {
     CGAL::Bbox_3 bb = point_box(mesh.points[tris[i].v[0]]);
     bb += point_box(mesh.points[tris[i].v[1]]);
     bb += point_box(mesh.points[tris[i].v[2]]);
-    boxes.emplace_back(bb, int32_t(i));
+    tri_boxes.emplace_back(bb, int32_t(i), i);
   }
-  Pairs tri_pairs;  // triangle index pairs of different cells, closed boxes intersecting
-  CGAL::box_self_intersection_d(
-      boxes.begin(), boxes.end(),
-      [&](const IndexBox& a, const IndexBox& b) {
-        if (tris[a.index].cell != tris[b.index].cell) tri_pairs.emplace_back(a.index, b.index);
-      },
-      CGAL::Box_intersection_d::Box_traits_d<IndexBox>(), std::ptrdiff_t(10),
-      CGAL::Box_intersection_d::CLOSED);
-  r.triangle_pairs = int64_t(tri_pairs.size());
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  auto triangle = [&](const BoundaryTri& t) {
-    const Vec3 &a = mesh.points[t.v[0]], &b = mesh.points[t.v[1]], &c = mesh.points[t.v[2]];
-    return K::Triangle_3(K::Point_3(a.x, a.y, a.z), K::Point_3(b.x, b.y, b.z), K::Point_3(c.x, c.y, c.z));
+  cell_boxes.reserve(mesh.num_cells());
+  for (size_t c = 0; c < mesh.num_cells(); ++c)
+    cell_boxes.emplace_back(cell_box(mesh, c), int32_t(c), tris.size() + c);
+
+  // A pair (t, a) needs the exact cell test unless t cannot meet the interior of a (nor the
+  // relative interior of a face of a): a is t's owner or its face neighbour, or a lies on
+  // the closed outer side of t's plane, or t on the closed outer side of a face plane of a
+  // without lying in it.
+  auto needs_test = [&](const BoundaryTri& t, int32_t a) {
+    const int32_t e = t.cell;
+    if (a == e || face_neighbours(faces, e, a)) return false;
+    const Vec3 &t0p = mesh.points[t.v[0]], &t1p = mesh.points[t.v[1]], &t2p = mesh.points[t.v[2]];
+    const int32_t* ids = mesh.cell_points(size_t(a));
+    const int n = mesh.cell_size(size_t(a));
+    bool inner = false;
+    for (int i = 0; i < n && !inner; ++i) {
+      const int32_t id = ids[i];
+      if (id == t.v[0] || id == t.v[1] || id == t.v[2]) continue;
+      inner = sign_det(t0p, t1p, t0p, t2p, t0p, mesh.points[id]) < 0;
+    }
+    if (!inner) return false;
+    const TypeShape& ts = type_shape(mesh.types[size_t(a)]);
+    for (int k = 0; k < ts.ntri; ++k) {
+      const int32_t i0 = ids[ts.tri[k][0]], i1 = ids[ts.tri[k][1]], i2 = ids[ts.tri[k][2]];
+      const Vec3 &f0 = mesh.points[i0], &f1 = mesh.points[i1], &f2 = mesh.points[i2];
+      bool any_inner = false, any_outer = false;
+      for (int j = 0; j < 3 && !any_inner; ++j) {
+        const int32_t id = t.v[j];
+        const int s = (id == i0 || id == i1 || id == i2)
+                          ? 0
+                          : sign_det(f0, f1, f0, f2, f0, mesh.points[id]);
+        any_inner |= s < 0;
+        any_outer |= s > 0;
+      }
+      if (!any_inner && any_outer) return false;
+    }
+    return true;
   };
-  tbb::combinable<Pairs> contact;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, tri_pairs.size(), 4096),
+  using TriCell = std::pair<int32_t, int32_t>;
+  std::vector<TriCell> tri_cell;
+  CGAL::box_intersection_d(
+      tri_boxes.begin(), tri_boxes.end(), cell_boxes.begin(), cell_boxes.end(),
+      [&](const IndexBox& t, const IndexBox& c) { tri_cell.emplace_back(t.index, c.index); },
+      CGAL::Box_intersection_d::Box_traits_d<IndexBox>(), std::ptrdiff_t(10),
+      CGAL::Box_intersection_d::CLOSED, CGAL::Box_intersection_d::BIPARTITE);
+  r.triangle_cell_pairs = int64_t(tri_cell.size());
+  tbb::combinable<Pairs> survivors;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, tri_cell.size(), 4096),
                     [&](const tbb::blocked_range<size_t>& range) {
-                      Pairs& out = contact.local();
+                      Pairs& out = survivors.local();
                       for (size_t i = range.begin(); i < range.end(); ++i) {
-                        const BoundaryTri& s = tris[tri_pairs[i].first];
-                        const BoundaryTri& t = tris[tri_pairs[i].second];
-                        if (face_neighbours(faces, s.cell, t.cell)) continue;
-                        if (CGAL::do_intersect(triangle(s), triangle(t)))
-                          out.emplace_back(std::min(s.cell, t.cell), std::max(s.cell, t.cell));
+                        const BoundaryTri& t = tris[size_t(tri_cell[i].first)];
+                        const int32_t a = tri_cell[i].second;
+                        if (needs_test(t, a)) out.emplace_back(std::min(t.cell, a), std::max(t.cell, a));
                       }
                     });
+  std::vector<TriCell>().swap(tri_cell);
   Pairs cell_pairs;
-  contact.combine_each([&](const Pairs& p) { cell_pairs.insert(cell_pairs.end(), p.begin(), p.end()); });
+  survivors.combine_each([&](const Pairs& p) { cell_pairs.insert(cell_pairs.end(), p.begin(), p.end()); });
   std::sort(cell_pairs.begin(), cell_pairs.end());
   cell_pairs.erase(std::unique(cell_pairs.begin(), cell_pairs.end()), cell_pairs.end());
   r.contact_pairs = int64_t(cell_pairs.size());
 
-  // (2) Nesting: one interior point per connected component of the boundary (faces joined
-  // through shared point ids), tested against every cell whose closed box contains it.
-  UnionFind uf(mesh.num_points());
-  for (int32_t f : faces.boundary) {
-    const int32_t* v = faces.face_points(size_t(f));
-    for (int i = 1; i < faces.face_size(size_t(f)); ++i) uf.unite(v[0], v[i]);
-  }
+  // (2) One interior point per face-connected component of cells, tested against every
+  // cell whose closed box contains it.
+  UnionFind uf(mesh.num_cells());
+  for (size_t f = 0; f < faces.num_faces(); ++f)
+    if (faces.cell1[f] >= 0) uf.unite(faces.cell0[f], faces.cell1[f]);
   std::vector<int32_t> sample_cell;
-  {
-    std::vector<char> seen(mesh.num_points(), 0);
-    for (int32_t f : faces.boundary) {
-      const int32_t root = uf.find(faces.face_points(size_t(f))[0]);
-      if (!seen[root]) seen[root] = 1, sample_cell.push_back(faces.cell0[f]);
-    }
-  }
+  for (size_t c = 0; c < mesh.num_cells(); ++c)
+    if (uf.find(int32_t(c)) == int32_t(c)) sample_cell.push_back(int32_t(c));
   r.components = int64_t(sample_cell.size());
   std::vector<Vec3> sample(sample_cell.size());
   for (size_t i = 0; i < sample.size(); ++i)
@@ -489,27 +515,19 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
            b.zmin() <= p.z && p.z <= b.zmax();
   };
   if (sample.size() <= 16) {
-    tbb::combinable<Pairs> hits;
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, mesh.num_cells(), 1 << 14),
-                      [&](const tbb::blocked_range<size_t>& range) {
-                        Pairs& out = hits.local();
-                        for (size_t c = range.begin(); c < range.end(); ++c) {
-                          const CGAL::Bbox_3 bb = cell_box(mesh, c);
-                          for (size_t i = 0; i < sample.size(); ++i)
-                            if (contains(bb, sample[i])) out.emplace_back(int32_t(i), int32_t(c));
-                        }
-                      });
-    hits.combine_each([&](const Pairs& p) { nest_pairs.insert(nest_pairs.end(), p.begin(), p.end()); });
+    for (const IndexBox& c : cell_boxes)
+      for (size_t i = 0; i < sample.size(); ++i)
+        if (contains(c.bbox(), sample[i])) nest_pairs.emplace_back(int32_t(i), c.index);
   } else {
-    std::vector<IndexBox> points, cells;
-    for (size_t i = 0; i < sample.size(); ++i) points.emplace_back(point_box(sample[i]), int32_t(i));
-    cells.reserve(mesh.num_cells());
-    for (size_t c = 0; c < mesh.num_cells(); ++c) cells.emplace_back(cell_box(mesh, c), int32_t(c));
+    std::vector<IndexBox> points;
+    for (size_t i = 0; i < sample.size(); ++i)
+      points.emplace_back(point_box(sample[i]), int32_t(i), i);
+    for (IndexBox& c : cell_boxes) c.key = sample.size() + size_t(c.index);
     CGAL::box_intersection_d(
-        points.begin(), points.end(), cells.begin(), cells.end(),
+        points.begin(), points.end(), cell_boxes.begin(), cell_boxes.end(),
         [&](const IndexBox& p, const IndexBox& c) { nest_pairs.emplace_back(p.index, c.index); },
         CGAL::Box_intersection_d::Box_traits_d<IndexBox>(), std::ptrdiff_t(10),
-        CGAL::Box_intersection_d::CLOSED);
+        CGAL::Box_intersection_d::CLOSED, CGAL::Box_intersection_d::BIPARTITE);
   }
   for (const auto& [i, c] : nest_pairs) {
     const int32_t s = sample_cell[size_t(i)];
@@ -518,7 +536,7 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
     ++r.nesting_pairs;
   }
 
-  // Exact decisions: every contact pair and every nesting pair.
+  // Exact decisions: every pair of (1) and (2).
   std::sort(cell_pairs.begin(), cell_pairs.end());
   cell_pairs.erase(std::unique(cell_pairs.begin(), cell_pairs.end()), cell_pairs.end());
   tbb::combinable<Pairs> bad;

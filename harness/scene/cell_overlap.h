@@ -42,11 +42,11 @@ struct OverlapCertificate {
   enum Result { NotRun, Clean, Overlap, Undecided } result = NotRun;
   std::pair<int32_t, int32_t> witness{-1, -1};  // Overlap: the smallest interpenetrating pair found
   std::string why;                               // Undecided: the reason
-  int64_t boundary_triangles = 0;  // (1): boundary faces as triangles
-  int64_t triangle_pairs = 0;      //      their closed boxes intersecting (different cells)
-  int64_t contact_pairs = 0;       //      cell pairs whose boundary triangles intersect
-  int64_t components = 0;          // (2): connected components of the boundary
-  int64_t nesting_pairs = 0;       //      cells whose box holds a component's sample point
+  int64_t boundary_triangles = 0;   // (1): boundary faces as triangles
+  int64_t triangle_cell_pairs = 0;  //      (triangle, cell) whose closed boxes meet
+  int64_t contact_pairs = 0;        //      cell pairs left for the exact test
+  int64_t components = 0;           // (2): face-connected components of cells
+  int64_t nesting_pairs = 0;        //      cells whose box holds a component's sample point
   double seconds = 0;
 };
 
