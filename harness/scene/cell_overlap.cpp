@@ -1,7 +1,9 @@
 #include "harness/scene/cell_overlap.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -400,11 +402,13 @@ struct UnionFind {
 
 OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces& faces) {
   const auto t0 = Clock::now();
+  const std::clock_t cpu0 = std::clock();
   OverlapCertificate r;
   auto undecided = [&](std::string why) {
     r.result = OverlapCertificate::Undecided;
     r.why = std::move(why);
     r.seconds = since(t0);
+    r.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
     return r;
   };
   // The argument needs every cell to be the polyhedron its faces bound: planar quads.
@@ -471,25 +475,85 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
     }
     return true;
   };
-  using TriCell = std::pair<int32_t, int32_t>;
-  std::vector<TriCell> tri_cell;
-  CGAL::box_intersection_d(
-      tri_boxes.begin(), tri_boxes.end(), cell_boxes.begin(), cell_boxes.end(),
-      [&](const IndexBox& t, const IndexBox& c) { tri_cell.emplace_back(t.index, c.index); },
-      CGAL::Box_intersection_d::Box_traits_d<IndexBox>(), std::ptrdiff_t(10),
-      CGAL::Box_intersection_d::CLOSED, CGAL::Box_intersection_d::BIPARTITE);
-  r.triangle_cell_pairs = int64_t(tri_cell.size());
+  // The triangles' boxes in a uniform grid (about two grid cells per triangle); each mesh
+  // cell visits the grid cells its box covers. A (triangle, cell) pair is looked at in the
+  // grid cell holding the lower corner of the two boxes' intersection only.
+  CGAL::Bbox_3 all;
+  for (const IndexBox& b : tri_boxes) all += b.bbox();
+  const double ext[3] = {all.xmax() - all.xmin(), all.ymax() - all.ymin(), all.zmax() - all.zmin()};
+  const double lo[3] = {all.xmin(), all.ymin(), all.zmin()};
+  int dim[3] = {1, 1, 1};
+  double inv[3] = {0, 0, 0};
+  if (!tris.empty()) {
+    const double vol = std::max(ext[0], 1e-300) * std::max(ext[1], 1e-300) * std::max(ext[2], 1e-300);
+    const double side = std::cbrt(vol / (2.0 * double(tris.size())));
+    for (int k = 0; k < 3; ++k) {
+      dim[k] = int(std::clamp(ext[k] / side, 1.0, 1024.0));
+      inv[k] = ext[k] > 0 ? dim[k] / ext[k] : 0.0;
+    }
+  }
+  auto slot = [&](int k, double x) {
+    const double g = (x - lo[k]) * inv[k];
+    return g <= 0 ? 0 : std::min(dim[k] - 1, int(g));
+  };
+  const size_t nslots = size_t(dim[0]) * dim[1] * dim[2];
+  std::vector<int64_t> start(nslots + 1, 0);
+  std::vector<int32_t> grid;
+  for (int pass = 0; pass < 2; ++pass) {
+    std::vector<int64_t> fill;
+    if (pass == 1) {
+      for (size_t i = 0; i < nslots; ++i) start[i + 1] += start[i];
+      grid.resize(size_t(start[nslots]));
+      fill.assign(start.begin(), start.end() - 1);
+    }
+    for (size_t i = 0; i < tri_boxes.size(); ++i) {
+      const CGAL::Bbox_3& b = tri_boxes[i].bbox();
+      const int x0 = slot(0, b.xmin()), x1 = slot(0, b.xmax()), y0 = slot(1, b.ymin()),
+                y1 = slot(1, b.ymax()), z0 = slot(2, b.zmin()), z1 = slot(2, b.zmax());
+      for (int z = z0; z <= z1; ++z)
+        for (int y = y0; y <= y1; ++y)
+          for (int x = x0; x <= x1; ++x) {
+            const size_t g = size_t(x) + size_t(dim[0]) * (size_t(y) + size_t(dim[1]) * size_t(z));
+            if (pass == 0) ++start[g + 1];
+            else grid[size_t(fill[g]++)] = int32_t(i);
+          }
+    }
+  }
+  std::atomic<int64_t> looked{0};
   tbb::combinable<Pairs> survivors;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, tri_cell.size(), 4096),
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.empty() ? 0 : mesh.num_cells(), 1 << 12),
                     [&](const tbb::blocked_range<size_t>& range) {
                       Pairs& out = survivors.local();
-                      for (size_t i = range.begin(); i < range.end(); ++i) {
-                        const BoundaryTri& t = tris[size_t(tri_cell[i].first)];
-                        const int32_t a = tri_cell[i].second;
-                        if (needs_test(t, a)) out.emplace_back(std::min(t.cell, a), std::max(t.cell, a));
+                      int64_t n_looked = 0;
+                      for (size_t c = range.begin(); c < range.end(); ++c) {
+                        const CGAL::Bbox_3& cb = cell_boxes[c].bbox();
+                        if (!CGAL::do_overlap(cb, all)) continue;
+                        const int x0 = slot(0, cb.xmin()), x1 = slot(0, cb.xmax()),
+                                  y0 = slot(1, cb.ymin()), y1 = slot(1, cb.ymax()),
+                                  z0 = slot(2, cb.zmin()), z1 = slot(2, cb.zmax());
+                        for (int z = z0; z <= z1; ++z)
+                          for (int y = y0; y <= y1; ++y)
+                            for (int x = x0; x <= x1; ++x) {
+                              const size_t g = size_t(x) + size_t(dim[0]) * (size_t(y) + size_t(dim[1]) * size_t(z));
+                              for (int64_t j = start[g]; j < start[g + 1]; ++j) {
+                                const int32_t ti = grid[size_t(j)];
+                                const CGAL::Bbox_3& tb = tri_boxes[size_t(ti)].bbox();
+                                if (!CGAL::do_overlap(cb, tb)) continue;
+                                if (slot(0, std::max(cb.xmin(), tb.xmin())) != x ||
+                                    slot(1, std::max(cb.ymin(), tb.ymin())) != y ||
+                                    slot(2, std::max(cb.zmin(), tb.zmin())) != z)
+                                  continue;
+                                ++n_looked;
+                                const BoundaryTri& t = tris[size_t(ti)];
+                                const int32_t a = int32_t(c);
+                                if (needs_test(t, a))
+                                  out.emplace_back(std::min(t.cell, a), std::max(t.cell, a));
+                              }
+                            }
                       }
+                      looked += n_looked;
                     });
-  std::vector<TriCell>().swap(tri_cell);
+  r.triangle_cell_pairs = looked.load();
   Pairs cell_pairs;
   survivors.combine_each([&](const Pairs& p) { cell_pairs.insert(cell_pairs.end(), p.begin(), p.end()); });
   std::sort(cell_pairs.begin(), cell_pairs.end());
@@ -551,6 +615,7 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
   r.result = found.empty() ? OverlapCertificate::Clean : OverlapCertificate::Overlap;
   if (!found.empty()) r.witness = *std::min_element(found.begin(), found.end());
   r.seconds = since(t0);
+  r.cpu_seconds = double(std::clock() - cpu0) / CLOCKS_PER_SEC;
   return r;
 }
 

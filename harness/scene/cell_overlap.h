@@ -47,7 +47,8 @@ struct OverlapCertificate {
   int64_t contact_pairs = 0;        //      cell pairs left for the exact test
   int64_t components = 0;           // (2): face-connected components of cells
   int64_t nesting_pairs = 0;        //      cells whose box holds a component's sample point
-  double seconds = 0;
+  double seconds = 0;      // wall
+  double cpu_seconds = 0;  // the process's CPU time meanwhile (all threads)
 };
 
 // True: the mesh has no interpenetrating cells (proven); Overlap: it has (the witness);
