@@ -429,7 +429,7 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
     if (faces.face_size(size_t(f)) == 4) tris.push_back({{v[0], v[2], v[3]}, faces.cell0[f]});
   }
   r.boundary_triangles = int64_t(tris.size());
-  std::vector<IndexBox> tri_boxes, cell_boxes;
+  std::vector<IndexBox> tri_boxes;  // cells' boxes are computed where needed
   tri_boxes.reserve(tris.size());
   for (size_t i = 0; i < tris.size(); ++i) {
     CGAL::Bbox_3 bb = point_box(mesh.points[tris[i].v[0]]);
@@ -437,9 +437,6 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
     bb += point_box(mesh.points[tris[i].v[2]]);
     tri_boxes.emplace_back(bb, int32_t(i), i);
   }
-  cell_boxes.reserve(mesh.num_cells());
-  for (size_t c = 0; c < mesh.num_cells(); ++c)
-    cell_boxes.emplace_back(cell_box(mesh, c), int32_t(c), tris.size() + c);
 
   // A pair (t, a) needs the exact cell test unless t cannot meet the interior of a (nor the
   // relative interior of a face of a): a is t's owner or its face neighbour, or a lies on
@@ -526,7 +523,7 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
                       Pairs& out = survivors.local();
                       int64_t n_looked = 0;
                       for (size_t c = range.begin(); c < range.end(); ++c) {
-                        const CGAL::Bbox_3& cb = cell_boxes[c].bbox();
+                        const CGAL::Bbox_3 cb = cell_box(mesh, c);
                         if (!CGAL::do_overlap(cb, all)) continue;
                         const int x0 = slot(0, cb.xmin()), x1 = slot(0, cb.xmax()),
                                   y0 = slot(1, cb.ymin()), y1 = slot(1, cb.ymax()),
@@ -579,14 +576,19 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
            b.zmin() <= p.z && p.z <= b.zmax();
   };
   if (sample.size() <= 16) {
-    for (const IndexBox& c : cell_boxes)
+    for (size_t c = 0; c < mesh.num_cells(); ++c) {
+      const CGAL::Bbox_3 cb = cell_box(mesh, c);
       for (size_t i = 0; i < sample.size(); ++i)
-        if (contains(c.bbox(), sample[i])) nest_pairs.emplace_back(int32_t(i), c.index);
+        if (contains(cb, sample[i])) nest_pairs.emplace_back(int32_t(i), int32_t(c));
+    }
   } else {
     std::vector<IndexBox> points;
     for (size_t i = 0; i < sample.size(); ++i)
       points.emplace_back(point_box(sample[i]), int32_t(i), i);
-    for (IndexBox& c : cell_boxes) c.key = sample.size() + size_t(c.index);
+    std::vector<IndexBox> cell_boxes;
+    cell_boxes.reserve(mesh.num_cells());
+    for (size_t c = 0; c < mesh.num_cells(); ++c)
+      cell_boxes.emplace_back(cell_box(mesh, c), int32_t(c), sample.size() + c);
     CGAL::box_intersection_d(
         points.begin(), points.end(), cell_boxes.begin(), cell_boxes.end(),
         [&](const IndexBox& p, const IndexBox& c) { nest_pairs.emplace_back(p.index, c.index); },

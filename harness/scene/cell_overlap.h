@@ -19,9 +19,38 @@
 // coordinates) would overlap in the sliver between its two triangulations; they count as
 // neighbours when each lies strictly beyond the other's face triangles.
 //
-// Cost: the box stage gives ~44 candidates per cell on the helix (198M pairs for 4.5M
-// cells), every one decided exactly; about 100 s of CPU for 4.5M cells on this machine
-// (docs/design-notes.md), far from a 10 s aim.
+// That exhaustive search (find_overlapping_cells) is the reference. Its cost is the number
+// of candidates: ~44 per cell on the helix (198M pairs for 4.5M cells), every one decided
+// exactly, ~93-102 s of CPU on this machine (docs/design-notes.md).
+//
+// The default (check_overlapping_cells, `vobench validate`, `--validate full`) first runs
+// certify_cells_disjoint, which decides WHETHER any pair interpenetrates from the boundary
+// faces B (faces with one owner) and one point per face-connected component of cells:
+//  (1) every boundary triangle t (owner e) against every cell a whose closed box meets t's:
+//      the exact cell test decides (e, a) unless t cannot meet the interior of a nor the
+//      relative interior of a face of a (a is e or its face neighbour; a lies on the closed
+//      outer side of t's plane; t lies on the closed outer side of a face plane of a without
+//      lying in it);
+//  (2) per face-connected component C, a point p strictly inside one of its cells c (checked
+//      exactly) against every cell whose closed box contains p, decided by the exact test
+//      (a cell whose closed hull holds p overlaps c).
+// Why that is enough (planar faces; a non-planar quad leaves the answer to the exhaustive
+// search): let w(x) be the number of cells whose interior holds x. Cells are convex,
+// positively oriented and face neighbours see their face with opposite orientation, so off
+// the faces w is the winding number of B, constant on each component of R^3 minus B.
+// If (1) reports nothing, B misses every cell interior and every interior face's relative
+// interior: a point of t in the interior of a, or on a face of a with t crossing it, puts t
+// in the interior of a cell not skipped above; t lying in an interior face's plane puts e on
+// one side, overlapping the cell on that side. So the interiors of C's cells glued through
+// their shared faces form a connected set disjoint from B, on which w is constant; (2)
+// finds w(p) = 1, hence w = 1 on every cell of C, for every C: no two cells interpenetrate.
+// Sampling one point per connected component of B instead would not do: a block swallowing
+// a cavity of another has its faces inside the other's cells and the cavity wall inside its
+// own, and its cells' centroids can lie in the cavity (cell_overlap_test.cpp).
+// When the certificate finds an overlap (or does not apply), the exhaustive search runs so
+// that every pair is listed; `vobench validate --exhaustive` runs only the reference.
+// Cost on the 4.5M-cell helix: 295k boundary triangles, 13.5M (triangle, cell) box pairs,
+// 0.64M exact cell tests; see docs/design-notes.md for the timings.
 #pragma once
 #include <cstdint>
 #include <utility>
