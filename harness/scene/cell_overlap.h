@@ -50,7 +50,10 @@
 // When the certificate finds an overlap (or does not apply), the exhaustive search runs so
 // that every pair is listed; `vobench validate --exhaustive` runs only the reference.
 // Cost on the 4.5M-cell helix: 295k boundary triangles, 13.5M (triangle, cell) box pairs,
-// 0.64M exact cell tests; see docs/design-notes.md for the timings.
+// 0.64M exact cell tests, certified clean in 3.6-3.8 s of CPU against 93-102 s for the
+// exhaustive search: the 10 s aim is met by the search; the whole `vobench validate`
+// command (mesh generation, cell validation, faces) still takes 12-15 s user
+// (docs/design-notes.md).
 #pragma once
 #include <cstdint>
 #include <utility>
