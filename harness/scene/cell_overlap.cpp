@@ -438,10 +438,9 @@ OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces&
     tri_boxes.emplace_back(bb, int32_t(i), i);
   }
 
-  // A pair (t, a) needs the exact cell test unless t cannot meet the interior of a (nor the
-  // relative interior of a face of a): a is t's owner or its face neighbour, or a lies on
-  // the closed outer side of t's plane, or t on the closed outer side of a face plane of a
-  // without lying in it.
+  // A pair (t, a) needs the exact cell test unless a is t's owner or its face neighbour, or
+  // a plane keeps t out of a's interior: a lies on the closed outer side of t's plane, or t
+  // on the closed outer side of a face plane of a without lying in it (cell_overlap.h).
   auto needs_test = [&](const BoundaryTri& t, int32_t a) {
     const int32_t e = t.cell;
     if (a == e || face_neighbours(faces, e, a)) return false;

@@ -27,10 +27,9 @@
 // certify_cells_disjoint, which decides WHETHER any pair interpenetrates from the boundary
 // faces B (faces with one owner) and one point per face-connected component of cells:
 //  (1) every boundary triangle t (owner e) against every cell a whose closed box meets t's:
-//      the exact cell test decides (e, a) unless t cannot meet the interior of a nor the
-//      relative interior of a face of a (a is e or its face neighbour; a lies on the closed
-//      outer side of t's plane; t lies on the closed outer side of a face plane of a without
-//      lying in it);
+//      the exact cell test decides (e, a) unless a is e or its face neighbour, or a plane
+//      keeps t out of a's interior: a lies on the closed outer side of t's plane, or t on
+//      the closed outer side of a face plane of a without lying in it;
 //  (2) per face-connected component C, a point p strictly inside one of its cells c (checked
 //      exactly) against every cell whose closed box contains p, decided by the exact test
 //      (a cell whose closed hull holds p overlaps c).
@@ -39,9 +38,11 @@
 // positively oriented and face neighbours see their face with opposite orientation, so off
 // the faces w is the winding number of B, constant on each component of R^3 minus B.
 // If (1) reports nothing, B misses every cell interior and every interior face's relative
-// interior: a point of t in the interior of a, or on a face of a with t crossing it, puts t
-// in the interior of a cell not skipped above; t lying in an interior face's plane puts e on
-// one side, overlapping the cell on that side. So the interiors of C's cells glued through
+// interior: t meeting the interior of a is never skipped (a point x of it is strictly
+// inside every face plane of a, and a has vertices on both sides of t's plane), and e then
+// overlaps a; t through the relative interior of an interior face F reaches the interior of
+// one of F's cells; t lying on F in F's plane has e on one side, overlapping the cell on
+// that side, and that pair is not skipped either. So the interiors of C's cells glued through
 // their shared faces form a connected set disjoint from B, on which w is constant; (2)
 // finds w(p) = 1, hence w = 1 on every cell of C, for every C: no two cells interpenetrate.
 // Sampling one point per connected component of B instead would not do: a block swallowing
