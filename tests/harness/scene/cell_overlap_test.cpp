@@ -287,3 +287,28 @@ TEST(CellOverlapFast, AgreesOnTheGeneratedDatasets) {
   spec.input = std::string(VOB_TEST_DATA) + "/two_boxes.vtk";
   EXPECT_EQ(certify(make_scene(spec).mesh(), "two_boxes").result, OverlapCertificate::Overlap);
 }
+
+TEST(CellOverlapFast, AgreesOnRandomPlacementsOfTwoAndThreeBlocks) {
+  // Blocks of different sizes placed at random on a coarse lattice (so that contacts,
+  // coplanar faces and nesting all happen) and at random off it.
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<int> lattice(-4, 8);
+  std::uniform_real_distribution<double> off(-1.0, 3.0);
+  int overlapping = 0, clean = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    CellMesh m = tet_block(3, 1.0, trial % 3 == 0 ? 0.2 : 0.0, uint32_t(trial + 1));
+    const int parts = 1 + trial % 2;
+    for (int p = 0; p < parts; ++p) {
+      const int kind = (trial / 2 + p) % 3;
+      const CellMesh b = kind == 0 ? tet_block(1, 0.5) : kind == 1 ? tet_block(2, 0.75) : hex_block(1, 0.5);
+      const Vec3 at = trial % 4 < 2 ? Vec3{lattice(rng) * 0.25, lattice(rng) * 0.25, lattice(rng) * 0.25}
+                                    : Vec3{off(rng), off(rng), off(rng)};
+      m = appended(m, translated(b, at));
+    }
+    const OverlapCertificate c = certify(m, "trial " + std::to_string(trial));
+    EXPECT_NE(c.result, OverlapCertificate::Undecided);
+    (c.result == OverlapCertificate::Overlap ? overlapping : clean) += 1;
+  }
+  EXPECT_GT(overlapping, 20);
+  EXPECT_GT(clean, 10);
+}
