@@ -92,7 +92,7 @@ std::string source_name(const DatasetSpec& spec) {
 Scene SceneArgs::load(const DatasetSpec& spec) const {
   Scene scene = make_scene(spec);
   if (validate == "full" && scene.kind() == SceneKind::Cells) {
-    const CellOverlapReport r = find_overlapping_cells(scene.mesh());
+    const CellOverlapReport r = check_overlapping_cells(scene.mesh(), scene.faces());
     if (!r.pairs.empty()) throw InputError(describe_overlap(source_name(spec), r));
   }
   return scene;

@@ -19,31 +19,97 @@
 // coordinates) would overlap in the sliver between its two triangulations; they count as
 // neighbours when each lies strictly beyond the other's face triangles.
 //
-// Cost: the box stage gives ~44 candidates per cell on the helix (198M pairs for 4.5M
-// cells), every one decided exactly; about 100 s of CPU for 4.5M cells on this machine
-// (docs/design-notes.md), far from a 10 s aim.
+// That exhaustive search (find_overlapping_cells) is the reference. Its cost is the number
+// of candidates: ~44 per cell on the helix (198M pairs for 4.5M cells), every one decided
+// exactly, ~93-102 s of CPU on this machine (docs/design-notes.md).
+//
+// The default (check_overlapping_cells, `vobench validate`, `--validate full`) first runs
+// certify_cells_disjoint, which decides WHETHER any pair interpenetrates from the boundary
+// faces B (faces with one owner) and one point per face-connected component of cells:
+//  (1) every boundary triangle t (owner e) against every cell a whose closed box meets t's:
+//      the exact cell test decides (e, a) unless a is e or its face neighbour, or a plane
+//      keeps t out of a's interior: a lies on the closed outer side of t's plane, or t on
+//      the closed outer side of a face plane of a without lying in it;
+//  (2) per face-connected component C, a point p strictly inside one of its cells c (checked
+//      exactly) against every cell whose closed box contains p, decided by the exact test
+//      (a cell whose closed hull holds p overlaps c).
+// Why that is enough (planar faces; a non-planar quad leaves the answer to the exhaustive
+// search): let w(x) be the number of cells whose interior holds x. Cells are convex,
+// positively oriented and face neighbours see their face with opposite orientation, so off
+// the faces w is the winding number of B, constant on each component of R^3 minus B.
+// If (1) reports nothing, B misses every cell interior and every interior face's relative
+// interior: t meeting the interior of a is never skipped (a point x of it is strictly
+// inside every face plane of a, and a has vertices on both sides of t's plane), and e then
+// overlaps a; t through the relative interior of an interior face F reaches the interior of
+// one of F's cells; t lying on F in F's plane has e on one side, overlapping the cell on
+// that side, and that pair is not skipped either. So the interiors of C's cells glued through
+// their shared faces form a connected set disjoint from B, on which w is constant; (2)
+// finds w(p) = 1, hence w = 1 on every cell of C, for every C: no two cells interpenetrate.
+// Sampling one point per connected component of B instead would not do: a block swallowing
+// a cavity of another has its faces inside the other's cells and the cavity wall inside its
+// own, and its cells' centroids can lie in the cavity (cell_overlap_test.cpp).
+// When the certificate finds an overlap (or does not apply), the exhaustive search runs so
+// that every pair is listed; `vobench validate --exhaustive` runs only the reference.
+// Cost on the 4.5M-cell helix: 295k boundary triangles, 13.5M (triangle, cell) box pairs,
+// 0.64M exact cell tests, certified clean in 3.6-3.8 s of CPU against 93-102 s for the
+// exhaustive search: the 10 s aim is met by the search; the whole `vobench validate`
+// command (mesh generation, cell validation, faces) still takes 12-15 s user
+// (docs/design-notes.md).
 #pragma once
 #include <cstdint>
 #include <utility>
 #include <vector>
 
+#include <string>
+
 #include "harness/scene/cell_mesh.h"
+#include "harness/scene/mesh_faces.h"
 
 namespace vob {
 
 // True when the interiors of cells a and b intersect (a != b).
 bool cells_interpenetrate(const CellMesh& mesh, int32_t a, int32_t b);
 
+// The fast path's verdict (see the comment at the top).
+struct OverlapCertificate {
+  enum Result { NotRun, Clean, Overlap, Undecided } result = NotRun;
+  std::pair<int32_t, int32_t> witness{-1, -1};  // Overlap: the smallest interpenetrating pair found
+  std::string why;                               // Undecided: the reason
+  int64_t boundary_triangles = 0;   // (1): boundary faces as triangles
+  int64_t triangle_cell_pairs = 0;  //      (triangle, cell) whose closed boxes meet
+  int64_t contact_pairs = 0;        //      cell pairs left for the exact test
+  int64_t components = 0;           // (2): face-connected components of cells
+  int64_t nesting_pairs = 0;        //      cells whose box holds a component's sample point
+  double seconds = 0;      // wall
+  double cpu_seconds = 0;  // the process's CPU time meanwhile (all threads)
+};
+
+// True: the mesh has no interpenetrating cells (proven); Overlap: it has (the witness);
+// Undecided: the argument does not apply (a non-planar quad). `faces` are the mesh's faces
+// (build_mesh_faces), whose checks the argument relies on.
+OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces& faces);
+
 struct CellOverlapReport {
   std::vector<std::pair<int32_t, int32_t>> pairs;  // (smaller id, larger id), sorted
   int64_t candidates = 0;                           // box pairs decided exactly
   double box_seconds = 0;                           // box intersection, including the
   double total_seconds = 0;                         // exact tests it overlaps with
+  std::string method = "exhaustive";  // or "boundary": certified clean, nothing to list
+  OverlapCertificate certificate;     // the fast path's, when it ran
 };
 
 // Every interpenetrating pair of the mesh. The box enumeration runs on one thread and hands
 // batches of candidates to TBB for the exact tests, which run while it continues.
+// This is the reference (exhaustive) search.
 CellOverlapReport find_overlapping_cells(const CellMesh& mesh);
+
+enum class OverlapSearch { Fast, Exhaustive };
+
+// Fast: certify_cells_disjoint, and only when it does not certify a clean mesh (an overlap
+// exists, or it is undecided) the exhaustive search, so that every pair is listed.
+// Exhaustive: find_overlapping_cells. Either way `pairs` is complete.
+CellOverlapReport check_overlapping_cells(const CellMesh& mesh, const MeshFaces& faces,
+                                          OverlapSearch search = OverlapSearch::Fast);
 
 // One line naming the first pair, e.g. "source: cells 12 and 4071 overlap (...)" - the
 // InputError message of `--validate full`; throws nothing.

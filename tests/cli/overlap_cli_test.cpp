@@ -92,10 +92,27 @@ TEST(CliOverlap, ValidateListsThePairsAndExitsTwo) {
 }
 
 TEST(CliOverlap, ValidateOfAValidMeshIsClean) {
-  const Outcome r = vobench("validate --dataset gap --set nx=4 --set ny=4 --set nz=6 --set gaps=2");
-  EXPECT_EQ(r.code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find(", 0 interpenetrating pairs"), std::string::npos) << r.out;
-  EXPECT_TRUE(r.err.empty()) << r.err;
+  for (const char* how : {"", "--exhaustive "}) {
+    const Outcome r =
+        vobench(std::string("validate ") + how + "--dataset gap --set nx=4 --set ny=4 --set nz=6 --set gaps=2");
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find(", 0 interpenetrating pairs"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(*how ? "exhaustive search" : "certified by the boundary check"), std::string::npos)
+        << r.out;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+  }
+}
+
+TEST(CliOverlap, ValidateListsEveryPairWhenTheBoundaryCheckFindsOne) {
+  const Outcome fast = vobench("validate --json " + kGmsh);
+  const Outcome full = vobench("validate --json --exhaustive " + kGmsh);
+  EXPECT_EQ(fast.code, 2);
+  EXPECT_EQ(full.code, 2);
+  const auto f = nlohmann::json::parse(fast.out), e = nlohmann::json::parse(full.out);
+  EXPECT_EQ(f["certificate"]["result"], "overlap");
+  EXPECT_EQ(f["method"], "exhaustive");
+  EXPECT_FALSE(e.contains("certificate"));
+  EXPECT_EQ(f["pairs"], e["pairs"]);
 }
 
 TEST(CliOverlap, ValidateFullOptionRefusesBeforeOrdering) {

@@ -2,9 +2,13 @@
 // (however small) is; the box stage finds what a brute-force all-pairs test finds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 
+#include "harness/bench/suite.h"
 #include "harness/scene/cell_overlap.h"
+#include "harness/scene/mesh_faces.h"
 #include "tests/harness/scene/overlap_meshes.h"
 
 using namespace vob;
@@ -130,4 +134,181 @@ TEST(CellOverlap, HexahedraSharingANonPlanarQuadAreNeighbours) {
   EXPECT_FALSE(overlap(appended(lower, upper)));
   EXPECT_TRUE(overlap(appended(lower, translated(upper, {0, 0, -0.01}))));
   EXPECT_TRUE(overlap(appended(lower, lower)));
+}
+
+// The fast path (certify_cells_disjoint: boundary triangles against the cells they meet,
+// one nesting sample per face-connected component) against the exhaustive search.
+namespace {
+
+OverlapCertificate certify(const CellMesh& m, const std::string& what) {
+  validate_cell_mesh(m, what);
+  const MeshFaces faces = build_mesh_faces(m, what);
+  const OverlapCertificate c = certify_cells_disjoint(m, faces);
+  const CellOverlapReport full = find_overlapping_cells(m);
+  if (c.result == OverlapCertificate::Undecided) {
+    EXPECT_FALSE(c.why.empty()) << what;
+  } else {
+    EXPECT_EQ(c.result == OverlapCertificate::Overlap, !full.pairs.empty()) << what;
+  }
+  if (c.result == OverlapCertificate::Overlap) {
+    EXPECT_TRUE(cells_interpenetrate(m, c.witness.first, c.witness.second)) << what;
+    EXPECT_TRUE(std::binary_search(full.pairs.begin(), full.pairs.end(), c.witness)) << what;
+  }
+  // The default search lists exactly what the exhaustive one lists.
+  const CellOverlapReport r = check_overlapping_cells(m, faces);
+  EXPECT_EQ(r.pairs, full.pairs) << what;
+  EXPECT_EQ(r.method, c.result == OverlapCertificate::Clean ? "boundary" : "exhaustive") << what;
+  return c;
+}
+
+CellMesh dataset(const std::string& name, std::map<std::string, std::string> set = {}) {
+  DatasetSpec spec;
+  spec.name = name;
+  spec.set = std::move(set);
+  return make_scene(spec).mesh();
+}
+
+}  // namespace
+
+TEST(CellOverlapFast, AgreesWithTheExhaustiveSearchOnTheTestMeshes) {
+  const Vec3 c{0.1, 0.1, 0.1}, in = Vec3{-1, -1, -1} * 1e-12, up{0, 0, 1e-15};
+  const Vec3 a0{-1, 0, 0}, a1{1, 0, 0}, a2{0, 1, -1}, a3{0, -1, -1};
+  const Vec3 b0{0, -1, 0}, b1{0, 1, 0}, b2{1, 0, 1}, b3{-1, 0, 1}, down{0, 0, -1e-13};
+  const std::vector<std::pair<CellMesh, bool>> cases = {
+      {tet_pair(O, X, Y, Z, X, Y, Z, {1, 1, 1}), false},
+      {tet_pair(O, X, Y, Z, X, Y, {1, 1, 0}, {1, 1, -1}), false},
+      {tet_pair(O, X, Y, Z, O, -X, -Y, -Z), false},
+      {tet_pair(O, X, Y, Z, {0.3, 0.2, 0}, {1.3, 0.2, 0}, {0.3, 1.2, 0}, {0.3, 0.2, -1}), false},
+      {tet_pair(a0, a1, a2, a3, b0, b1, b2, b3), false},
+      {tet_pair(a0, a1, a2, a3, b0 + down, b1 + down, b2 + down, b3 + down), true},
+      {tet_pair(O, X, Y, Z, X + in, Y + in, Z + in, Vec3{1, 1, 1} + in), true},
+      {tet_pair(O, X, Y, Z, X - in, Y - in, Z - in, Vec3{1, 1, 1} - in), false},
+      {tet_pair(O, X, Y, Z, {std::nextafter(1.0, 0.0), 0, 0}, Y, Z, {1, 1, 1}), true},
+      {tet_pair(O, X, Y, Z, Vec3{0.3, 0.2, 0} + up, Vec3{1.3, 0.2, 0} + up, Vec3{0.3, 1.2, 0} + up,
+                Vec3{0.3, 0.2, -1} + up),
+       true},
+      {tet_pair(O, X, Y, Z, O, X, Y, Z), true},
+      // Contained: no boundary contact at all, caught by the nesting sample.
+      {tet_pair(O, X, Y, Z, c, c + X * 0.1, c + Y * 0.1, c + Z * 0.1), true},
+      {tet_pair(O, X, Y, Z, O + X * 2, X * 3, X * 2 + Y, X * 2 + Z), false},
+      {tet_block(3), false},
+      {tet_block(4, 1.0, 0.2, 7), false},
+      {hex_block(3), false},
+      {appended(tet_block(2), translated(tet_block(2), {2, 0, 0})), false},
+      {appended(tet_block(2), translated(tet_block(4, 0.5), {2, 0, 0})), false},
+      {appended(hex_block(2), translated(hex_block(2), {0, 0, 2})), false},
+      {interpenetrating_blocks(2), true},
+  };
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const OverlapCertificate cert = certify(cases[i].first, "case " + std::to_string(i));
+    EXPECT_EQ(cert.result, cases[i].second ? OverlapCertificate::Overlap : OverlapCertificate::Clean)
+        << "case " << i;
+  }
+}
+
+TEST(CellOverlapFast, BentQuadsAreLeftToTheExhaustiveSearch) {
+  CellMesh lower;
+  lower.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1.05}, {0, 1, 1}};
+  lower.add_cell(CellType::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  const OverlapCertificate c = certify(appended(lower, lower), "bent");
+  EXPECT_EQ(c.result, OverlapCertificate::Undecided);
+  EXPECT_EQ(check_overlapping_cells(appended(lower, lower), build_mesh_faces(appended(lower, lower), "bent"))
+                .pairs.size(),
+            1u);
+}
+
+TEST(CellOverlapFast, ABlockNestedInsideAnotherWithoutContactIsCaught) {
+  // A 2^3 block of side 1 inside a 4^3 block of side 4, away from its boundary and off its
+  // grid planes: no boundary face of one meets a boundary face of the other.
+  const CellMesh big = tet_block(4);
+  const CellMesh m = appended(big, translated(tet_block(2, 0.5), {1.3, 1.2, 1.1}));
+  const OverlapCertificate c = certify(m, "nested");
+  EXPECT_EQ(c.result, OverlapCertificate::Overlap);
+  EXPECT_EQ(c.components, 2);
+  EXPECT_GT(c.nesting_pairs, 0);
+  EXPECT_LT(c.witness.first, int32_t(big.num_cells()));
+  EXPECT_GE(c.witness.second, int32_t(big.num_cells()));
+  // A block inside the other's cavity would be clean: a shell of hexahedra around a hole.
+  const CellMesh cube = hex_block(3);
+  CellMesh shell;
+  shell.points = cube.points;
+  for (size_t h = 0; h < cube.num_cells(); ++h)
+    if (h != 13) shell.add_cell(cube.types[h], cube.cell_points(h));  // 13: the cavity
+  const CellMesh in_cavity = appended(shell, translated(tet_block(1, 0.5), {1.25, 1.25, 1.25}));
+  EXPECT_EQ(certify(in_cavity, "cavity").result, OverlapCertificate::Clean);
+  EXPECT_EQ(certify(in_cavity, "cavity").components, 2);  // the shell, the inner block
+  // A block that swallows the cavity, its boundary inside the shell's cells and the
+  // cavity's wall inside its cells: no boundary face meets another, and every cell's
+  // centroid but the shell's near the cavity is covered once. Sampling one centroid per
+  // boundary component would miss it; boundary faces inside cells do not.
+  const CellMesh too_big = appended(shell, translated(tet_block(1, 1.2), {0.9, 0.9, 0.9}));
+  EXPECT_EQ(certify(too_big, "cavity").result, OverlapCertificate::Overlap);
+}
+
+TEST(CellOverlapFast, CrossingTouchingAndDuplicatedBlocks) {
+  // Crossing: caught through the boundary contacts.
+  const OverlapCertificate crossing = certify(
+      appended(tet_block(3), translated(tet_block(3, 1.0, 0.2, 5), {1.5, 0.5, -1.25})), "crossing");
+  EXPECT_EQ(crossing.result, OverlapCertificate::Overlap);
+  // Touching, face to face with duplicated nodes, conforming or not: clean.
+  EXPECT_EQ(certify(appended(tet_block(3), translated(tet_block(3), {0, 0, 3})), "touching").result,
+            OverlapCertificate::Clean);
+  EXPECT_EQ(certify(appended(tet_block(3), translated(tet_block(2, 1.5), {0.75, 0, 3})), "shifted").result,
+            OverlapCertificate::Clean);
+  // A whole mesh twice: every boundary face lies on its copy, facing the same way.
+  for (const CellMesh& m : {tet_block(3), tet_block(3, 1.0, 0.25, 9), hex_block(2)})
+    EXPECT_EQ(certify(appended(m, m), "duplicate").result, OverlapCertificate::Overlap);
+}
+
+TEST(CellOverlapFast, AgreesOnTheGeneratedDatasets) {
+  const std::vector<std::pair<std::string, std::map<std::string, std::string>>> sets = {
+      {"gap", {{"nx", "4"}, {"ny", "4"}, {"nz", "6"}, {"gaps", "2"}}},
+      {"helix", {{"cells", "3000"}}},
+      {"zoo", {}},
+      {"offset", {}},
+      {"slivers", {}},
+      {"cycle", {}},
+      {"cycle-sticks", {}},
+      {"tiny", {}},
+      {"touching-conforming", {}},
+      {"touching-shifted", {}},
+      {"touching-rotated", {}},
+      {"touching-overhang", {}},
+      {"touching-edge", {}},
+      {"touching-hex", {}},
+  };
+  for (const auto& [name, set] : sets) {
+    const CellMesh m = dataset(name, set);
+    const OverlapCertificate c = certify(m, name);
+    EXPECT_NE(c.result, OverlapCertificate::Overlap) << name;  // all are valid meshes
+  }
+  // The gmsh file of two boxes meshed separately over the same space.
+  DatasetSpec spec;
+  spec.input = std::string(VOB_TEST_DATA) + "/two_boxes.vtk";
+  EXPECT_EQ(certify(make_scene(spec).mesh(), "two_boxes").result, OverlapCertificate::Overlap);
+}
+
+TEST(CellOverlapFast, AgreesOnRandomPlacementsOfTwoAndThreeBlocks) {
+  // Blocks of different sizes placed at random on a coarse lattice (so that contacts,
+  // coplanar faces and nesting all happen) and at random off it.
+  std::mt19937 rng(12345);
+  std::uniform_int_distribution<int> lattice(-4, 8);
+  std::uniform_real_distribution<double> off(-1.0, 3.0);
+  int overlapping = 0, clean = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    CellMesh m = tet_block(3, 1.0, trial % 3 == 0 ? 0.2 : 0.0, uint32_t(trial + 1));
+    const int parts = 1 + trial % 2;
+    for (int p = 0; p < parts; ++p) {
+      const int kind = (trial / 2 + p) % 3;
+      const CellMesh b = kind == 0 ? tet_block(1, 0.5) : kind == 1 ? tet_block(2, 0.75) : hex_block(1, 0.5);
+      const Vec3 at = trial % 4 < 2 ? Vec3{lattice(rng) * 0.25, lattice(rng) * 0.25, lattice(rng) * 0.25}
+                                    : Vec3{off(rng), off(rng), off(rng)};
+      m = appended(m, translated(b, at));
+    }
+    const OverlapCertificate c = certify(m, "trial " + std::to_string(trial));
+    EXPECT_NE(c.result, OverlapCertificate::Undecided);
+    (c.result == OverlapCertificate::Overlap ? overlapping : clean) += 1;
+  }
+  EXPECT_GT(overlapping, 20);
+  EXPECT_GT(clean, 10);
 }
