@@ -1,9 +1,18 @@
-// A results file: one JSON record per line (JSONL). append() keeps a record in memory;
-// flush() rewrites the whole file atomically (temporary file, then rename), so an
-// interrupted run leaves the records flushed so far and nothing half-written; a rerun skips
-// records whose "key" is already present. The runner flushes after every (algorithm,
-// dataset) pair; the destructor flushes what is left.
+// A results file: one JSON record per line (JSONL), shared safely by every process that
+// writes it. Each record reaches the file when it is appended, as one write() of a whole
+// line at the end of the file under an exclusive flock(2) on the file, followed by
+// fdatasync. Lines already in the file are never rewritten, so a run that is interrupted or
+// killed loses at most the record it was computing, and two runs writing one file keep both
+// runs' records. Under the same lock the lines other processes appended since the last look
+// are read first, so a key is never written twice.
+//
+// A last line without its newline can only be left by a writer that died mid-write (every
+// write holds the lock). The next look, under the lock, repairs it and prints one note line:
+// a whole JSON record just gets its newline back; anything else is cut off. A malformed
+// line that ends in a newline is bad input (InputError), never repaired.
 #pragma once
+#include <sys/types.h>
+
 #include <set>
 #include <string>
 #include <vector>
@@ -14,22 +23,39 @@ namespace vob {
 
 class ResultsFile {
  public:
-  explicit ResultsFile(std::string path);  // loads existing records; bad lines: InputError
+  // Opens or creates the file (mode 0666 & ~umask, parent folders created) and reads its
+  // keys. InputError (one line) when the file or its folder cannot be created or written,
+  // or when a line is not a JSON record.
+  explicit ResultsFile(std::string path);
   ~ResultsFile();
   ResultsFile(const ResultsFile&) = delete;
   ResultsFile& operator=(const ResultsFile&) = delete;
-  bool has(const std::string& key) const { return keys_.count(key) > 0; }
-  void append(const nlohmann::json& record);  // record must carry a string "key"
-  void flush();
-  size_t size() const { return lines_.size(); }
+
+  // Whether a record with this key is in the file, including records other processes
+  // appended since the last look.
+  bool has(const std::string& key);
+  // Appends the record (it must carry a string "key") unless a record with its key is in
+  // the file already; returns whether it was written.
+  bool append(const nlohmann::json& record);
+  // Records in the file as of the last look.
+  size_t size() const { return records_; }
   const std::string& path() const { return path_; }
+
+  // Every record of a results file, in file order. InputError for a line that is not JSON.
   static std::vector<nlohmann::json> read_all(const std::string& path);
 
  private:
+  class Lock;
+  void open_file();
+  void forget_contents();
+  void read_new_lines();  // with the lock held
+
   std::string path_;
-  std::vector<std::string> lines_;
+  int fd_ = -1;
+  off_t read_to_ = 0;     // bytes looked at so far, always just after a newline
+  size_t lines_ = 0;      // lines looked at so far (for line numbers in messages)
+  size_t records_ = 0;
   std::set<std::string> keys_;
-  bool dirty_ = false;
 };
 
 }  // namespace vob

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "datasets/datasets.h"
+#include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
 #include "harness/bench/registry.h"
 #include "harness/bench/results.h"
@@ -197,12 +198,15 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
   const std::string image_dir =
       !opt.image_dir.empty() ? opt.image_dir
                              : (fs::path(opt.results_path).parent_path() / "images").string();
+  if (!suite.image_views.empty() || suite.images_of_violations) require_writable_folder(image_dir);
   const nlohmann::json context = run_context();
   auto say = [&](const std::string& s) {
     if (opt.progress) opt.progress(s);
   };
+  auto stop = [&] { return summary.stopped = opt.stop_requested && opt.stop_requested(); };
   for (size_t di = 0; di < suite.datasets.size(); ++di) {
     const DatasetSpec& ds = suite.datasets[di];
+    if (stop()) return summary;
     const auto t0 = std::chrono::steady_clock::now();
     const Scene scene = make_scene(ds);
     const nlohmann::json facts = scene_facts(scene);
@@ -221,6 +225,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
                                   size_text(w, h) + "|s" + std::to_string(suite.supersample) +
                                   (suite.ortho ? "|ortho" : "") +
                                   (suite.zoom != 1.0 ? "|zoom" + std::to_string(suite.zoom) : "");
+          if (stop()) return summary;
           if (results.has(key)) {
             ++summary.skipped;
             continue;
@@ -305,18 +310,20 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
             }
           }
           rec["context"] = context;
-          results.append(rec);
-          ++summary.written;
           std::ostringstream line;
-          line << "  " << spec << " on " << ds.label() << " view " << vi << " " << size_text(w, h)
-               << ": " << m.total_median() * 1e3 << " ms/frame" << verdict;
+          line << "  " << spec << " on " << ds.label() << " view " << vi << " " << size_text(w, h) << ": ";
+          if (results.append(rec)) {
+            ++summary.written;
+            line << m.total_median() * 1e3 << " ms/frame" << verdict;
+          } else {
+            ++summary.written_elsewhere;
+            line << "another run wrote this record meanwhile; kept theirs";
+          }
           say(line.str());
         }
       }
-      results.flush();
     }
   }
-  results.flush();
   return summary;
 }
 

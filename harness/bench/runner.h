@@ -50,10 +50,18 @@ struct RunOptions {
   std::string results_path;
   std::string image_dir;  // where image_views' PNGs go (empty: beside the results)
   std::function<void(const std::string&)> progress;  // one line per record
+  std::function<bool()> stop_requested;  // asked between records: true ends the run early
 };
 struct RunSummary {
-  int written = 0, skipped = 0, violations = 0;
+  int written = 0;             // records this run appended
+  int skipped = 0;             // keys already in the file
+  int written_elsewhere = 0;   // computed here, but another process appended the key first
+  int violations = 0;
+  bool stopped = false;        // ended early on stop_requested
 };
+// Every record is appended to the results file as soon as it is finished (see
+// harness/bench/results.h). An unwritable results file or image folder is reported
+// (InputError) before any scene is made.
 RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt);
 
 // Facts of a scene independent of any orderer: n, and for cells b and the cell-type counts.

@@ -1,9 +1,11 @@
 // vobench reproduce NAME: run one experiment into reports/out/NAME (or -o DIR).
 #include <filesystem>
+#include <csignal>
 #include <iostream>
 
 #include "harness/cli/commands.h"
 #include "harness/cli/experiments.h"
+#include "harness/cli/stop_signals.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -14,7 +16,9 @@ Command add_reproduce_command(CLI::App& app) {
   auto ctx = std::make_shared<ExperimentContext>();
   cmd->add_option("name", *name, "experiment")->required();
   cmd->add_option("-o,--output", ctx->out_dir, "output folder (default reports/out/NAME)");
-  cmd->add_flag("--resume", ctx->resume, "keep records already in the results file");
+  cmd->add_flag("--force", ctx->force,
+                "start afresh: drop the records (and images) of an earlier run in the output folder; "
+                "without it a rerun keeps them and computes only what is missing");
   cmd->add_flag("--full", ctx->full, "the paper's full sizes where they are opt-in");
   return [=]() {
     for (const auto& e : experiment_registry())
@@ -26,6 +30,8 @@ Command add_reproduce_command(CLI::App& app) {
           throw InputError("--output", "'" + c.out_dir + "'", "exists and is not a folder");
         const int status = e.run(c);
         if (status == 0) std::cerr << "reproduce " << *name << ": wrote " << c.out_dir << "/" << *name << ".md\n";
+        // Stopped by SIGINT or SIGTERM: the shell's 128 + signal (see stop_signals.h).
+        if (status == StopSignals::exit_code(SIGINT) || status == StopSignals::exit_code(SIGTERM)) return status;
         return status == 0 ? 0 : 2;
       }
     std::string all;

@@ -1,10 +1,13 @@
-// vobench run: run a suite and append its records to a results file (JSONL).
+// vobench run: run a suite and append its records to a results file (JSONL). Each record
+// is on disk as soon as it is finished; SIGINT or SIGTERM stop the run after the record in
+// progress (exit 130 or 143), and running the same command again resumes it.
 #include <filesystem>
 #include <iostream>
 
 #include "harness/bench/runner.h"
 #include "harness/cli/commands.h"
 #include "harness/scene/input_error.h"
+#include "harness/cli/stop_signals.h"
 
 namespace vob {
 
@@ -13,19 +16,29 @@ Command add_run_command(CLI::App& app) {
   auto suite = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   cmd->add_option("suite", *suite, "suite JSON")->required();
-  cmd->add_option("-o,--output", *out, "results file (JSONL); existing records are skipped")->required();
+  cmd->add_option("-o,--output", *out,
+                  "results file (JSONL); records already in it are skipped, new ones appended")
+      ->required();
   return [=]() {
     const SuiteSpec s = SuiteSpec::load(*suite);
     std::error_code ec;
     if (std::filesystem::exists(*out, ec) && !std::filesystem::is_regular_file(*out, ec))
       throw InputError("--output", "'" + *out + "'", "exists and is not a results file");
+    const StopSignals signals;
     RunOptions opt;
     opt.results_path = *out;
     opt.progress = [](const std::string& line) { std::cerr << line << std::endl; };
+    opt.stop_requested = [] { return StopSignals::received() != 0; };
     const RunSummary r = run_suite(s, opt);
     std::cerr << "run " << s.name << ": " << r.written << " records written, " << r.skipped
-              << " already present, " << r.violations << " with oracle violations -> " << *out << "\n";
-    return 0;
+              << " already present, ";
+    if (r.written_elsewhere) std::cerr << r.written_elsewhere << " written meanwhile by another run, ";
+    std::cerr << r.violations << " with oracle violations -> " << *out << "\n";
+    if (!r.stopped) return 0;
+    const int sig = StopSignals::received();
+    std::cerr << "run " << s.name << ": stopped by " << StopSignals::name(sig) << " with "
+              << r.written << " records written; run the same command again to resume\n";
+    return StopSignals::exit_code(sig);
   };
 }
 

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <iostream>
 
+#include "harness/bench/atomic_file.h"
 #include "harness/bench/runner.h"
+#include "harness/cli/stop_signals.h"
 #include "harness/scene/input_error.h"
 
 extern char** environ;
@@ -39,14 +41,18 @@ int run_suite_experiment(const std::vector<std::string>& suite_files, const std:
   std::vector<SuiteSpec> suites;  // all parsed before anything runs: a bad file fails fast
   for (const auto& f : suite_files)
     suites.push_back(SuiteSpec::load(std::string(VOB_SOURCE_DIR) + "/datasets/suites/" + f));
-  fs::create_directories(ctx.out_dir);
+  require_writable_folder(ctx.out_dir);
   const std::string results = (fs::path(ctx.out_dir) / "results.jsonl").string();
-  if (!ctx.resume) {
-    fs::remove(results);
-    fs::remove_all(fs::path(ctx.out_dir) / "images");
+  if (ctx.force) {
+    std::error_code ec;
+    fs::remove(results, ec);
+    if (!ec) fs::remove_all(fs::path(ctx.out_dir) / "images", ec);
+    if (ec) throw InputError(ctx.out_dir, "folder", "cannot be cleared (--force): " + ec.message());
   }
+  const StopSignals signals;
   RunOptions opt;
   opt.results_path = results;
+  opt.stop_requested = [] { return StopSignals::received() != 0; };
   const auto t0 = std::chrono::steady_clock::now();
   opt.progress = [t0](const std::string& line) {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -55,8 +61,15 @@ int run_suite_experiment(const std::vector<std::string>& suite_files, const std:
   for (const SuiteSpec& suite : suites) {
     std::fprintf(stderr, "suite %s\n", suite.name.c_str());
     const RunSummary r = run_suite(suite, opt);
-    std::cerr << suite.name << ": " << r.written << " records written, " << r.skipped << " kept, "
-              << r.violations << " with oracle violations\n";
+    std::cerr << suite.name << ": " << r.written << " records written, " << r.skipped << " kept, ";
+    if (r.written_elsewhere) std::cerr << r.written_elsewhere << " written meanwhile by another run, ";
+    std::cerr << r.violations << " with oracle violations\n";
+    if (r.stopped) {
+      const int sig = StopSignals::received();
+      std::cerr << name << ": stopped by " << StopSignals::name(sig) << "; every finished record is in "
+                << results << ": run the same command again to resume\n";
+      return StopSignals::exit_code(sig);
+    }
   }
   return run_report({results}, ctx.out_dir, title, name);
 }

@@ -10,7 +10,7 @@ namespace vob {
 
 struct ExperimentContext {
   std::string out_dir;
-  bool resume = false;  // keep records already in the results file
+  bool force = false;   // start afresh: drop the records and images already in out_dir
   bool full = false;    // the paper's full sizes where they are opt-in
 };
 
@@ -27,8 +27,9 @@ int run_report(const std::vector<std::string>& results, const std::string& out_d
                const std::string& title, const std::string& name,
                const std::vector<std::string>& include_md = {});
 
-// Runs the suite files (relative to datasets/suites/) into out_dir/results.jsonl, fresh
-// unless ctx.resume, printing progress; then the report. Returns the report's status.
+// Runs the suite files (relative to datasets/suites/) into out_dir/results.jsonl, keeping
+// the records already there unless ctx.force, printing progress; then the report. Returns
+// the report's status, or 130 / 143 when SIGINT / SIGTERM stopped the run (no report then).
 int run_suite_experiment(const std::vector<std::string>& suite_files, const std::string& name,
                          const std::string& title, const ExperimentContext& ctx);
 

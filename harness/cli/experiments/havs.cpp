@@ -19,6 +19,7 @@
 #include "harness/bench/registry.h"
 #include "harness/bench/runner.h"
 #include "harness/cli/experiment_table.h"
+#include "harness/cli/stop_signals.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
 #include "harness/sort/radix_sort.h"
@@ -308,6 +309,7 @@ int run_havs_k_tradeoff(const ExperimentContext& ctx) {
   // report gives per-scene speed-against-error plots, havs_figures.py HAVS's own curve.
   const int status = run_suite_experiment({"havs-k-tradeoff.json"}, "havs-k-tradeoff-report",
                                           "HAVS: speed against error as k grows", ctx);
+  if (StopSignals::received()) return status;  // stopped by SIGINT/SIGTERM: no table from a partial run
   // Our table from the results: per mesh and orderer, mean time and summed error.
   const std::string results_path = (fs::path(ctx.out_dir) / "results.jsonl").string();
   std::ifstream in(results_path);

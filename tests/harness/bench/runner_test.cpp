@@ -3,7 +3,6 @@
 #include <filesystem>
 
 #include "harness/bench/params.h"
-#include "harness/bench/results.h"
 #include "harness/bench/suite.h"
 #include "harness/scene/input_error.h"
 
@@ -34,26 +33,4 @@ TEST(Suite, ParsesAndRejects) {
   EXPECT_THROW(SuiteSpec::from_json(bad, "s.json"), InputError);
   EXPECT_THROW(parse_size("640x"), InputError);
   EXPECT_THROW(parse_size("0x10"), InputError);
-}
-
-TEST(ResultsFile, AppendsAtomicallyAndRemembersKeys) {
-  const auto path = std::filesystem::temp_directory_path() / "vob_results_test.jsonl";
-  std::filesystem::remove(path);
-  {
-    ResultsFile f(path.string());
-    f.append({{"key", "a"}, {"x", 1}});
-    f.append({{"key", "b"}, {"x", 2}});
-    f.flush();
-    EXPECT_EQ(ResultsFile::read_all(path.string()).size(), 2u);
-    f.append({{"key", "c"}, {"x", 3}});
-  }  // the destructor flushes c
-  ResultsFile g(path.string());
-  EXPECT_TRUE(g.has("a"));
-  EXPECT_TRUE(g.has("b"));
-  EXPECT_TRUE(g.has("c"));
-  EXPECT_FALSE(g.has("d"));
-  EXPECT_EQ(ResultsFile::read_all(path.string()).size(), 3u);
-  // No temporary file is left behind.
-  for (const auto& e : std::filesystem::directory_iterator(path.parent_path()))
-    EXPECT_EQ(e.path().string().find("vob_results_test.jsonl.tmp"), std::string::npos);
 }
