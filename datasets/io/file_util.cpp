@@ -1,5 +1,6 @@
 #include "datasets/io/file_util.h"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -28,6 +29,10 @@ void write_atomically(const std::string& path,
   buf.push_back('\0');
   const int fd = mkstemp(buf.data());
   if (fd < 0) throw InputError(path, "file", std::string("cannot be written: ") + std::strerror(errno));
+  // mkstemp creates 0600; a written mesh gets the mode the umask allows, like any file.
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  ::fchmod(fd, 0666 & ~mask);
   close(fd);
   const std::string tmp(buf.data());
   try {

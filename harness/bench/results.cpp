@@ -142,9 +142,9 @@ void ResultsFile::read_new_lines() {
     if (blank(line)) return;
     const nlohmann::json r = parse_json_input(line, path_, where);
     if (!r.is_object()) throw InputError(path_, where, "is not a JSON object");
-    ++records_;
-    if (!r.contains("key")) return;
+    if (!r.contains("key")) throw InputError(path_, where, "is not a results record (no \"key\")");
     if (!r["key"].is_string()) throw InputError(path_, where, "\"key\" is not a string");
+    ++records_;
     keys_.insert(r["key"].get<std::string>());
   };
   size_t start = 0;

@@ -13,6 +13,7 @@
 #include "harness/bench/results.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/render/compositor.h"
+#include "harness/scene/cell_overlap.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
 
@@ -209,6 +210,11 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     if (stop()) return summary;
     const auto t0 = std::chrono::steady_clock::now();
     const Scene scene = make_scene(ds);
+    if (opt.validate_full && scene.kind() == SceneKind::Cells) {
+      const CellOverlapReport overlaps = check_overlapping_cells(scene.mesh(), scene.faces());
+      if (!overlaps.pairs.empty())
+        throw InputError(describe_overlap(ds.input.empty() ? ds.label() : ds.input, overlaps));
+    }
     const nlohmann::json facts = scene_facts(scene);
     say("dataset " + std::to_string(di + 1) + "/" + std::to_string(suite.datasets.size()) + " " +
         ds.label() + ": " + std::to_string(scene.num_primitives()) + " " +

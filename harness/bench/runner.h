@@ -51,6 +51,9 @@ struct RunOptions {
   std::string image_dir;  // where image_views' PNGs go (empty: beside the results)
   std::function<void(const std::string&)> progress;  // one line per record
   std::function<bool()> stop_requested;  // asked between records: true ends the run early
+  // Also search every cell dataset for interpenetrating cells (cell_overlap.h) before
+  // measuring it; a dataset with such cells is an InputError naming the first pair.
+  bool validate_full = false;
 };
 struct RunSummary {
   int written = 0;             // records this run appended

@@ -19,6 +19,11 @@ Command add_run_command(CLI::App& app) {
   cmd->add_option("-o,--output", *out,
                   "results file (JSONL); records already in it are skipped, new ones appended")
       ->required();
+  auto validate = std::make_shared<std::string>("cells");
+  cmd->add_option("--validate", *validate,
+                  "cells: per-cell checks (default); full: also every pair of interpenetrating "
+                  "cells of each cell dataset, before it is measured")
+      ->check(CLI::IsMember({"cells", "full"}));
   return [=]() {
     const SuiteSpec s = SuiteSpec::load(*suite);
     std::error_code ec;
@@ -27,6 +32,7 @@ Command add_run_command(CLI::App& app) {
     const StopSignals signals;
     RunOptions opt;
     opt.results_path = *out;
+    opt.validate_full = *validate == "full";
     opt.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     opt.stop_requested = [] { return StopSignals::received() != 0; };
     const RunSummary r = run_suite(s, opt);

@@ -147,3 +147,18 @@ TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
   EXPECT_NE(r.err.find("input fault: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find(", 0 with oracle violations"), std::string::npos) << r.err;
 }
+
+TEST(CliOverlap, RunWithValidateFullRefusesTheDatasetBeforeMeasuring) {
+  const fs::path suite = scratch("suite-full.json");
+  std::ofstream(suite) << R"({"name": "t", "datasets": [{"input": ")" << kGmsh << R"("}],
+                   "algorithms": ["mpvo"], "views": 1, "sizes": ["48x48"],
+                   "repeats": 1, "warmup": 0})";
+  const fs::path results = scratch("results-full.jsonl");
+  fs::remove(results);
+  const Outcome r = vobench("run --validate full " + suite.string() + " -o " + results.string());
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("interpenetrate"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("two_boxes"), std::string::npos) << r.err;
+  std::error_code ec;
+  EXPECT_EQ(fs::exists(results, ec) ? fs::file_size(results, ec) : 0u, 0u);  // nothing measured
+}
