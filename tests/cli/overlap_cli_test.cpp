@@ -127,11 +127,17 @@ TEST(CliOverlap, ValidateFullOptionRefusesBeforeOrdering) {
   EXPECT_EQ(r.code, 2);
 }
 
-TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
-  const fs::path suite = scratch("suite.json");
+// A one-view mpvo suite over the interpenetrating gmsh boxes.
+fs::path gmsh_suite(const std::string& name) {
+  const fs::path suite = scratch(name);
   std::ofstream(suite) << R"({"name": "t", "datasets": [{"input": ")" << kGmsh << R"("}],
                    "algorithms": ["mpvo"], "views": 1, "sizes": ["48x48"],
                    "repeats": 1, "warmup": 0})";
+  return suite;
+}
+
+TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
+  const fs::path suite = gmsh_suite("suite.json");
   const fs::path results = scratch("results.jsonl");
   fs::remove(results);
   const Outcome r = vobench("run " + suite.string() + " -o " + results.string());
@@ -149,10 +155,7 @@ TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
 }
 
 TEST(CliOverlap, RunWithValidateFullRefusesTheDatasetBeforeMeasuring) {
-  const fs::path suite = scratch("suite-full.json");
-  std::ofstream(suite) << R"({"name": "t", "datasets": [{"input": ")" << kGmsh << R"("}],
-                   "algorithms": ["mpvo"], "views": 1, "sizes": ["48x48"],
-                   "repeats": 1, "warmup": 0})";
+  const fs::path suite = gmsh_suite("suite-full.json");
   const fs::path results = scratch("results-full.jsonl");
   fs::remove(results);
   const Outcome r = vobench("run --validate full " + suite.string() + " -o " + results.string());
