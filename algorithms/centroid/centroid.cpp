@@ -8,10 +8,7 @@ namespace {
 class CentroidOrderer final : public Orderer {
  public:
   explicit CentroidOrderer(bool view_key) : view_key_(view_key) {}
-  std::string name() const override { return "centroid"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override { return {}; }
-  nlohmann::json parameters() const override { return {{"key", view_key_ ? "view" : "eye"}}; }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     auto p = clock.phase("centroids");
@@ -58,10 +55,11 @@ class CentroidOrderer final : public Orderer {
 OrdererInfo centroid_orderer_info() {
   return {"centroid", SceneKind::Cells,
           "cell centroids sorted back to front with an LSD radix sort (heuristic)",
-          "key=eye|view (eye): distance to the eye, or depth along the view direction",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<CentroidOrderer>(p.get_choice("key", "eye", {"eye", "view"}) ==
-                                                     "view");
+          {ParamSpec::choice("key", "eye", {"eye", "view"},
+                             "sort key: distance from the eye to the centroid, or its depth along "
+                             "the view direction (vtkCellCenterDepthSort's key)")},
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<CentroidOrderer>(p.get_choice("key") == "view");
           }};
 }
 

@@ -1,7 +1,6 @@
 // Plugin `centroid`: cells sorted back to front by a per-cell key with the LSD radix sort.
-//   key=eye  (default) distance from the eye to the cell centroid
-//   key=view depth of the centroid along the view direction (the key VTK's
-//            vtkCellCenterDepthSort uses)
+// Parameters (key: eye distance or view depth of the centroid) are declared once, in
+// centroid_orderer_info(); `vobench list` prints them.
 // A heuristic: exact on no class of nonconvex meshes; its error is what the oracle measures.
 #pragma once
 #include "harness/bench/registry.h"

@@ -7,8 +7,6 @@ namespace {
 
 class TriangleCentroid final : public Orderer {
  public:
-  std::string name() const override { return "triangle-centroid"; }
-  SceneKind scene_kind() const override { return SceneKind::Triangles; }
   Claims claims() const override { return {}; }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -51,8 +49,8 @@ class TriangleCentroid final : public Orderer {
 
 OrdererInfo triangle_centroid_orderer_info() {
   return {"triangle-centroid", SceneKind::Triangles,
-          "triangles sorted by centroid eye distance with the radix sort (heuristic)", "",
-          [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<TriangleCentroid>(); }};
+          "triangles sorted by centroid eye distance with the radix sort (heuristic)", {},
+          [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<TriangleCentroid>(); }};
 }
 
 }  // namespace vob

@@ -48,10 +48,7 @@ vtkSmartPointer<vtkUnstructuredGrid> to_vtk_grid(const CellMesh& mesh) {
 class VtkCentroidOrderer final : public Orderer {
  public:
   explicit VtkCentroidOrderer(int chunk) : chunk_(chunk) {}
-  std::string name() const override { return "vtk-centroid"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override { return {}; }
-  nlohmann::json parameters() const override { return {{"chunk", chunk_}}; }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     {
@@ -121,10 +118,11 @@ OrdererInfo vtk_centroid_orderer_info() {
   return {"vtk-centroid", SceneKind::Cells,
           "VTK's vtkCellCenterDepthSort: cell centres by depth along the view direction "
           "(heuristic peer)",
-          "chunk=N (1000): cells per GetNextCells call, 1..2147483647",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<VtkCentroidOrderer>(
-                p.get_int("chunk", 1000, 1, 2147483647));
+          {ParamSpec::integer("chunk", 1000, 1, 2147483647,
+                              "cells per GetNextCells call (1000: what vtkProjectedTetrahedraMapper "
+                              "asks for; 2147483647: one piece)")},
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<VtkCentroidOrderer>(p.get_int("chunk"));
           }};
 }
 

@@ -2,8 +2,7 @@
 // the radix centroid sort has to beat. VTK sorts cell centres (parametric centres, in
 // float) by their depth along the view direction, the key `centroid:key=view` uses, with a
 // quicksort that hands out sorted chunks through GetNextCells.
-//   chunk=N  (1000) cells per GetNextCells call, 1..2147483647; 1000 is what VTK's
-//            vtkProjectedTetrahedraMapper asks for, 2147483647 sorts in one piece.
+// Parameter chunk (cells per GetNextCells call) is declared in vtk_centroid_orderer_info().
 // prepare: builds a vtkUnstructuredGrid from the CellMesh and lets VTK compute its cell
 // centres (a first InitTraversal). order: points the vtkCamera at the view and collects all
 // chunks. A heuristic, like `centroid`. VTK's camera needs no OpenGL context.

@@ -11,14 +11,7 @@ class HavsOrderer final : public Orderer {
  public:
   HavsOrderer(int k, bool analyze, std::string backend, std::string gl_draw)
       : k_(k), analyze_(analyze), backend_(std::move(backend)), gl_draw_(std::move(gl_draw)) {}
-  std::string name() const override { return "havs"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override { return {}; }
-  nlohmann::json parameters() const override {
-    nlohmann::json j{{"k", k_}, {"analyze", analyze_}};
-    if (backend_ == "gl") j.update({{"backend", backend_}, {"gl_draw", gl_draw_}});
-    return j;
-  }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     auto p = clock.phase("faces");
@@ -108,16 +101,15 @@ OrdererInfo havs_orderer_info() {
   return {"havs", SceneKind::Cells,
           "HAVS (Callahan et al.): face centroid radix sort + software k-buffer (heuristic; its "
           "per-pixel error is in the havs_* counters)",
-          "k=2 (1..16): k-buffer entries per pixel; analyze=true: measure against the exact "
-          "per-pixel order (untimed); backend=software|gl: software k-buffer or the OpenGL "
-          "fragment-shader k-buffer on OSMesa; gl_draw=batched|serialized (gl: one draw, or "
-          "race-free runs separated by memory barriers)",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            const int k = p.get_int("k", 2, 1, havs::kMaxK);
-            const bool analyze = p.get_bool("analyze", true);
-            std::string backend = p.get_choice("backend", "software", {"software", "gl"});
-            std::string draw = p.get_choice("gl_draw", "batched", {"batched", "serialized"});
-            return std::make_unique<HavsOrderer>(k, analyze, std::move(backend), std::move(draw));
+          {ParamSpec::integer("k", 2, 1, havs::kMaxK, "k-buffer entries per pixel (the paper's hardware: 2 or 6)"),
+           ParamSpec::boolean("analyze", true, "measure against the exact per-pixel order (untimed)"),
+           ParamSpec::choice("backend", "software", {"software", "gl"},
+                             "software k-buffer, or the OpenGL fragment-shader k-buffer on OSMesa"),
+           ParamSpec::choice("gl_draw", "batched", {"batched", "serialized"},
+                             "gl only: one draw call, or race-free runs separated by memory barriers")},
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<HavsOrderer>(p.get_int("k"), p.get_bool("analyze"),
+                                                 p.get_choice("backend"), p.get_choice("gl_draw"));
           }};
 }
 

@@ -3,18 +3,18 @@
 // that order into a per-pixel k-buffer that finishes the sort and composites ray segments
 // ("k-buffer"); see kbuffer.h and havs_frame.h for where we follow the paper and where we
 // interpret it.
-//   k=2 (1..16)      k-buffer entries per pixel (the paper's hardware: 2 or 6)
-//   analyze=true     measure the k-buffer against the exact per-pixel (A-buffer) order,
-//                    untimed, once per view (the result is deterministic, so repeats of the
-//                    same view reuse it); the analysis always reruns the software k-buffer
-//   backend=software the "k-buffer" phase: `software` (kbuffer.h on the CPU, parallel over
-//                    bands of rows) or `gl` (the same k-buffer as an OpenGL 4.5 fragment
-//                    shader with image load/store on OSMesa/llvmpipe, gl/gl_kbuffer.h; the
-//                    cpu sort and the face order are the same). With gl, prepare() creates the
-//                    GL context and fails with one InputError line when it cannot.
-//   gl_draw=batched  gl only: `batched` draws all faces in one call (the paper's way; the
-//                    read-modify-write may race, Fig. 5), `serialized` draws runs of faces
-//                    with disjoint pixel rectangles separated by glMemoryBarrier (race free)
+// Parameters k, analyze, backend, gl_draw: declared (defaults, ranges, one-line docs) in
+// havs_orderer_info(); what they do beyond that line:
+//   analyze  the measurement runs untimed, once per view (the result is deterministic, so
+//            repeats of the same view reuse it), and always reruns the software k-buffer
+//   backend  the "k-buffer" phase: software (kbuffer.h on the CPU, parallel over bands of
+//            rows) or gl (the same k-buffer as an OpenGL 4.5 fragment shader with image
+//            load/store on OSMesa/llvmpipe, gl/gl_kbuffer.h; the cpu sort and the face order
+//            are the same). With gl, prepare() creates the GL context and fails with one
+//            InputError line when it cannot.
+//   gl_draw  batched draws all faces in one call (the paper's way; the read-modify-write may
+//            race, Fig. 5); serialized draws runs of faces with disjoint pixel rectangles
+//            separated by glMemoryBarrier (race free)
 // Ordering::order is a complete back-to-front permutation of cells derived from the face
 // sort (each cell at the position of its last-arriving face, havs_frame.h); the harness'
 // oracle judges that permutation. HAVS's own error is in Ordering::counters:

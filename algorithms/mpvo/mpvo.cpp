@@ -14,8 +14,6 @@ Claims mpvo_claims() {
 
 class MpvoOrderer final : public Orderer {
  public:
-  std::string name() const override { return "mpvo"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override { return mpvo_claims(); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -46,8 +44,6 @@ class MpvoOrderer final : public Orderer {
 
 class MpvoncOrderer final : public Orderer {
  public:
-  std::string name() const override { return "mpvonc"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override { return mpvo_claims(); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -115,14 +111,14 @@ class MpvoncOrderer final : public Orderer {
 OrdererInfo mpvo_orderer_info() {
   return {"mpvo", SceneKind::Cells,
           "Williams' MPVO: face arrows and a DFS from the sink cells (exact on convex meshes)",
-          "", [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoOrderer>(); }};
+          {}, [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoOrderer>(); }};
 }
 
 OrdererInfo mpvonc_orderer_info() {
   return {"mpvonc", SceneKind::Cells,
           "Williams' MPVONC: MPVO with a DFS first from exterior cells by decreasing centroid "
           "distance (heuristic)",
-          "", [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoncOrderer>(); }};
+          {}, [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoncOrderer>(); }};
 }
 
 }  // namespace vob

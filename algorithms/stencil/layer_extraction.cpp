@@ -213,4 +213,23 @@ size_t LayerExtractor::bytes() const {
          in_f_.capacity();
 }
 
+std::vector<ParamSpec> extraction_params() {
+  return {ParamSpec::choice("backend", "gl", {"gl", "software"},
+                            "OpenGL through OSMesa, or the same passes on the harness rasterizer"),
+          ParamSpec::choice("variant", "blocked", {"naive", "blocked"},
+                            "whole-buffer reads and scans, or only blocks that can still be covered"),
+          ParamSpec::integer("block", 64, 8, 1024, "block side in pixels (blocked)"),
+          ParamSpec::choice("cycles", "break", {"break", "stop"},
+                            "a round that layers nothing forces one candidate (break) or ends the "
+                            "extraction (stop, the paper)")};
+}
+
+ExtractOptions extract_options(const ResolvedParams& p) {
+  ExtractOptions opt;
+  opt.blocked = p.get_choice("variant") == "blocked";
+  opt.block = p.get_int("block");
+  opt.break_cycles = p.get_choice("cycles") == "break";
+  return opt;
+}
+
 }  // namespace vob::stencil

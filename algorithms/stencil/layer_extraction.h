@@ -45,6 +45,7 @@
 #include <vector>
 
 #include "algorithms/stencil/layer_backend.h"
+#include "harness/bench/param_spec.h"
 #include "harness/bench/phase_clock.h"
 
 namespace vob::stencil {
@@ -59,6 +60,11 @@ struct ExtractOptions {
   // fewest pixels (G(p) != C(p)), of those the one front-most at the most pixels.
   bool break_cycles = false;
 };
+
+// The parameters stencil-layers and stencil-xmpvo share (backend, variant, block, cycles),
+// declared once for both registrations, and the options they resolve to.
+std::vector<ParamSpec> extraction_params();
+ExtractOptions extract_options(const ResolvedParams& p);
 
 struct LayerResult {
   std::vector<int32_t> layer;           // per primitive: layer (0 = front) or -1

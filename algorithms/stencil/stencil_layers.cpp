@@ -15,19 +15,11 @@ class StencilLayers final : public Orderer {
  public:
   StencilLayers(std::string backend, ExtractOptions opt) : backend_name_(std::move(backend)), opt_(opt) {}
 
-  std::string name() const override { return "stencil-layers"; }
-  SceneKind scene_kind() const override { return SceneKind::Triangles; }
   Claims claims() const override {
     Claims c;
     c.image_exact = backend_name_ == "software";
     c.detects_cycles = true;
     return c;
-  }
-  nlohmann::json parameters() const override {
-    nlohmann::json j{{"backend", backend_name_}, {"variant", opt_.blocked ? "blocked" : "naive"}};
-    if (opt_.blocked) j["block"] = opt_.block;
-    j["cycles"] = opt_.break_cycles ? "break" : "stop";
-    return j;
   }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -129,16 +121,9 @@ OrdererInfo stencil_layers_orderer_info() {
   return {"stencil-layers", SceneKind::Triangles,
           "Krishnan et al.'s layer extraction with item, z and stencil buffers (OpenGL through "
           "OSMesa, or the same passes on the harness rasterizer)",
-          "backend=gl (gl|software); variant=blocked (naive|blocked); block=64 (8..1024): block "
-          "side in pixels; cycles=break (break|stop): a round that layers nothing forces one candidate "
-          "candidate (break) or ends the extraction (stop, the paper)",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            const std::string backend = p.get_choice("backend", "gl", {"gl", "software"});
-            ExtractOptions opt;
-            opt.blocked = p.get_choice("variant", "blocked", {"naive", "blocked"}) == "blocked";
-            opt.block = p.get_int("block", 64, 8, 1024);
-            opt.break_cycles = p.get_choice("cycles", "break", {"break", "stop"}) == "break";
-            return std::make_unique<StencilLayers>(backend, opt);
+          stencil::extraction_params(),
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<StencilLayers>(p.get_choice("backend"), stencil::extract_options(p));
           }};
 }
 

@@ -2,16 +2,14 @@
 // visibility ordering (2001, section 3): layers extracted with an item buffer, the z-buffer
 // and the stencil buffer (layer_extraction.h), front to back; the Ordering is back to front.
 //
-//   backend=gl        gl: OpenGL through OSMesa (llvmpipe), gl_backend.h;
-//                     software: the same passes on the harness rasterizer, software_backend.h
-//   variant=blocked   naive: whole-buffer reads and scans at every pass;
-//                     blocked: only blocks that can still be covered are read and scanned
-//   block=64 (8..1024)  block side in pixels (blocked)
-//   cycles=break      a round that classifies nothing (a visibility cycle, or one made by
-//                     the backend's depth rounding at silhouettes) either forces one
-//                     candidate (seen behind others at the fewest pixels) into a layer of
-//                     its own and goes on (break), or ends the extraction as the paper's
-//                     step 5 does (stop), leaving the rest unclassified
+// Parameters backend, variant, block, cycles: declared once for both stencil plugins in
+// stencil::extraction_params() (layer_extraction.cpp); beyond their one-line docs:
+//   backend  gl: gl_backend.h; software: software_backend.h
+//   cycles   a round that classifies nothing (a visibility cycle, or one made by
+//            the backend's depth rounding at silhouettes) either forces one
+//            candidate (seen behind others at the fewest pixels) into a layer of
+//            its own and goes on (break), or ends the extraction as the paper's
+//            step 5 does (stop), leaving the rest unclassified
 //
 // Ordering: order = unclassified primitives first (those that covered a pixel but never
 // got a layer, far to near by centroid distance, then those that covered no pixel centre),

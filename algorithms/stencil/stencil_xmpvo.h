@@ -6,10 +6,7 @@
 // give the relation "the farther face's cell is behind the nearer face's cell". The
 // relations (deduplicated) join the MPVO face arrows, and the MPVO DFS sorts the cells.
 //
-//   backend=gl        gl: OpenGL through OSMesa; software: the harness rasterizer
-//   variant=blocked   naive | blocked (see stencil-layers)
-//   block=64 (8..1024)
-//   cycles=break      break | stop (see stencil-layers)
+// Parameters: those of stencil-layers (stencil::extraction_params()).
 //
 // A layer's faces are front-most wherever they cover a pixel, so at every pixel the faces
 // come in depth order, one per layer: the pairs are those of an A-buffer of exterior faces

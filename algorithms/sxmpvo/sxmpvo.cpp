@@ -22,8 +22,6 @@ constexpr double kTieRelative = 1e-9;
 
 class SxmpvoOrderer final : public Orderer {
  public:
-  std::string name() const override { return "sxmpvo"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override {
     Claims c;
     c.image_exact = true;
@@ -223,7 +221,7 @@ OrdererInfo sxmpvo_orderer_info() {
   return {"sxmpvo", SceneKind::Cells,
           "Cook et al.'s SXMPVO: MPVO arrows plus pseudo-neighbour relations from an A-buffer "
           "of exterior faces at pixel centres (exact at the image resolution)",
-          "", [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<SxmpvoOrderer>(); }};
+          {}, [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<SxmpvoOrderer>(); }};
 }
 
 }  // namespace vob

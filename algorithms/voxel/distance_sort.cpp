@@ -7,8 +7,6 @@ namespace {
 
 class DistanceSort final : public Orderer {
  public:
-  std::string name() const override { return "distance-sort"; }
-  SceneKind scene_kind() const override { return SceneKind::Voxels; }
   Claims claims() const override {
     Claims c;
     c.object_exact = c.image_exact = true;  // in the splat oracle's sense: depth = eye distance
@@ -56,8 +54,8 @@ class DistanceSort final : public Orderer {
 
 OrdererInfo distance_sort_orderer_info() {
   return {"distance-sort", SceneKind::Voxels,
-          "significant voxels sorted by eye distance (64-bit radix sort): the exact reference", "",
-          [](Params&) -> std::unique_ptr<Orderer> { return std::make_unique<DistanceSort>(); }};
+          "significant voxels sorted by eye distance (64-bit radix sort): the exact reference", {},
+          [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<DistanceSort>(); }};
 }
 
 }  // namespace vob

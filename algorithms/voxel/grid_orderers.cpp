@@ -11,13 +11,9 @@ enum class Mode { Btf, Wbtf, Pbtf, PbtfWbtf, IpImplicit, IpExplicit };
 
 class GridOrderer final : public Orderer {
  public:
-  GridOrderer(std::string name, Mode mode, nlohmann::json params)
-      : name_(std::move(name)), mode_(mode), params_(std::move(params)) {}
+  explicit GridOrderer(Mode mode) : mode_(mode) {}
 
-  std::string name() const override { return name_; }
-  SceneKind scene_kind() const override { return SceneKind::Voxels; }
   Claims claims() const override { return {}; }  // heuristic: splats overlap across the grid order
-  nlohmann::json parameters() const override { return params_; }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     auto p = clock.phase("runs per axis");
@@ -62,9 +58,7 @@ class GridOrderer final : public Orderer {
   size_t bytes() const override { return runs_.bytes(); }
 
  private:
-  std::string name_;
   Mode mode_;
-  nlohmann::json params_;
   Scene scene_;
   const VoxelGrid* grid_ = nullptr;
   RunIndex runs_;
@@ -76,39 +70,40 @@ OrdererInfo btf_orderer_info() {
   return {"btf", SceneKind::Voxels,
           "Frieder et al. BTF: a traversal direction per axis from the view direction, fixed "
           "nesting z, y, x",
-          "", [](Params&) -> std::unique_ptr<Orderer> {
-            return std::make_unique<GridOrderer>("btf", Mode::Btf, nlohmann::json::object());
+          {}, [](const ResolvedParams&) -> std::unique_ptr<Orderer> {
+            return std::make_unique<GridOrderer>(Mode::Btf);
           }};
 }
 
 OrdererInfo wbtf_orderer_info() {
   return {"wbtf", SceneKind::Voxels,
-          "Westover's BTF: axes nested by how perpendicular they are to the view plane", "",
-          [](Params&) -> std::unique_ptr<Orderer> {
-            return std::make_unique<GridOrderer>("wbtf", Mode::Wbtf, nlohmann::json::object());
+          "Westover's BTF: axes nested by how perpendicular they are to the view plane", {},
+          [](const ResolvedParams&) -> std::unique_ptr<Orderer> {
+            return std::make_unique<GridOrderer>(Mode::Wbtf);
           }};
 }
 
 OrdererInfo pbtf_orderer_info() {
   return {"pbtf", SceneKind::Voxels,
           "Swan's PBTF: up to 8 subvolumes cut by the planes through the eye, one after the other",
-          "permute=fixed|wbtf: nesting inside each subvolume (fixed: z, y, x)",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            const std::string perm = p.get_choice("permute", "fixed", {"fixed", "wbtf"});
-            return std::make_unique<GridOrderer>("pbtf", perm == "wbtf" ? Mode::PbtfWbtf : Mode::Pbtf,
-                                                 nlohmann::json{{"permute", perm}});
+          {ParamSpec::choice("permute", "fixed", {"fixed", "wbtf"},
+                             "nesting inside each subvolume (fixed: z, y, x)")},
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<GridOrderer>(p.get_choice("permute") == "wbtf" ? Mode::PbtfWbtf
+                                                                                   : Mode::Pbtf);
           }};
 }
 
 OrdererInfo ip_pbtf_orderer_info() {
   return {"ip-pbtf", SceneKind::Voxels,
           "Botha and Post's IP-PBTF: PBTF subvolumes interleaved, outer axis not split",
-          "interleave=implicit|explicit: inner loop over runs (Algorithm 4) or counters over "
-          "every grid position (Algorithms 2, 3)",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            const std::string il = p.get_choice("interleave", "implicit", {"implicit", "explicit"});
-            return std::make_unique<GridOrderer>("ip-pbtf", il == "explicit" ? Mode::IpExplicit : Mode::IpImplicit,
-                                                 nlohmann::json{{"interleave", il}});
+          {ParamSpec::choice("interleave", "implicit", {"implicit", "explicit"},
+                             "inner loop over runs (Algorithm 4) or counters over every grid "
+                             "position (Algorithms 2, 3)")},
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<GridOrderer>(p.get_choice("interleave") == "explicit"
+                                                     ? Mode::IpExplicit
+                                                     : Mode::IpImplicit);
           }};
 }
 

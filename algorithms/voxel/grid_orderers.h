@@ -11,13 +11,13 @@
 //   the volume into up to 8 subvolumes (corner-on 1, edge-on 2, face-on 4, volume-on 8), each
 //   traversed towards the eye, completely, one after the other. Orthographic views: one
 //   subvolume along the view direction.
-//   permute=fixed|wbtf (default fixed, the paper's Table 1 "unpermuted"): the nesting of
-//   every subvolume; wbtf is Swan's test implementation.
+//   Parameter permute (declared in pbtf_orderer_info()): the nesting of every subvolume;
+//   fixed is the paper's Table 1 "unpermuted", wbtf Swan's test implementation.
 // Plugin `ip-pbtf` (Botha and Post): pbtf's subvolumes interleaved (voxels at equal distance
 //   from a dividing plane alternate, Algorithms 2 and 3) and permuted: the outer axis is one
 //   that no dividing plane is orthogonal to (section 4.1), the most perpendicular to the view
 //   plane in the volume-on case (section 4.2).
-//   interleave=implicit|explicit (default implicit): implicit interleaves the inner loop over
+//   Parameter interleave (declared in ip_pbtf_orderer_info()): implicit interleaves the inner loop over
 //   the runs with two run pointers (Algorithm 4, empty-space skipping); explicit steps
 //   counters through every grid position (significant or not) on all three axes. Both emit
 //   the same order; they differ in time.

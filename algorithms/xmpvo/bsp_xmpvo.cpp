@@ -68,16 +68,11 @@ class BspXmpvoOrderer final : public Orderer {
     opt_.sample = sample;
     opt_.split_weight = split_weight;
   }
-  std::string name() const override { return "bsp-xmpvo"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override {
     Claims c;
     c.object_exact = true;
     c.detects_cycles = true;
     return c;
-  }
-  nlohmann::json parameters() const override {
-    return {{"candidates", opt_.candidates}, {"sample", opt_.sample}, {"split_weight", opt_.split_weight}, {"stop", stop_when_covered_}};
   }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -480,14 +475,13 @@ OrdererInfo bsp_xmpvo_orderer_info() {
   return {"bsp-xmpvo", SceneKind::Cells,
           "Comba et al.'s BSP-XMPVO: MPVO arrows plus exterior-cell relations from a BSP tree of "
           "the exterior faces, exact at object precision",
-          "candidates=5 (1..64): splitters tried per BSP node; sample=64 (1..100000): fragments "
-          "each is scored on; split_weight=8 (0..1000): score = weight * splits + imbalance; stop=true: end a beam's traversal once its cross-section is covered",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            const int c = p.get_int("candidates", 5, 1, 64);
-            const int s = p.get_int("sample", 64, 1, 100000);
-            const int w = p.get_int("split_weight", 8, 0, 1000);
-            const bool stop = p.get_bool("stop", true);
-            return std::make_unique<BspXmpvoOrderer>(c, s, w, stop);
+          {ParamSpec::integer("candidates", 5, 1, 64, "splitters tried per BSP node"),
+           ParamSpec::integer("sample", 64, 1, 100000, "fragments each candidate is scored on"),
+           ParamSpec::integer("split_weight", 8, 0, 1000, "score = split_weight * splits + |front - back|"),
+           ParamSpec::boolean("stop", true, "end a beam's traversal once its cross-section is proved covered")},
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<BspXmpvoOrderer>(p.get_int("candidates"), p.get_int("sample"),
+                                                     p.get_int("split_weight"), p.get_bool("stop"));
           }};
 }
 

@@ -3,10 +3,7 @@
 // between exterior cells found at object precision through a view-independent BSP tree of
 // the exterior faces (bsp_tree.h).
 //
-// bsp-xmpvo[:candidates=5,sample=64,split_weight=8,stop=true]
-//   candidates  (1..64) splitters tried per BSP node, the best by the lowest score;
-//   sample      (1..100000) fragments each candidate is scored on;
-//   split_weight (0..1000) score = split_weight * splits + |front - back| on the sample;
+// Parameters candidates, sample, split_weight, stop: declared in bsp_xmpvo_orderer_info();
 //   stop        end a beam's front-to-back traversal once its cross-section is proved covered
 //               (false: collect every candidate in the beam; same order, more relations).
 //

@@ -101,16 +101,11 @@ struct Stats {
 class XmpvoOrderer final : public Orderer {
  public:
   explicit XmpvoOrderer(Mode mode) : mode_(mode) {}
-  std::string name() const override { return "xmpvo"; }
-  SceneKind scene_kind() const override { return SceneKind::Cells; }
   Claims claims() const override {
     Claims c;
     c.object_exact = true;
     c.detects_cycles = true;
     return c;
-  }
-  nlohmann::json parameters() const override {
-    return {{"predicates", mode_ == Mode::Exact ? "exact" : (mode_ == Mode::Double ? "double" : "compare")}};
   }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -693,10 +688,11 @@ OrdererInfo xmpvo_orderer_info() {
   return {"xmpvo", SceneKind::Cells,
           "Silva et al.'s XMPVO: MPVO arrows plus exterior-cell relations from exact ray "
           "queries at the vertices of the projected exterior-edge arrangement (object exact)",
-          "predicates=exact (exact|double|compare): sign arithmetic; double and compare are "
-          "for the stability study",
-          [](Params& p) -> std::unique_ptr<Orderer> {
-            const std::string m = p.get_choice("predicates", "exact", {"exact", "double", "compare"});
+          {ParamSpec::choice("predicates", "exact", {"exact", "double", "compare"},
+                             "sign arithmetic: exact predicates, plain doubles, or both compared "
+                             "(double and compare are for the stability study)")},
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            const std::string& m = p.get_choice("predicates");
             return std::make_unique<XmpvoOrderer>(m == "exact" ? Mode::Exact
                                                   : m == "double" ? Mode::Double : Mode::Compare);
           }};

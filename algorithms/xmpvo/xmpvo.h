@@ -1,8 +1,8 @@
 // Plugin `xmpvo`: Silva, Mitchell and Williams' XMPVO (VolVis 1998), as specified in issue 4:
 // MPVO's face arrows plus relations between exterior cells found at object precision.
 //
-// xmpvo[:predicates=exact|double|compare]
-//   predicates  exact (default): every sign (front/back facing, side of a projected edge,
+// Parameter predicates (declared in xmpvo_orderer_info()):
+//   predicates  exact: every sign (front/back facing, side of a projected edge,
 //               edge crossing, arrow) is an exact predicate (CGAL filtered);
 //               double: the same signs in plain double arithmetic, no filter, no fallback
 //               (face depth order stays exact) -- for the stability study only;

@@ -42,10 +42,8 @@ struct Ordering {
 class Orderer {
  public:
   virtual ~Orderer() = default;
-  virtual std::string name() const = 0;     // registry name
-  virtual SceneKind scene_kind() const = 0;
+  // Name, scene kind and parameters live in the plugin's OrdererInfo (registry.h), not here.
   virtual Claims claims() const = 0;
-  virtual nlohmann::json parameters() const { return nlohmann::json::object(); }
   virtual void prepare(const Scene& scene, PhaseClock& clock) = 0;
   virtual Ordering order(const Camera& view, PhaseClock& clock) = 0;
   virtual size_t bytes() const = 0;         // memory the plugin holds after prepare/order

@@ -47,12 +47,22 @@ const OrdererInfo& find_orderer(const std::string& name) {
   throw InputError("--algorithm", name, "unknown orderer (known: " + all + ")");
 }
 
+const OrdererInfo& spec_orderer(const std::string& spec) {
+  return find_orderer(spec.substr(0, spec.find(':')));
+}
+
+ResolvedParams resolve_orderer_params(const std::string& spec) {
+  auto [name, given] = Params::parse_spec(spec);
+  return resolve_params(find_orderer(name).params, given);
+}
+
 std::unique_ptr<Orderer> make_orderer(const std::string& spec) {
-  auto [name, params] = Params::parse_spec(spec);
-  const OrdererInfo& info = find_orderer(name);
-  auto orderer = info.make(params);
-  params.check_all_used();
-  return orderer;
+  const ResolvedParams params = resolve_orderer_params(spec);
+  return spec_orderer(spec).make(params);
+}
+
+nlohmann::json resolved_parameters(const std::string& spec) {
+  return resolve_orderer_params(spec).values();
 }
 
 }  // namespace vob

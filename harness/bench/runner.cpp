@@ -41,9 +41,10 @@ PreparedOrderer prepare_orderer(const std::string& spec, const Scene& scene) {
   PreparedOrderer p;
   p.spec = spec;
   p.orderer = make_orderer(spec);
-  if (p.orderer->scene_kind() != scene.kind())
+  p.info = &spec_orderer(spec);
+  if (p.info->kind != scene.kind())
     throw InputError("--algorithm", spec,
-                     std::string("orders ") + scene_kind_name(p.orderer->scene_kind()) +
+                     std::string("orders ") + scene_kind_name(p.info->kind) +
                          ", but scene '" + scene.name() + "' has " + scene_kind_name(scene.kind()));
   p.scene = scene.fresh();
   const auto t0 = std::chrono::steady_clock::now();
@@ -244,8 +245,8 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
           rec["key"] = key;
           rec["suite"] = suite.name;
           rec["algorithm"] = spec;
-          rec["orderer"] = p.orderer->name();
-          rec["parameters"] = p.orderer->parameters();
+          rec["orderer"] = p.info->name;
+          rec["parameters"] = resolved_parameters(spec);
           const Claims cl = p.orderer->claims();
           rec["claims"] = {{"object_exact", cl.object_exact}, {"image_exact", cl.image_exact}};
           rec["dataset"] = ds.label();

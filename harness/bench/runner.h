@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/bench/orderer.h"
+#include "harness/bench/registry.h"
 #include "harness/bench/suite.h"
 #include "harness/oracle/oracle.h"
 
@@ -18,6 +19,7 @@ namespace vob {
 struct PreparedOrderer {
   std::string spec;                  // as given: "havs:k=6"
   std::unique_ptr<Orderer> orderer;
+  const OrdererInfo* info = nullptr;  // the registration: name, scene kind, parameters
   Scene scene;                       // fresh copy: the orderer pays for what it derives
   PhaseClock prepare_clock;
   double prepare_seconds = 0;

@@ -17,9 +17,18 @@ Command add_list_command(CLI::App& app) {
       nlohmann::json j{{"orderers", nlohmann::json::array()},
                        {"datasets", nlohmann::json::array()},
                        {"experiments", nlohmann::json::array()}};
-      for (const auto& o : orderer_registry())
+      for (const auto& o : orderer_registry()) {
+        // Claims of the default configuration (some depend on a parameter, e.g. backend).
+        const Claims c = make_orderer(o.name)->claims();
+        nlohmann::json params = nlohmann::json::array();
+        for (const ParamSpec& s : o.params) params.push_back(s.to_json());
         j["orderers"].push_back({{"name", o.name}, {"kind", scene_kind_name(o.kind)},
-                                 {"summary", o.summary}, {"parameters", o.parameters}});
+                                 {"summary", o.summary},
+                                 {"claims", {{"object_exact", c.object_exact},
+                                             {"image_exact", c.image_exact},
+                                             {"detects_cycles", c.detects_cycles}}},
+                                 {"params", params}});
+      }
       for (const auto& d : dataset_registry())
         j["datasets"].push_back({{"name", d.name}, {"kind", scene_kind_name(d.kind)},
                                  {"summary", d.summary}, {"parameters", d.parameters},
@@ -32,7 +41,7 @@ Command add_list_command(CLI::App& app) {
     std::cout << "Orderers (--algorithm NAME[:k=v,...]):\n";
     for (const auto& o : orderer_registry()) {
       std::cout << "  " << o.name << " [" << scene_kind_name(o.kind) << "]  " << o.summary << "\n";
-      if (!o.parameters.empty()) std::cout << "      " << o.parameters << "\n";
+      for (const ParamSpec& s : o.params) std::cout << "      " << s.describe() << "\n";
     }
     std::cout << "\nDatasets (--dataset NAME --set k=v ...):\n";
     for (const auto& d : dataset_registry()) {

@@ -36,7 +36,7 @@ Command add_order_command(CLI::App& app) {
     check_complete(scene, m.ordering, *algorithm);
     nlohmann::json j;
     j["algorithm"] = *algorithm;
-    j["parameters"] = p.orderer->parameters();
+    j["parameters"] = resolved_parameters(*algorithm);
     j["dataset"] = spec.to_json();
     j["primitive_kind"] = scene_kind_name(scene.kind());
     j["primitives"] = scene.num_primitives();

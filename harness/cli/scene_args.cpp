@@ -64,12 +64,13 @@ CLI::Validator number_in(double lo, double hi, bool lo_open, bool hi_open) {
 }
 
 void check_algorithm(const std::string& algorithm, const DatasetSpec& spec) {
-  const auto orderer = make_orderer(algorithm);
+  make_orderer(algorithm);  // checks the name and parameters
+  const OrdererInfo& info = spec_orderer(algorithm);
   if (spec.input.empty()) {
     const SceneKind kind = find_dataset(spec.name).kind;
-    if (orderer->scene_kind() != kind)
+    if (info.kind != kind)
       throw InputError("--algorithm", algorithm,
-                       std::string("orders ") + scene_kind_name(orderer->scene_kind()) +
+                       std::string("orders ") + scene_kind_name(info.kind) +
                            ", but dataset '" + spec.name + "' has " + scene_kind_name(kind));
   }
 }

@@ -104,7 +104,7 @@ TEST(HavsGlOrderer, BackendGlThroughRegistry) {
   ASSERT_TRUE(b.counters.count("havs_gl_fragments"));
   EXPECT_NEAR(b.counters.at("havs_gl_fragments"), a.counters.at("havs_fragments"),
               0.005 * a.counters.at("havs_fragments"));
-  EXPECT_EQ(gl->orderer->parameters().value("backend", ""), "gl");
+  EXPECT_EQ(resolved_parameters(gl->spec).value("backend", ""), "gl");  // what the record says
 }
 
 // An impossible context request is one clear error line, not a crash.
