@@ -48,6 +48,45 @@ TEST(Cli, ListNamesTheFirstOrderersAndDatasets) {
     EXPECT_NE(r.out.find(name), std::string::npos) << name;
 }
 
+// The listing comes from the declared ParamSpecs: text and JSON say the same defaults and ranges.
+TEST(Cli, ListJsonHasEveryOrdererWithClaimsAndDeclaredParameters) {
+  const Outcome r = vobench("list --json");
+  ASSERT_EQ(r.code, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.at("orderers").is_array());
+  bool saw_havs = false;
+  for (const auto& o : j.at("orderers")) {
+    for (const char* k : {"name", "kind", "summary", "claims", "params"}) EXPECT_TRUE(o.contains(k)) << k;
+    for (const auto& p : o.at("params"))
+      for (const char* k : {"name", "kind", "default", "doc"}) EXPECT_TRUE(p.contains(k)) << o["name"] << " " << k;
+    if (o.at("name") == "havs") {
+      saw_havs = true;
+      const auto& k = o.at("params").at(0);
+      EXPECT_EQ(k.at("name"), "k");
+      EXPECT_EQ(k.at("kind"), "int");
+      EXPECT_EQ(k.at("default"), 2);
+      EXPECT_EQ(k.at("range"), nlohmann::json::array({1, 16}));
+    }
+    if (o.at("name") == "xmpvo") EXPECT_EQ(o.at("claims").at("object_exact"), true);
+  }
+  EXPECT_TRUE(saw_havs);
+  EXPECT_FALSE(j.at("datasets").empty());
+  EXPECT_FALSE(j.at("experiments").empty());
+  const Outcome text = vobench("list");
+  EXPECT_NE(text.out.find("k=2 (1..16): k-buffer entries per pixel"), std::string::npos) << text.out;
+}
+
+// The record's "parameters" lists every declared parameter with its effective value.
+TEST(Cli, OrderJsonParametersAreTheResolvedSpec) {
+  const fs::path out = scratch("order_params.json");
+  const Outcome r = vobench(std::string("order --algorithm vtk-centroid:chunk=7 ") + kSmallGap +
+                            " --views 4 --view-index 1 --size 32x32 -o " + out.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  std::ifstream f(out);
+  const auto j = nlohmann::json::parse(f);
+  EXPECT_EQ(j.at("parameters"), (nlohmann::json{{"chunk", 7}}));
+}
+
 TEST(Cli, CheckPassesExactOrderAndExitsZero) {
   const Outcome r = vobench(std::string("check --algorithm mpvo ") + kSmallGap + " --views 4 --size 64x64");
   EXPECT_EQ(r.code, 0) << r.out;
