@@ -4,6 +4,13 @@
 
 namespace vob::stencil {
 
+nlohmann::json extract_parameters(const std::string& backend, const ExtractOptions& opt) {
+  nlohmann::json j{{"backend", backend}, {"variant", opt.blocked ? "blocked" : "naive"}};
+  if (opt.blocked) j["block"] = opt.block;
+  j["cycles"] = opt.break_cycles ? "break" : "stop";
+  return j;
+}
+
 PixelRect LayerExtractor::block_rect(int32_t b) const {
   if (whole_) return {0, 0, w_, h_};
   const int bx = b % bw_, by = b / bw_;

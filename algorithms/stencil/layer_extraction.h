@@ -42,7 +42,10 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "algorithms/stencil/layer_backend.h"
 #include "harness/bench/phase_clock.h"
@@ -59,6 +62,9 @@ struct ExtractOptions {
   // fewest pixels (G(p) != C(p)), of those the one front-most at the most pixels.
   bool break_cycles = false;
 };
+
+// What a stencil plugin's parameters() reports: backend, variant, block, cycles.
+nlohmann::json extract_parameters(const std::string& backend, const ExtractOptions& opt);
 
 struct LayerResult {
   std::vector<int32_t> layer;           // per primitive: layer (0 = front) or -1

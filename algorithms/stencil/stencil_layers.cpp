@@ -23,12 +23,7 @@ class StencilLayers final : public Orderer {
     c.detects_cycles = true;
     return c;
   }
-  nlohmann::json parameters() const override {
-    nlohmann::json j{{"backend", backend_name_}, {"variant", opt_.blocked ? "blocked" : "naive"}};
-    if (opt_.blocked) j["block"] = opt_.block;
-    j["cycles"] = opt_.break_cycles ? "break" : "stop";
-    return j;
-  }
+  nlohmann::json parameters() const override { return extract_parameters(backend_name_, opt_); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     auto p = clock.phase("upload triangles");

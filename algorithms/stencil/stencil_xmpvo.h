@@ -16,8 +16,8 @@
 // at pixel centres (Cook et al.'s SXMPVO pairs the same consecutive entries), one ray per
 // pixel as the paper says.
 //
-// Prepare: "unique faces", "face planes", "exterior face list" (boundary faces, owner cells,
-// upload to the backend).
+// Prepare: "unique faces", "face planes", "exterior faces" (the Scene's: boundary faces and
+// owner cells), "upload" (to the backend).
 // Phases: "I create partial order" (MPVO arrows), "render", "read", "scan" (layer
 // extraction; the scan also records the pixel pairs), "relations" (deduplicate, CSR),
 // "DFS".

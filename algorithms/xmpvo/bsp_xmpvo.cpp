@@ -70,22 +70,16 @@ class BspXmpvoOrderer final : public Orderer {
   }
   std::string name() const override { return "bsp-xmpvo"; }
   SceneKind scene_kind() const override { return SceneKind::Cells; }
-  Claims claims() const override {
-    Claims c;
-    c.object_exact = true;
-    c.detects_cycles = true;
-    return c;
-  }
+  Claims claims() const override { return mpvo::core_claims(true, false); }
   nlohmann::json parameters() const override {
     return {{"candidates", opt_.candidates}, {"sample", opt_.sample}, {"split_weight", opt_.split_weight}, {"stop", stop_when_covered_}};
   }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
-    { auto p = clock.phase("unique faces"); scene.faces(); }
-    { auto p = clock.phase("face planes"); scene.face_planes(); }
-    core_.bind(scene);
+    core_.prepare(scene, clock);
+    { auto p = clock.phase("exterior faces"); scene.exterior_faces(); }
     auto p = clock.phase("BSP build");
-    tree_ = BspTree::build(scene.mesh(), scene.faces(), opt_);
+    tree_ = BspTree::build(scene.exterior_faces(), opt_);
     const size_t b = tree_.triangles().size();
     facing_.assign(b, 0);
     usable_.assign(b, 0);
