@@ -10,7 +10,7 @@
 #include "algorithms/xmpvo/bsp_tree.h"
 #include "datasets/datasets.h"
 #include "harness/geometry/predicates.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 using namespace vob::xmpvo;

@@ -9,7 +9,7 @@
 #include "datasets/io/inr_reader.h"
 #include "datasets/io/tetgen_bridge.h"
 #include "datasets/io/vtk_io.h"
-#include "tests/datasets/test_util.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::test;

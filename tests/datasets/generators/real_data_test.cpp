@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "harness/scene/mesh_faces.h"
-#include "tests/datasets/test_util.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::test;

@@ -6,7 +6,7 @@
 #include "datasets/generators/gap.h"
 #include "datasets/generators/helix.h"
 #include "harness/scene/mesh_faces.h"
-#include "tests/datasets/test_util.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::test;

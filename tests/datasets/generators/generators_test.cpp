@@ -8,7 +8,7 @@
 #include "harness/oracle/sequences.h"
 #include "harness/scene/mesh_faces.h"
 #include "harness/view/view_set.h"
-#include "tests/datasets/test_util.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::test;

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "datasets/datasets.h"
-#include "tests/harness/scene/overlap_meshes.h"
+#include "tests/support/test_meshes.h"
 
 namespace fs = std::filesystem;
 

@@ -5,7 +5,7 @@
 #include <numeric>
 
 #include "harness/geometry/predicates.h"
-#include "tests/datasets/test_util.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::test;
