@@ -114,6 +114,18 @@ struct GlBackend::Impl {
     gl.glClearBufferfi(GL_DEPTH_STENCIL, 0, depth, 0);
   }
 
+  // Our rows [r.y, r.y + r.h) of the upside-down image (see begin_frame), read in one call
+  // through `rows` and copied into dst (w values a row) in reverse row order.
+  template <class T>
+  void read_rows(const PixelRect& r, GLenum format, GLenum type, std::vector<T>& rows, T* dst) {
+    rows.resize(size_t(r.w) * r.h);
+    gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    gl.glReadPixels(r.x, h - r.y - r.h, r.w, r.h, format, type, rows.data());
+    for (int k = 0; k < r.h; ++k)
+      std::memcpy(dst + size_t(r.y + k) * w + r.x, &rows[size_t(r.h - 1 - k) * r.w], size_t(r.w) * sizeof(T));
+  }
+
   void draw(const std::vector<int32_t>& ids) {
     index.clear();
     for (int32_t id : ids)
@@ -240,23 +252,11 @@ void GlBackend::finish() {
 // The image is drawn upside down (see begin_frame): our rows [y, y + h) are GL rows
 // [H - y - h, H - y), read in one call and copied back in reverse row order.
 void GlBackend::read_colour(const PixelRect& r, uint32_t* dst) {
-  Impl& g = *impl_;
-  g.rows32.resize(size_t(r.w) * r.h);
-  g.gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  g.gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  g.gl.glReadPixels(r.x, g.h - r.y - r.h, r.w, r.h, GL_RED_INTEGER, GL_UNSIGNED_INT, g.rows32.data());
-  for (int k = 0; k < r.h; ++k)
-    std::memcpy(dst + size_t(r.y + k) * g.w + r.x, &g.rows32[size_t(r.h - 1 - k) * r.w], size_t(r.w) * 4);
+  impl_->read_rows(r, GL_RED_INTEGER, GL_UNSIGNED_INT, impl_->rows32, dst);
 }
 
 void GlBackend::read_stencil(const PixelRect& r, uint8_t* dst) {
-  Impl& g = *impl_;
-  g.rows8.resize(size_t(r.w) * r.h);
-  g.gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  g.gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  g.gl.glReadPixels(r.x, g.h - r.y - r.h, r.w, r.h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, g.rows8.data());
-  for (int k = 0; k < r.h; ++k)
-    std::memcpy(dst + size_t(r.y + k) * g.w + r.x, &g.rows8[size_t(r.h - 1 - k) * r.w], size_t(r.w));
+  impl_->read_rows(r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, impl_->rows8, dst);
 }
 
 size_t GlBackend::bytes() const {

@@ -69,21 +69,8 @@ class StencilXmpvo final : public Orderer {
       core_.dfs_all(out, &extra_);
     }
     core_.add_counters(out);
+    add_layer_counters(result_, out);
     auto& k = out.counters;
-    k["layers"] = result_.layers;
-    k["candidate_passes"] = double(result_.candidate_passes);
-    k["complexity_passes"] = double(result_.complexity_passes);
-    k["passes"] = double(result_.candidate_passes + result_.complexity_passes);
-    k["reads"] = double(result_.reads);
-    k["pixels_read"] = double(result_.pixels_read);
-    k["blocks_read"] = double(result_.blocks_read);
-    k["covered_pixels"] = double(result_.covered_pixels);
-    k["average_depth_complexity"] = result_.average_depth_complexity();
-    k["max_stencil"] = result_.max_stencil;
-    k["removals"] = double(result_.removals);
-    k["uncovered_removals"] = double(result_.uncovered_removals);
-    k["tie_pixels"] = double(result_.tie_pixels);
-    k["forced"] = double(result_.forced.size());
     k["exterior_faces"] = double(b);
     k["pixel_pairs"] = double(pixel_pairs);
     k["relations"] = double(rel_.size());

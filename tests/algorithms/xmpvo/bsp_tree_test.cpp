@@ -11,18 +11,13 @@
 #include "datasets/datasets.h"
 #include "harness/geometry/predicates.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::xmpvo;
 using namespace vob::testing;
 
 namespace {
-
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
 
 // Builds with exact fragments kept and checks the invariants; returns the tree.
 BspTree check_tree(const Scene& s, BspOptions opt = {}) {

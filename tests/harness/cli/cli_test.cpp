@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/test_util.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -18,14 +20,8 @@ struct Outcome {
 };
 
 Outcome vobench(const std::string& args) {
-  const std::string cmd = std::string(VOB_BINARY) + " " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const vob::test::CommandOutput r = vob::test::run_command(std::string(VOB_BINARY) + " " + args + " 2>&1");
+  return {r.code, r.out};
 }
 
 fs::path scratch(const std::string& name) {

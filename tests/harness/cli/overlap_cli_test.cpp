@@ -15,6 +15,7 @@
 
 #include "datasets/datasets.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 namespace fs = std::filesystem;
 
@@ -27,15 +28,10 @@ struct Outcome {
 Outcome vobench(const std::string& args) {
   const fs::path err = fs::temp_directory_path() / ("vobench_overlap_err_" + std::to_string(getpid()));
   const std::string cmd = std::string(VOB_BINARY) + " " + args + " 2>" + err.string();
-  FILE* p = popen(cmd.c_str(), "r");
-  std::string out;
-  char buf[4096];
-  size_t n;
-  while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-  const int status = pclose(p);
+  const vob::test::CommandOutput r = vob::test::run_command(cmd);
   std::ifstream in(err);
   std::string e((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out, e};
+  return {r.code, r.out, e};
 }
 
 fs::path scratch(const std::string& name) {
