@@ -6,20 +6,12 @@
 namespace vob {
 namespace {
 
-Claims mpvo_claims() {
-  Claims c;
-  c.detects_cycles = true;
-  return c;
-}
-
 class MpvoOrderer final : public Orderer {
  public:
-  Claims claims() const override { return mpvo_claims(); }
+  Claims claims() const override { return mpvo::core_claims(false, false); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
-    { auto p = clock.phase("unique faces"); scene.faces(); }
-    { auto p = clock.phase("face planes"); scene.face_planes(); }
-    core_.bind(scene);
+    core_.prepare(scene, clock);
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
@@ -44,13 +36,11 @@ class MpvoOrderer final : public Orderer {
 
 class MpvoncOrderer final : public Orderer {
  public:
-  Claims claims() const override { return mpvo_claims(); }
+  Claims claims() const override { return mpvo::core_claims(false, false); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
-    { auto p = clock.phase("unique faces"); scene.faces(); }
-    { auto p = clock.phase("face planes"); scene.face_planes(); }
+    core_.prepare(scene, clock);
     { auto p = clock.phase("cell centroids"); scene.cell_centroids(); }
-    core_.bind(scene);
     centroids_ = &core_.scene().cell_centroids().points;
     marked_.assign(scene.mesh().num_cells(), 0);
   }

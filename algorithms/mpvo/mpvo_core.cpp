@@ -37,6 +37,12 @@ size_t ExtraRelations::bytes() const {
          not_sink.capacity();
 }
 
+void MpvoCore::prepare(const Scene& scene, PhaseClock& clock) {
+  { auto p = clock.phase("unique faces"); scene.faces(); }
+  { auto p = clock.phase("face planes"); scene.face_planes(); }
+  bind(scene);
+}
+
 void MpvoCore::bind(const Scene& scene) {
   scene_ = scene;
   mesh_ = &scene_.mesh();

@@ -55,6 +55,15 @@ struct ExtraRelations {
   size_t bytes() const;
 };
 
+// The claims of an orderer built on MpvoCore: it detects (and breaks) cycles.
+inline Claims core_claims(bool object_exact, bool image_exact) {
+  Claims c;
+  c.object_exact = object_exact;
+  c.image_exact = image_exact;
+  c.detects_cycles = true;
+  return c;
+}
+
 class MpvoCore {
  public:
   // Relative error bound of the double sign test, as a fraction of the magnitudes of the
@@ -67,6 +76,9 @@ class MpvoCore {
   // (callers build them first inside their own prepare phases so the time is attributed).
   // Keeps a copy of the Scene handle, which shares the data and the derived structures.
   void bind(const Scene& scene);
+  // bind() after the prepare phases "unique faces" and "face planes" (timed in `clock`):
+  // the start of every MPVO-family plugin's prepare.
+  void prepare(const Scene& scene, PhaseClock& clock);
   const Scene& scene() const { return scene_; }
   size_t num_cells() const { return outbound_.size(); }
   const MeshFaces& faces() const { return *faces_; }

@@ -1,15 +1,18 @@
 #include "algorithms/stencil/gl_backend.h"
 
-#include <GL/glcorearb.h>
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
 
+#include "harness/gl/gl_functions.h"
 #include "harness/gl/osmesa_context.h"
+#include "harness/gl/shader_program.h"
+#include "harness/gl/view_projection.h"
+#include "algorithms/stencil/shaders.h"
 #include "algorithms/stencil/software_backend.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/scene/input_error.h"
@@ -18,88 +21,16 @@ namespace vob::stencil {
 
 namespace {
 
-const char* kVertexShader = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in uint item;
-uniform mat4 mvp;
-flat out uint v_item;
-void main() {
-  gl_Position = mvp * vec4(position, 1.0);
-  v_item = item;
-}
-)";
-
-const char* kFragmentShader = R"(#version 330 core
-flat in uint v_item;
-layout(location = 0) out uint colour;
-void main() { colour = v_item + 1u; }
-)";
-
 struct Vertex {
   float x, y, z;
   uint32_t item;
 };
 
-constexpr double kPi = 3.14159265358979323846;
-
 }  // namespace
 
 struct GlBackend::Impl {
   gl::OsmesaContext ctx{gl::ContextRequest{64, 64, 3, 3, true, 24, 8}};
-#define VOB_GL_FN(type, name) type name = ctx.load<type>(#name)
-  VOB_GL_FN(PFNGLGETERRORPROC, glGetError);
-  VOB_GL_FN(PFNGLGENFRAMEBUFFERSPROC, glGenFramebuffers);
-  VOB_GL_FN(PFNGLDELETEFRAMEBUFFERSPROC, glDeleteFramebuffers);
-  VOB_GL_FN(PFNGLBINDFRAMEBUFFERPROC, glBindFramebuffer);
-  VOB_GL_FN(PFNGLGENRENDERBUFFERSPROC, glGenRenderbuffers);
-  VOB_GL_FN(PFNGLDELETERENDERBUFFERSPROC, glDeleteRenderbuffers);
-  VOB_GL_FN(PFNGLBINDRENDERBUFFERPROC, glBindRenderbuffer);
-  VOB_GL_FN(PFNGLRENDERBUFFERSTORAGEPROC, glRenderbufferStorage);
-  VOB_GL_FN(PFNGLFRAMEBUFFERRENDERBUFFERPROC, glFramebufferRenderbuffer);
-  VOB_GL_FN(PFNGLCHECKFRAMEBUFFERSTATUSPROC, glCheckFramebufferStatus);
-  VOB_GL_FN(PFNGLDRAWBUFFERSPROC, glDrawBuffers);
-  VOB_GL_FN(PFNGLREADBUFFERPROC, glReadBuffer);
-  VOB_GL_FN(PFNGLCREATESHADERPROC, glCreateShader);
-  VOB_GL_FN(PFNGLSHADERSOURCEPROC, glShaderSource);
-  VOB_GL_FN(PFNGLCOMPILESHADERPROC, glCompileShader);
-  VOB_GL_FN(PFNGLGETSHADERIVPROC, glGetShaderiv);
-  VOB_GL_FN(PFNGLGETSHADERINFOLOGPROC, glGetShaderInfoLog);
-  VOB_GL_FN(PFNGLDELETESHADERPROC, glDeleteShader);
-  VOB_GL_FN(PFNGLCREATEPROGRAMPROC, glCreateProgram);
-  VOB_GL_FN(PFNGLATTACHSHADERPROC, glAttachShader);
-  VOB_GL_FN(PFNGLLINKPROGRAMPROC, glLinkProgram);
-  VOB_GL_FN(PFNGLGETPROGRAMIVPROC, glGetProgramiv);
-  VOB_GL_FN(PFNGLGETPROGRAMINFOLOGPROC, glGetProgramInfoLog);
-  VOB_GL_FN(PFNGLDELETEPROGRAMPROC, glDeleteProgram);
-  VOB_GL_FN(PFNGLUSEPROGRAMPROC, glUseProgram);
-  VOB_GL_FN(PFNGLGETUNIFORMLOCATIONPROC, glGetUniformLocation);
-  VOB_GL_FN(PFNGLUNIFORMMATRIX4FVPROC, glUniformMatrix4fv);
-  VOB_GL_FN(PFNGLGENVERTEXARRAYSPROC, glGenVertexArrays);
-  VOB_GL_FN(PFNGLDELETEVERTEXARRAYSPROC, glDeleteVertexArrays);
-  VOB_GL_FN(PFNGLBINDVERTEXARRAYPROC, glBindVertexArray);
-  VOB_GL_FN(PFNGLGENBUFFERSPROC, glGenBuffers);
-  VOB_GL_FN(PFNGLDELETEBUFFERSPROC, glDeleteBuffers);
-  VOB_GL_FN(PFNGLBINDBUFFERPROC, glBindBuffer);
-  VOB_GL_FN(PFNGLBUFFERDATAPROC, glBufferData);
-  VOB_GL_FN(PFNGLVERTEXATTRIBPOINTERPROC, glVertexAttribPointer);
-  VOB_GL_FN(PFNGLVERTEXATTRIBIPOINTERPROC, glVertexAttribIPointer);
-  VOB_GL_FN(PFNGLENABLEVERTEXATTRIBARRAYPROC, glEnableVertexAttribArray);
-  VOB_GL_FN(PFNGLDRAWELEMENTSPROC, glDrawElements);
-  VOB_GL_FN(PFNGLVIEWPORTPROC, glViewport);
-  VOB_GL_FN(PFNGLENABLEPROC, glEnable);
-  VOB_GL_FN(PFNGLDISABLEPROC, glDisable);
-  VOB_GL_FN(PFNGLDEPTHFUNCPROC, glDepthFunc);
-  VOB_GL_FN(PFNGLDEPTHMASKPROC, glDepthMask);
-  VOB_GL_FN(PFNGLSTENCILFUNCPROC, glStencilFunc);
-  VOB_GL_FN(PFNGLSTENCILOPPROC, glStencilOp);
-  VOB_GL_FN(PFNGLSTENCILMASKPROC, glStencilMask);
-  VOB_GL_FN(PFNGLCLEARBUFFERUIVPROC, glClearBufferuiv);
-  VOB_GL_FN(PFNGLCLEARBUFFERFIPROC, glClearBufferfi);
-  VOB_GL_FN(PFNGLFINISHPROC, glFinish);
-  VOB_GL_FN(PFNGLREADPIXELSPROC, glReadPixels);
-  VOB_GL_FN(PFNGLPIXELSTOREIPROC, glPixelStorei);
-  VOB_GL_FN(PFNGLGETSTRINGPROC, glGetString);
-#undef VOB_GL_FN
+  gl::Functions gl{ctx};
 
   GLuint program = 0, vao = 0, vbo = 0, ibo = 0, fbo = 0, colour_rb = 0, depth_rb = 0;
   GLint mvp_loc = -1;
@@ -113,107 +44,94 @@ struct GlBackend::Impl {
   Vec3 centre{};
   double radius = 1;
 
-  void check(const char* what) {
-    const GLenum e = glGetError();
-    if (e != GL_NO_ERROR)
-      throw std::runtime_error(std::string("OpenGL error 0x") + [&] {
-        char b[16];
-        std::snprintf(b, sizeof b, "%x", unsigned(e));
-        return std::string(b);
-      }() + " in " + what);
-  }
-
-  GLuint compile(GLenum type, const char* src) {
-    const GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &src, nullptr);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-      char log[1024] = {};
-      glGetShaderInfoLog(s, sizeof log, nullptr, log);
-      throw std::runtime_error(std::string("OpenGL: shader does not compile: ") + log);
-    }
-    return s;
-  }
-
   Impl() {
-    const GLuint vs = compile(GL_VERTEX_SHADER, kVertexShader);
-    const GLuint fs = compile(GL_FRAGMENT_SHADER, kFragmentShader);
-    program = glCreateProgram();
-    glAttachShader(program, vs);
-    glAttachShader(program, fs);
-    glLinkProgram(program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (!ok) {
-      char log[1024] = {};
-      glGetProgramInfoLog(program, sizeof log, nullptr, log);
-      throw std::runtime_error(std::string("OpenGL: program does not link: ") + log);
-    }
-    mvp_loc = glGetUniformLocation(program, "mvp");
-    glGenVertexArrays(1, &vao);
-    glBindVertexArray(vao);
-    glGenBuffers(1, &vbo);
-    glGenBuffers(1, &ibo);
-    glBindBuffer(GL_ARRAY_BUFFER, vbo);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-    glVertexAttribIPointer(1, 1, GL_UNSIGNED_INT, sizeof(Vertex),
-                           reinterpret_cast<const void*>(offsetof(Vertex, item)));
-    glEnableVertexAttribArray(0);
-    glEnableVertexAttribArray(1);
-    glGenFramebuffers(1, &fbo);
-    glGenRenderbuffers(1, &colour_rb);
-    glGenRenderbuffers(1, &depth_rb);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
-    glDisable(GL_MULTISAMPLE);
-    glDisable(GL_DITHER);
-    check("setup");
+    program = gl::link_program(gl, {gl::shader_stage(GL_VERTEX_SHADER, {shaders::item_vert}),
+                                    gl::shader_stage(GL_FRAGMENT_SHADER, {shaders::item_frag})});
+    mvp_loc = gl.glGetUniformLocation(program, "mvp");
+    gl.glGenVertexArrays(1, &vao);
+    gl.glBindVertexArray(vao);
+    gl.glGenBuffers(1, &vbo);
+    gl.glGenBuffers(1, &ibo);
+    gl.glBindBuffer(GL_ARRAY_BUFFER, vbo);
+    gl.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo);
+    gl.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
+    gl.glVertexAttribIPointer(1, 1, GL_UNSIGNED_INT, sizeof(Vertex),
+                              reinterpret_cast<const void*>(offsetof(Vertex, item)));
+    gl.glEnableVertexAttribArray(0);
+    gl.glEnableVertexAttribArray(1);
+    gl.glGenFramebuffers(1, &fbo);
+    gl.glGenRenderbuffers(1, &colour_rb);
+    gl.glGenRenderbuffers(1, &depth_rb);
+    gl.glDisable(GL_CULL_FACE);
+    gl.glDisable(GL_BLEND);
+    gl.glDisable(GL_MULTISAMPLE);
+    gl.glDisable(GL_DITHER);
+    gl.check("setup");
   }
 
   ~Impl() {
     ctx.make_current();
-    glDeleteRenderbuffers(1, &colour_rb);
-    glDeleteRenderbuffers(1, &depth_rb);
-    glDeleteFramebuffers(1, &fbo);
-    glDeleteBuffers(1, &vbo);
-    glDeleteBuffers(1, &ibo);
-    glDeleteVertexArrays(1, &vao);
-    glDeleteProgram(program);
+    gl.glDeleteRenderbuffers(1, &colour_rb);
+    gl.glDeleteRenderbuffers(1, &depth_rb);
+    gl.glDeleteFramebuffers(1, &fbo);
+    gl.glDeleteBuffers(1, &vbo);
+    gl.glDeleteBuffers(1, &ibo);
+    gl.glDeleteVertexArrays(1, &vao);
+    gl.glDeleteProgram(program);
   }
 
   void resize(int width, int height) {
     if (width == w && height == h) return;
     w = width;
     h = height;
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour_rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, w, h);
-    glBindRenderbuffer(GL_RENDERBUFFER, depth_rb);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_rb);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_rb);
-    const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.glBindRenderbuffer(GL_RENDERBUFFER, colour_rb);
+    gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, w, h);
+    gl.glBindRenderbuffer(GL_RENDERBUFFER, depth_rb);
+    gl.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, w, h);
+    gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_rb);
+    gl.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_rb);
+    const GLenum status = gl.glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("OpenGL: R32UI + DEPTH24_STENCIL8 framebuffer of " +
                                std::to_string(w) + "x" + std::to_string(h) + " is incomplete");
     const GLenum buf = GL_COLOR_ATTACHMENT0;
-    glDrawBuffers(1, &buf);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glViewport(0, 0, w, h);
-    check("framebuffer");
+    gl.glDrawBuffers(1, &buf);
+    gl.glReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl.glViewport(0, 0, w, h);
+    gl.check("framebuffer");
+  }
+
+  // Start of both passes: depth test and writes on, colour 0, depth `depth`, stencil 0.
+  void clear(bool stencil_test, float depth) {
+    const GLuint zero[4] = {0, 0, 0, 0};
+    if (stencil_test) gl.glEnable(GL_STENCIL_TEST);
+    else gl.glDisable(GL_STENCIL_TEST);
+    gl.glEnable(GL_DEPTH_TEST);
+    gl.glDepthMask(GL_TRUE);
+    gl.glStencilMask(~0u);
+    gl.glClearBufferuiv(GL_COLOR, 0, zero);
+    gl.glClearBufferfi(GL_DEPTH_STENCIL, 0, depth, 0);
+  }
+
+  // Our rows [r.y, r.y + r.h) of the upside-down image (see begin_frame), read in one call
+  // through `rows` and copied into dst (w values a row) in reverse row order.
+  template <class T>
+  void read_rows(const PixelRect& r, GLenum format, GLenum type, std::vector<T>& rows, T* dst) {
+    rows.resize(size_t(r.w) * r.h);
+    gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    gl.glReadPixels(r.x, h - r.y - r.h, r.w, r.h, format, type, rows.data());
+    for (int k = 0; k < r.h; ++k)
+      std::memcpy(dst + size_t(r.y + k) * w + r.x, &rows[size_t(r.h - 1 - k) * r.w], size_t(r.w) * sizeof(T));
   }
 
   void draw(const std::vector<int32_t>& ids) {
     index.clear();
     for (int32_t id : ids)
       for (uint32_t k = 0; k < count[id]; ++k) index.push_back(first[id] + k);
-    glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(index.size() * 4), index.data(), GL_STREAM_DRAW);
-    if (!index.empty()) glDrawElements(GL_TRIANGLES, GLsizei(index.size()), GL_UNSIGNED_INT, nullptr);
+    gl.glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(index.size() * 4), index.data(), GL_STREAM_DRAW);
+    if (!index.empty()) gl.glDrawElements(GL_TRIANGLES, GLsizei(index.size()), GL_UNSIGNED_INT, nullptr);
   }
 };
 
@@ -232,7 +150,7 @@ GlBackend::~GlBackend() = default;
 
 std::string GlBackend::renderer() const {
   auto s = [&](GLenum e) {
-    const auto* p = impl_->glGetString(e);
+    const auto* p = impl_->gl.glGetString(e);
     return p ? std::string(reinterpret_cast<const char*>(p)) : std::string();
   };
   return s(GL_RENDERER) + ", " + s(GL_VERSION);
@@ -272,10 +190,10 @@ void GlBackend::set_primitives(const std::vector<Vec3>& points, const std::vecto
       g.count[i] = 6;
     }
   }
-  g.glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
-  g.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(Vertex)), v.data(), GL_STATIC_DRAW);
+  g.gl.glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
+  g.gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(Vertex)), v.data(), GL_STATIC_DRAW);
   g.vertex_bytes = v.size() * sizeof(Vertex);
-  g.check("vertex upload");
+  g.gl.check("vertex upload");
 }
 
 void GlBackend::begin_frame(const Camera& view) {
@@ -283,107 +201,62 @@ void GlBackend::begin_frame(const Camera& view) {
   view.validate();
   g.ctx.make_current();
   g.resize(view.width, view.height);
-  g.glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
-  g.glUseProgram(g.program);
-  g.glBindVertexArray(g.vao);
-  // Model-view-projection in doubles: world = position + centre.
-  const Vec3 f = view.forward(), r = view.right(), u = view.true_up();
-  const Vec3 e = view.eye - g.centre;  // eye in the uploaded frame
-  const double aspect = double(view.width) / view.height;
-  const double d = dot(-e, f);  // view depth of the centre
-  double n, fa;
-  double P[4][4] = {};
+  g.gl.glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
+  g.gl.glUseProgram(g.program);
+  g.gl.glBindVertexArray(g.vao);
+  // Model-view-projection in doubles (world = position + centre), near and far planes
+  // around the scene's bounding sphere. Upside down: GL row H-1-j is our row j.
+  // llvmpipe's fill rule owns the edges that are bottom edges in GL's y-up window (D3D's
+  // top-left rule in a y-down frame); the harness owns top and left edges (y up). Flipping
+  // y makes the two rules the same.
+  gl::ProjectionOptions po;
+  po.origin = g.centre;
+  po.depth = true;
+  po.flip_y = true;
+  const double d = dot(g.centre - view.eye, view.forward());  // view depth of the centre
   if (view.ortho) {
-    n = std::max(d - 1.01 * g.radius, 0.0);
-    fa = std::max(d + 1.01 * g.radius, n + 1e-6 * g.radius);
-    const double hh = 0.5 * view.ortho_height, hw = hh * aspect;
-    P[0][0] = 1 / hw;
-    P[1][1] = 1 / hh;
-    P[2][2] = -2 / (fa - n);
-    P[2][3] = -(fa + n) / (fa - n);
-    P[3][3] = 1;
+    po.near = std::max(d - 1.01 * g.radius, 0.0);
+    po.far = std::max(d + 1.01 * g.radius, po.near + 1e-6 * g.radius);
   } else {
-    n = std::max(d - 1.01 * g.radius, 1e-3 * g.radius);
-    fa = std::max(d + 1.01 * g.radius, 2 * n);
-    const double th = std::tan(0.5 * view.fov_deg * kPi / 180.0);
-    P[0][0] = 1 / (th * aspect);
-    P[1][1] = 1 / th;
-    P[2][2] = (fa + n) / (n - fa);
-    P[2][3] = 2 * fa * n / (n - fa);
-    P[3][2] = -1;
+    po.near = std::max(d - 1.01 * g.radius, 1e-3 * g.radius);
+    po.far = std::max(d + 1.01 * g.radius, 2 * po.near);
   }
-  // Upside down: GL row H-1-j is our row j. llvmpipe's fill rule owns the edges that are
-  // bottom edges in GL's y-up window (D3D's top-left rule in a y-down frame); the harness
-  // owns top and left edges (y up). Flipping y makes the two rules the same.
-  for (int j = 0; j < 4; ++j) P[1][j] = -P[1][j];
-  const double V[4][4] = {{r.x, r.y, r.z, -dot(r, e)},
-                          {u.x, u.y, u.z, -dot(u, e)},
-                          {-f.x, -f.y, -f.z, dot(f, e)},
-                          {0, 0, 0, 1}};
+  const std::array<double, 16> md = gl::view_projection(view, po);
   float m[16];
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) {
-      double s = 0;
-      for (int k = 0; k < 4; ++k) s += P[i][k] * V[k][j];
-      m[j * 4 + i] = float(s);  // column-major
-    }
-  g.glUniformMatrix4fv(g.mvp_loc, 1, GL_FALSE, m);
-  g.check("begin frame");
+  for (int i = 0; i < 16; ++i) m[i] = float(md[i]);
+  g.gl.glUniformMatrix4fv(g.mvp_loc, 1, GL_FALSE, m);
+  g.gl.check("begin frame");
 }
 
 void GlBackend::render_candidates(const std::vector<int32_t>& ids) {
   Impl& g = *impl_;
-  const GLuint zero[4] = {0, 0, 0, 0};
-  g.glDisable(GL_STENCIL_TEST);
-  g.glEnable(GL_DEPTH_TEST);
-  g.glDepthMask(GL_TRUE);
-  g.glStencilMask(~0u);
-  g.glClearBufferuiv(GL_COLOR, 0, zero);
-  g.glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  g.glDepthFunc(GL_LESS);
+  g.clear(false, 1.0f);
+  g.gl.glDepthFunc(GL_LESS);
   g.draw(ids);
 }
 
 void GlBackend::render_complexity(const std::vector<int32_t>& ids) {
   Impl& g = *impl_;
-  const GLuint zero[4] = {0, 0, 0, 0};
-  g.glEnable(GL_STENCIL_TEST);
-  g.glEnable(GL_DEPTH_TEST);
-  g.glDepthMask(GL_TRUE);
-  g.glStencilMask(~0u);
-  g.glClearBufferuiv(GL_COLOR, 0, zero);
-  g.glClearBufferfi(GL_DEPTH_STENCIL, 0, 0.0f, 0);
-  g.glStencilFunc(GL_ALWAYS, ~0, ~0u);
-  g.glStencilOp(GL_KEEP, GL_INCR, GL_INCR);
-  g.glDepthFunc(GL_GEQUAL);
+  g.clear(true, 0.0f);
+  g.gl.glStencilFunc(GL_ALWAYS, ~0, ~0u);
+  g.gl.glStencilOp(GL_KEEP, GL_INCR, GL_INCR);
+  g.gl.glDepthFunc(GL_GEQUAL);
   g.draw(ids);
 }
 
 void GlBackend::finish() {
-  impl_->glFinish();
-  impl_->check("rendering");
+  impl_->gl.glFinish();
+  impl_->gl.check("rendering");
 }
 
 // The image is drawn upside down (see begin_frame): our rows [y, y + h) are GL rows
 // [H - y - h, H - y), read in one call and copied back in reverse row order.
 void GlBackend::read_colour(const PixelRect& r, uint32_t* dst) {
-  Impl& g = *impl_;
-  g.rows32.resize(size_t(r.w) * r.h);
-  g.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  g.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  g.glReadPixels(r.x, g.h - r.y - r.h, r.w, r.h, GL_RED_INTEGER, GL_UNSIGNED_INT, g.rows32.data());
-  for (int k = 0; k < r.h; ++k)
-    std::memcpy(dst + size_t(r.y + k) * g.w + r.x, &g.rows32[size_t(r.h - 1 - k) * r.w], size_t(r.w) * 4);
+  impl_->read_rows(r, GL_RED_INTEGER, GL_UNSIGNED_INT, impl_->rows32, dst);
 }
 
 void GlBackend::read_stencil(const PixelRect& r, uint8_t* dst) {
-  Impl& g = *impl_;
-  g.rows8.resize(size_t(r.w) * r.h);
-  g.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  g.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-  g.glReadPixels(r.x, g.h - r.y - r.h, r.w, r.h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, g.rows8.data());
-  for (int k = 0; k < r.h; ++k)
-    std::memcpy(dst + size_t(r.y + k) * g.w + r.x, &g.rows8[size_t(r.h - 1 - k) * r.w], size_t(r.w));
+  impl_->read_rows(r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, impl_->rows8, dst);
 }
 
 size_t GlBackend::bytes() const {

@@ -4,6 +4,32 @@
 
 namespace vob::stencil {
 
+void add_layer_counters(const LayerResult& r, Ordering& out) {
+  auto& k = out.counters;
+  k["layers"] = r.layers;
+  k["candidate_passes"] = double(r.candidate_passes);
+  k["complexity_passes"] = double(r.complexity_passes);
+  k["passes"] = double(r.candidate_passes + r.complexity_passes);
+  k["reads"] = double(r.reads);
+  k["pixels_read"] = double(r.pixels_read);
+  k["blocks_read"] = double(r.blocks_read);
+  k["covered_pixels"] = double(r.covered_pixels);
+  k["fragments"] = double(r.fragments);
+  k["average_depth_complexity"] = r.average_depth_complexity();
+  k["max_stencil"] = r.max_stencil;
+  k["removals"] = double(r.removals);
+  k["uncovered_removals"] = double(r.uncovered_removals);
+  k["tie_pixels"] = double(r.tie_pixels);
+  k["forced"] = double(r.forced.size());
+}
+
+nlohmann::json extract_parameters(const std::string& backend, const ExtractOptions& opt) {
+  nlohmann::json j{{"backend", backend}, {"variant", opt.blocked ? "blocked" : "naive"}};
+  if (opt.blocked) j["block"] = opt.block;
+  j["cycles"] = opt.break_cycles ? "break" : "stop";
+  return j;
+}
+
 PixelRect LayerExtractor::block_rect(int32_t b) const {
   if (whole_) return {0, 0, w_, h_};
   const int bx = b % bw_, by = b / bw_;

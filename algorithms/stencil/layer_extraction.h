@@ -42,7 +42,10 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "algorithms/stencil/layer_backend.h"
 #include "harness/bench/param_spec.h"
@@ -88,6 +91,10 @@ struct LayerResult {
     return covered_pixels ? double(fragments) / double(covered_pixels) : 0.0;
   }
 };
+
+// The extraction's counters common to both stencil plugins (layers, passes, reads, pixels,
+// depth complexity, removals, ties, forced rounds) into out.counters.
+void add_layer_counters(const LayerResult& r, Ordering& out);
 
 // (pixel index y * W + x, primitive, layer), called for every pixel of every final layer.
 using PixelSink = std::function<void(int64_t, int32_t, int)>;

@@ -84,22 +84,8 @@ class StencilLayers final : public Orderer {
   }
 
   static void add_counters(Ordering& out, const LayerResult& r) {
+    add_layer_counters(r, out);
     auto& k = out.counters;
-    k["layers"] = r.layers;
-    k["candidate_passes"] = double(r.candidate_passes);
-    k["complexity_passes"] = double(r.complexity_passes);
-    k["passes"] = double(r.candidate_passes + r.complexity_passes);
-    k["reads"] = double(r.reads);
-    k["pixels_read"] = double(r.pixels_read);
-    k["blocks_read"] = double(r.blocks_read);
-    k["covered_pixels"] = double(r.covered_pixels);
-    k["fragments"] = double(r.fragments);
-    k["average_depth_complexity"] = r.average_depth_complexity();
-    k["max_stencil"] = r.max_stencil;
-    k["removals"] = double(r.removals);
-    k["uncovered_removals"] = double(r.uncovered_removals);
-    k["tie_pixels"] = double(r.tie_pixels);
-    k["forced"] = double(r.forced.size());
     k["unclassified"] = double(r.unclassified_visible + r.unclassified_no_pixel);
     k["unclassified_visible"] = double(r.unclassified_visible);
     k["unclassified_no_pixel"] = double(r.unclassified_no_pixel);

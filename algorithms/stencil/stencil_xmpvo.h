@@ -13,15 +13,15 @@
 // at pixel centres (Cook et al.'s SXMPVO pairs the same consecutive entries), one ray per
 // pixel as the paper says.
 //
-// Prepare: "unique faces", "face planes", "exterior face list" (boundary faces, owner cells,
-// upload to the backend).
+// Prepare: "unique faces", "face planes", "exterior faces" (the Scene's: boundary faces and
+// owner cells), "upload" (to the backend).
 // Phases: "I create partial order" (MPVO arrows), "render", "read", "scan" (layer
 // extraction; the scan also records the pixel pairs), "relations" (deduplicate, CSR),
 // "DFS".
 // Counters: MpvoCore's (exact_sign_calls, double_sign_wrong, arrows, sink_cells,
 // cycle_roots), the layer extraction's (layers, passes, reads, pixels_read, blocks_read,
-// covered_pixels, average_depth_complexity, max_stencil, removals, uncovered_removals,
-// tie_pixels, forced; see stencil-layers), exterior_faces, pixel_pairs (back/front pairs met at
+// covered_pixels, fragments, average_depth_complexity, max_stencil, removals,
+// uncovered_removals, tie_pixels, forced; see stencil-layers), exterior_faces, pixel_pairs (back/front pairs met at
 // pixels), relations (distinct cell pairs), unclassified_faces (covered a pixel but never
 // layered: their pixels lose relations), unclassified_no_pixel, bytes_pixels.
 //

@@ -22,50 +22,21 @@ constexpr double kTieRelative = 1e-9;
 
 class SxmpvoOrderer final : public Orderer {
  public:
-  Claims claims() const override {
-    Claims c;
-    c.image_exact = true;
-    c.detects_cycles = true;
-    return c;
-  }
+  Claims claims() const override { return mpvo::core_claims(false, true); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
-    { auto p = clock.phase("unique faces"); scene.faces(); }
-    { auto p = clock.phase("face planes"); scene.face_planes(); }
-    core_.bind(scene);
-    auto p = clock.phase("exterior face list");
-    const MeshFaces& faces = core_.faces();
-    const CellMesh& mesh = core_.scene().mesh();
-    ext_face_ = faces.boundary;
-    const size_t b = ext_face_.size();
+    core_.prepare(scene, clock);
+    { auto p = clock.phase("exterior faces"); ext_ = &scene.exterior_faces(); }
+    auto p = clock.phase("exterior centroids");
+    const size_t b = ext_->face.size();
     ext_centroid_.resize(b);
-    // Each record holds its face's points and owner: phase III visits the faces in depth
-    // order, and one contiguous record per face beats gathering ids and points at random.
-    ext_points_.resize(4 * b);
-    ext_size_.resize(b);
-    ext_cell_.resize(b);
-    ext_vertex_.assign(4 * b, 0);
-    std::vector<int32_t> compact(mesh.points.size(), -1);
-    boundary_points_.clear();
     for (size_t i = 0; i < b; ++i) {
-      const int32_t f = ext_face_[i];
       Vec3 c{};
-      const int n = faces.face_size(f);
-      for (int k = 0; k < n; ++k) {
-        const int32_t pid = faces.face_points(f)[k];
-        if (compact[pid] < 0) {
-          compact[pid] = static_cast<int32_t>(boundary_points_.size());
-          boundary_points_.push_back(mesh.points[pid]);
-        }
-        ext_vertex_[4 * i + k] = compact[pid];
-        ext_points_[4 * i + k] = mesh.points[pid];
-        c += ext_points_[4 * i + k];
-      }
+      const int n = ext_->size[i];
+      for (int k = 0; k < n; ++k) c += ext_->corners[4 * i + k];
       ext_centroid_[i] = c * (1.0 / n);
-      ext_size_[i] = static_cast<int8_t>(n);
-      ext_cell_[i] = faces.cell0[f];
     }
-    const Aabb box = mesh.bounds();
+    const Aabb box = scene.mesh().bounds();
     centre_ = (box.lo + box.hi) * 0.5;
     radius_ = 0.5 * length(box.hi - box.lo);
   }
@@ -91,7 +62,7 @@ class SxmpvoOrderer final : public Orderer {
     }
     core_.add_counters(out);
     auto& k = out.counters;
-    k["exterior_faces"] = static_cast<double>(ext_face_.size());
+    k["exterior_faces"] = static_cast<double>(ext_->face.size());
     k["abuffer_entries"] = static_cast<double>(abuf_.entries());
     k["head_insertions"] = static_cast<double>(abuf_.head_insertions());
     k["head_insertion_rate"] =
@@ -112,7 +83,7 @@ class SxmpvoOrderer final : public Orderer {
         static_cast<double>(core_.faces().bytes() + core_.scene().face_planes().bytes());
     k["bytes_abuffer"] = static_cast<double>(abuffer_bytes());
     k["bytes_pn"] = static_cast<double>(pn_.bytes() + extra_.bytes());
-    k["bytes_exterior"] = static_cast<double>(exterior_bytes());
+    k["bytes_exterior"] = static_cast<double>(ext_->bytes() + exterior_bytes());
     return out;
   }
 
@@ -132,17 +103,14 @@ class SxmpvoOrderer final : public Orderer {
   }
 
   size_t exterior_bytes() const {
-    return ext_face_.capacity() * 4 + ext_centroid_.capacity() * sizeof(Vec3) +
-           ext_vertex_.capacity() * 4 + boundary_points_.capacity() * sizeof(Vec3) +
-           projected_.capacity() * sizeof(ProjectedVertex) +
-           ext_points_.capacity() * sizeof(Vec3) + ext_size_.capacity() + ext_cell_.capacity() * 4 +
+    return ext_centroid_.capacity() * sizeof(Vec3) + projected_.capacity() * sizeof(ProjectedVertex) +
            sort_.bytes();
   }
 
   // Exterior faces (indices into the exterior face list), nearest centroid first.
   void sort_exterior_faces(const Camera& view) {
     const Vec3 eye = view.eye, dir = view.forward();
-    const size_t b = ext_face_.size();
+    const size_t b = ext_centroid_.size();
     sort_.resize(b);
     for (size_t i = 0; i < b; ++i) {
       const Vec3 d = ext_centroid_[i] - eye;
@@ -160,11 +128,12 @@ class SxmpvoOrderer final : public Orderer {
     // batch; appending the batches in run order gives the A-buffer exactly the arrival
     // order of a sequential scan, so lists, counts and relations do not depend on threads.
     // Each boundary point is projected once, not once per face that has it.
-    projected_.resize(boundary_points_.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, boundary_points_.size(), 8192),
+    const std::vector<Vec3>& points = ext_->points;
+    projected_.resize(points.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 8192),
                       [&](const tbb::blocked_range<size_t>& r) {
                         for (size_t k = r.begin(); k < r.end(); ++k)
-                          projected_[k] = ProjectedVertex::of(frame, boundary_points_[k]);
+                          projected_[k] = ProjectedVertex::of(frame, points[k]);
                       });
     const size_t b = sort_.ids.size();
     const size_t runs = std::max<size_t>(1, std::min<size_t>(64, b / 2048));
@@ -175,13 +144,14 @@ class SxmpvoOrderer final : public Orderer {
       PolygonRaster raster;
       for (size_t k = b * r / runs, end = b * (r + 1) / runs; k < end; ++k) {
         const int32_t i = sort_.ids[k];
-        const int s = core_.face_sign(ext_face_[i]);
+        const ExteriorFaces& ext = *ext_;
+        const int s = core_.face_sign(ext.face[i]);
         if (s == 0) continue;  // the eye is in its plane: it covers no sample
-        const int n = ext_size_[i];
+        const int n = ext.size[i];
         ProjectedVertex proj[4];
-        for (int v = 0; v < n; ++v) proj[v] = projected_[ext_vertex_[4 * i + v]];
-        if (!raster.setup(frame, &ext_points_[4 * i], n, proj)) continue;
-        const int32_t item = ext_cell_[i] * 2 + (s > 0 ? 1 : 0);
+        for (int v = 0; v < n; ++v) proj[v] = projected_[ext.vertex[4 * i + v]];
+        if (!raster.setup(frame, &ext.corners[4 * i], n, proj)) continue;
+        const int32_t item = ext.cell[i] * 2 + (s > 0 ? 1 : 0);
         raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
           batch.push_back({t, item, static_cast<int32_t>(int64_t(sy) * cols + sx)});
         });
@@ -197,14 +167,9 @@ class SxmpvoOrderer final : public Orderer {
   }
 
   mpvo::MpvoCore core_;
-  std::vector<int32_t> ext_face_;   // exterior face list: face ids (owner = cell0)
-  std::vector<Vec3> ext_centroid_;  // and their centroids
-  std::vector<Vec3> ext_points_;    // 4 per exterior face (3 used by triangles)
-  std::vector<int8_t> ext_size_;    // 3 or 4
-  std::vector<int32_t> ext_cell_;   // owner
-  std::vector<int32_t> ext_vertex_;  // 4 per exterior face: index into boundary_points_
-  std::vector<Vec3> boundary_points_;      // points of exterior faces, each once
-  std::vector<ProjectedVertex> projected_;  // per view: their window positions
+  const ExteriorFaces* ext_ = nullptr;     // the scene's exterior faces
+  std::vector<Vec3> ext_centroid_;          // and their centroids
+  std::vector<ProjectedVertex> projected_;  // per view: window positions of their points
   Vec3 centre_{};
   double radius_ = 0;
   KeySort sort_;

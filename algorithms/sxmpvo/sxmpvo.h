@@ -5,8 +5,8 @@
 //           pixel centres of the shared rasterizer (harness/raster/polygon_raster.h, S = 1),
 //           the same samples the oracle checks at its default S = 1.
 //
-// Prepare: "unique faces", "face planes", "exterior face list" (per boundary face: face,
-// cell, centroid).
+// Prepare: "unique faces", "face planes", "exterior faces" (the Scene's: per boundary face
+// its points, compact point ids and owner), "exterior centroids".
 // Phases, under the paper's names:
 //   "I create partial order"  MPVO face arrows and outbound counts (the sink flags);
 //   "II sort exterior faces"  every exterior face by increasing centroid distance from the
@@ -30,8 +30,8 @@
 // in PIX lists), pn_relations (distinct PN entries), pn_found_at_head, pn_moved_to_front,
 // pn_search_steps, tie_reorders, unpaired_entries, self_pairs, and memory in bytes:
 // bytes_mpvo (MpvoCore's arrays), bytes_faces (unique faces and planes, shared with MPVO),
-// bytes_abuffer, bytes_pn (PN lists and their CSR), bytes_exterior (exterior face list and
-// sort buffers).
+// bytes_abuffer, bytes_pn (PN lists and their CSR), bytes_exterior (the Scene's exterior faces,
+// centroids, projected points and sort buffers).
 #pragma once
 #include "harness/bench/registry.h"
 

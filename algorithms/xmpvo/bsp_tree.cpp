@@ -156,14 +156,13 @@ size_t BspTree::bytes() const {
          parent_.capacity() * sizeof(int32_t) + unsplit_.capacity();
 }
 
-BspTree BspTree::build(const CellMesh& mesh, const MeshFaces& faces, const BspOptions& opt) {
+BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   BspTree t;
-  for (int32_t f : faces.boundary) {
-    const int32_t* v = faces.face_points(f);
-    const int n = faces.face_size(f);
-    for (int k = 1; k + 1 < n; ++k)
-      t.tris_.push_back({{mesh.points[v[0]], mesh.points[v[k]], mesh.points[v[k + 1]]}, f, faces.cell0[f]});
+  for (size_t i = 0; i < exterior.face.size(); ++i) {
+    const Vec3* v = &exterior.corners[4 * i];
+    for (int k = 1; k + 1 < exterior.size[i]; ++k)
+      t.tris_.push_back({{v[0], v[k], v[k + 1]}, exterior.face[i], exterior.cell[i]});
   }
   if (opt.keep_fragments) t.exact_ = std::make_unique<Exact>();
   const int32_t b = static_cast<int32_t>(t.tris_.size());

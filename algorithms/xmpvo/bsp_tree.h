@@ -21,8 +21,7 @@
 #include <vector>
 
 #include "harness/geometry/vec3.h"
-#include "harness/scene/cell_mesh.h"
-#include "harness/scene/mesh_faces.h"
+#include "harness/scene/exterior_faces.h"
 
 namespace vob::xmpvo {
 
@@ -76,7 +75,7 @@ class BspTree {
 
   // Builds the tree of the boundary faces. Deterministic. An empty boundary gives an
   // empty tree.
-  static BspTree build(const CellMesh& mesh, const MeshFaces& faces, const BspOptions& opt = {});
+  static BspTree build(const ExteriorFaces& exterior, const BspOptions& opt = {});
 
   const std::vector<BspTriangle>& triangles() const { return tris_; }
   const std::vector<BspNode>& nodes() const { return nodes_; }

@@ -68,19 +68,13 @@ class BspXmpvoOrderer final : public Orderer {
     opt_.sample = sample;
     opt_.split_weight = split_weight;
   }
-  Claims claims() const override {
-    Claims c;
-    c.object_exact = true;
-    c.detects_cycles = true;
-    return c;
-  }
+  Claims claims() const override { return mpvo::core_claims(true, false); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
-    { auto p = clock.phase("unique faces"); scene.faces(); }
-    { auto p = clock.phase("face planes"); scene.face_planes(); }
-    core_.bind(scene);
+    core_.prepare(scene, clock);
+    { auto p = clock.phase("exterior faces"); scene.exterior_faces(); }
     auto p = clock.phase("BSP build");
-    tree_ = BspTree::build(scene.mesh(), scene.faces(), opt_);
+    tree_ = BspTree::build(scene.exterior_faces(), opt_);
     const size_t b = tree_.triangles().size();
     facing_.assign(b, 0);
     usable_.assign(b, 0);

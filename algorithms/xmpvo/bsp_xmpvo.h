@@ -7,8 +7,9 @@
 //   stop        end a beam's front-to-back traversal once its cross-section is proved covered
 //               (false: collect every candidate in the beam; same order, more relations).
 //
-// Prepare: "unique faces", "face planes", "BSP build" (autopartition of the exterior
-// triangles with exact splits; depth, nodes, fragments and bytes in the counters).
+// Prepare: "unique faces", "face planes", "exterior faces" (the Scene's), "BSP build"
+// (autopartition of the exterior triangles with exact splits; depth, nodes, fragments and
+// bytes in the counters).
 // Phases per view:
 //   "create partial order"  MPVO phase I: face arrows and outbound counts;
 //   "tree work"  for every back-facing exterior triangle X (the ray leaves the mesh there),

@@ -10,7 +10,8 @@
 //               (counters disagree_facing, disagree_side, disagree_crossing, and
 //               disagree_arrows = MpvoCore's double_sign_wrong).
 //
-// Prepare: "unique faces", "face planes", "exterior face list".
+// Prepare: "unique faces", "face planes", "exterior faces" (the Scene's), "exterior face
+// planes".
 // Phases per view:
 //   "I create partial order"  MPVO face arrows (MpvoCore);
 //   "project"  exterior faces with their facing (edge-on faces dropped: they cover no open

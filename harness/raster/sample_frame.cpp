@@ -8,7 +8,6 @@
 namespace vob {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 double max_abs(Vec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 }  // namespace
 
@@ -22,14 +21,9 @@ SampleFrame::SampleFrame(const Camera& camera, int supersample) : cam_(camera), 
   f_ = cam_.forward();
   r_ = cam_.right();
   u_ = cam_.true_up();
-  const double aspect = double(cam_.width) / cam_.height;
-  if (cam_.ortho) {
-    sy_scale_ = 0.5 * cam_.ortho_height;
-    sx_scale_ = sy_scale_ * aspect;
-  } else {
-    sy_scale_ = std::tan(0.5 * cam_.fov_deg * kPi / 180.0);
-    sx_scale_ = sy_scale_ * aspect;
-  }
+  const Camera::HalfExtents half = cam_.half_extents();
+  sx_scale_ = half.x;
+  sy_scale_ = half.y;
   // Normalised device coordinates of sample centres, as Camera::ray computes them.
   col_.resize(cols_);
   row_.resize(rows_);

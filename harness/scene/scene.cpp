@@ -28,6 +28,7 @@ struct Scene::Cache {
   std::optional<MeshFaces> faces;
   std::optional<FacePlanes> planes;
   std::optional<Centroids> cell_centroids, face_centroids;
+  std::optional<ExteriorFaces> exterior;
   std::optional<std::vector<int32_t>> voxels;
   std::optional<std::vector<VoxelRun>> runs;
   std::vector<DerivedStat> stats;
@@ -138,6 +139,12 @@ const Centroids& Scene::face_centroids() const {
   return build_once<Centroids>(
       cache_->face_centroids, cache_->stats, "face centroids",
       [&] { return build_face_centroids(mesh(), f); }, +[](const Centroids& c) { return c.bytes(); });
+}
+const ExteriorFaces& Scene::exterior_faces() const {
+  const MeshFaces& f = faces();
+  return build_once<ExteriorFaces>(
+      cache_->exterior, cache_->stats, "exterior faces",
+      [&] { return build_exterior_faces(mesh(), f); }, +[](const ExteriorFaces& e) { return e.bytes(); });
 }
 const std::vector<int32_t>& Scene::significant_voxels() const {
   return build_once<std::vector<int32_t>>(

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/scene/cell_mesh.h"
+#include "harness/scene/exterior_faces.h"
 #include "harness/scene/mesh_faces.h"
 #include "harness/scene/triangle_soup.h"
 #include "harness/scene/voxel_grid.h"
@@ -48,6 +49,7 @@ class Scene {
   const FacePlanes& face_planes() const;
   const Centroids& cell_centroids() const;
   const Centroids& face_centroids() const;
+  const ExteriorFaces& exterior_faces() const;  // the boundary faces, oriented outward
   // Derived structures (voxels).
   const std::vector<int32_t>& significant_voxels() const;
   const std::vector<VoxelRun>& significant_runs() const;

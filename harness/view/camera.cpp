@@ -30,6 +30,12 @@ void Camera::validate() const {
     throw InputError("camera", "ortho", "view height must be positive");
 }
 
+Camera::HalfExtents Camera::half_extents() const {
+  const double aspect = double(width) / height;
+  const double y = ortho ? 0.5 * ortho_height : std::tan(0.5 * fov_deg * kPi / 180.0);
+  return {y * aspect, y};
+}
+
 Ray Camera::ray(double wx, double wy) const {
   const Vec3 f = forward(), r = right(), u = true_up();
   const double aspect = double(width) / height;

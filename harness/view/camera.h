@@ -28,6 +28,14 @@ struct Camera {
   Vec3 right() const;
   Vec3 true_up() const;
 
+  // Half the view's extent: at unit view depth (perspective: tan(fov/2), times the aspect
+  // ratio for x) or in world units (orthographic). Window x from 0 to width spans
+  // [-half_x, half_x]. The one definition that SampleFrame and the GL matrices use.
+  struct HalfExtents {
+    double x, y;
+  };
+  HalfExtents half_extents() const;
+
   // Ray through window coordinates (wx, wy); pixel centres are (i + 0.5, j + 0.5).
   Ray ray(double wx, double wy) const;
   Ray pixel_ray(int i, int j) const { return ray(i + 0.5, j + 0.5); }

@@ -12,7 +12,7 @@
 #include "harness/bench/registry.h"
 #include "harness/sort/radix_sort.h"
 #include "harness/view/view_set.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
 
 namespace {
 

@@ -18,22 +18,12 @@
 #include "harness/gl/osmesa_context.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
+#include "tests/support/test_util.h"
 
 namespace vob {
 namespace {
 
-Scene small_mesh(const std::string& name) {
-  Params p(name);
-  if (name == "gap") {
-    p.set("nx", "4");
-    p.set("ny", "4");
-    p.set("nz", "9");
-    p.set("gaps", "2");
-  } else if (name == "helix") {
-    p.set("cells", "3000");
-  }
-  return make_dataset(name, p);
-}
+using test::small_mesh;
 
 constexpr int kViews = 14, kSize = 128;
 

@@ -22,17 +22,13 @@
 #include "algorithms/stencil/software_backend.h"
 #include "datasets/datasets.h"
 #include "harness/view/view_set.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
+using namespace vob::test;
 using namespace vob::stencil;
 
 namespace {
-
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
 
 void polygons(const Scene& s, std::vector<Vec3>& pts, std::vector<int8_t>& sizes) {
   const TriangleSoup& soup = s.soup();

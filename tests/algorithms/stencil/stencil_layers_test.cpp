@@ -16,16 +16,12 @@
 #include "harness/scene/input_error.h"
 #include "harness/raster/fragments.h"
 #include "harness/view/view_set.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
+using namespace vob::test;
 
 namespace {
-
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
 
 Ordering run(const std::string& spec, const Scene& scene, const Camera& view) {
   auto o = make_orderer(spec);

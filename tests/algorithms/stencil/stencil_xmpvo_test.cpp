@@ -8,34 +8,11 @@
 #include "harness/bench/registry.h"
 #include "harness/oracle/oracle.h"
 #include "harness/view/view_set.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::testing;
-
-namespace {
-
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
-
-struct Outcome {
-  Ordering ordering;
-  OracleResult oracle;
-};
-
-Outcome run(const std::string& spec, const Scene& scene, const Camera& view) {
-  auto o = make_orderer(spec);
-  PhaseClock prep, clock;
-  o->prepare(scene.fresh(), prep);
-  Outcome r{o->order(view, clock), {}};
-  r.oracle = check_ordering(scene, view, r.ordering.order);
-  return r;
-}
-
-}  // namespace
 
 TEST(StencilXmpvo, ExactAtPixelCentresWhereMpvoncFails) {
   const std::vector<Scene> scenes = {
@@ -47,7 +24,7 @@ TEST(StencilXmpvo, ExactAtPixelCentresWhereMpvoncFails) {
     double relations = 0;
     for (int v = 0; v < 8; ++v) {
       const Camera view = fibonacci_view(s.bounds(), 8, v, ViewOptions{96, 96});
-      const Outcome r = run("stencil-xmpvo:backend=software", s, view);
+      const Outcome r = run_checked("stencil-xmpvo:backend=software", s, view);
       EXPECT_TRUE(is_permutation_of(r.ordering.order, s.num_primitives()));
       EXPECT_EQ(r.oracle.violating_fragments, 0) << s.name() << " view " << v << " "
                                                  << r.oracle.to_json().dump();
@@ -57,11 +34,11 @@ TEST(StencilXmpvo, ExactAtPixelCentresWhereMpvoncFails) {
       EXPECT_GE(k.at("layers"), 2);
       relations += k.at("relations");
       // The pairs of consecutive layers at each pixel are SXMPVO's PIX-list pairs.
-      const Outcome sx = run("sxmpvo", s, view);
+      const Outcome sx = run_checked("sxmpvo", s, view);
       EXPECT_EQ(k.at("relations"), sx.ordering.counters.at("pn_relations")) << s.name() << " view " << v;
-      mpvonc_failures += !run("mpvonc", s, view).oracle.ok();
+      mpvonc_failures += !run_checked("mpvonc", s, view).oracle.ok();
       // OpenGL on the same view: the same counters exist, the order is complete.
-      const Outcome g = run("stencil-xmpvo:backend=gl,variant=naive", s, view);
+      const Outcome g = run_checked("stencil-xmpvo:backend=gl,variant=naive", s, view);
       EXPECT_TRUE(is_permutation_of(g.ordering.order, s.num_primitives()));
       EXPECT_EQ(g.ordering.counters.at("exterior_faces"), k.at("exterior_faces"));
     }
@@ -74,7 +51,7 @@ TEST(StencilXmpvo, CyclesAreReportedAndBroken) {
   const Scene ring = Scene::from_mesh("blade-ring", blade_ring(8));
   for (const char* spec : {"stencil-xmpvo:backend=software", "stencil-xmpvo:backend=gl"}) {
     for (bool ortho : {false, true}) {
-      const Outcome r = run(spec, ring, ring_axis_view(ortho));
+      const Outcome r = run_checked(spec, ring, ring_axis_view(ortho));
       EXPECT_TRUE(is_permutation_of(r.ordering.order, ring.num_primitives()));
       EXPECT_GE(r.ordering.cycles.cycles, 1) << spec;
     }

@@ -8,32 +8,13 @@
 #include "harness/bench/registry.h"
 #include "harness/oracle/oracle.h"
 #include "harness/view/view_set.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::testing;
 
 namespace {
-
-struct Outcome {
-  Ordering ordering;
-  OracleResult oracle;
-};
-
-Outcome run(const std::string& spec, const Scene& scene, const Camera& view) {
-  auto o = make_orderer(spec);
-  PhaseClock prep, clock;
-  o->prepare(scene.fresh(), prep);
-  Outcome r{o->order(view, clock), {}};
-  r.oracle = check_ordering(scene, view, r.ordering.order);
-  return r;
-}
-
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
 
 // Every view of a 14-view set at w x h: SXMPVO exact, a permutation, counters present.
 // Returns the number of views in which `control` (a heuristic) violates.
@@ -41,7 +22,7 @@ int expect_exact_over_views(const Scene& s, int w, int h, const std::string& con
   int control_failures = 0;
   for (int v = 0; v < 14; ++v) {
     const Camera view = fibonacci_view(s.bounds(), 14, v, ViewOptions{w, h});
-    const Outcome r = run("sxmpvo", s, view);
+    const Outcome r = run_checked("sxmpvo", s, view);
     EXPECT_TRUE(is_permutation_of(r.ordering.order, s.mesh().num_cells()));
     EXPECT_EQ(r.oracle.violating_fragments, 0) << s.name() << " view " << v << ": "
                                                << r.oracle.to_json().dump();
@@ -53,7 +34,7 @@ int expect_exact_over_views(const Scene& s, int w, int h, const std::string& con
     EXPECT_EQ(k.at("exterior_faces"), static_cast<double>(s.faces().boundary.size()));
     EXPECT_GT(k.at("abuffer_entries"), 0);
     EXPECT_EQ(k.at("unpaired_entries"), 0) << s.name() << " view " << v;
-    if (!control.empty() && !run(control, s, view).oracle.ok()) ++control_failures;
+    if (!control.empty() && !run_checked(control, s, view).oracle.ok()) ++control_failures;
   }
   return control_failures;
 }
@@ -91,7 +72,7 @@ TEST(Sxmpvo, ExactOnZooMesh) {
 TEST(Sxmpvo, RelationsAcrossTheGapAndCounters) {
   const Scene s = Scene::from_mesh("two-blocks", two_blocks(3, 0.5));
   const Camera view = fibonacci_view(s.bounds(), 14, 2, ViewOptions{200, 200});
-  const Outcome r = run("sxmpvo", s, view);
+  const Outcome r = run_checked("sxmpvo", s, view);
   EXPECT_TRUE(r.oracle.ok());
   const auto& k = r.ordering.counters;
   EXPECT_GT(k.at("pn_relations"), 0);
@@ -105,7 +86,7 @@ TEST(Sxmpvo, RelationsAcrossTheGapAndCounters) {
 // A visibility cycle across shared faces: reported and broken, the order still complete.
 TEST(Sxmpvo, ReportsCycles) {
   const Scene s = Scene::from_mesh("blade-ring", blade_ring(8));
-  const Outcome r = run("sxmpvo", s, ring_axis_view(false));
+  const Outcome r = run_checked("sxmpvo", s, ring_axis_view(false));
   EXPECT_GT(r.ordering.cycles.cycles, 0);
   EXPECT_TRUE(is_permutation_of(r.ordering.order, s.mesh().num_cells()));
 }
@@ -118,10 +99,10 @@ TEST(Sxmpvo, ResultDoesNotDependOnThreads) {
   Ordering parallel;
   {
     tbb::global_control many(tbb::global_control::max_allowed_parallelism, 4);
-    parallel = run("sxmpvo", s, view).ordering;
+    parallel = run_checked("sxmpvo", s, view).ordering;
   }
   tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
-  const Ordering serial = run("sxmpvo", s, view).ordering;
+  const Ordering serial = run_checked("sxmpvo", s, view).ordering;
   EXPECT_EQ(parallel.order, serial.order);
   for (const char* key : {"abuffer_entries", "head_insertions", "pn_pairs", "pn_relations",
                           "pn_moved_to_front", "tie_reorders"})

@@ -10,7 +10,8 @@
 #include "algorithms/xmpvo/bsp_tree.h"
 #include "datasets/datasets.h"
 #include "harness/geometry/predicates.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::xmpvo;
@@ -18,16 +19,10 @@ using namespace vob::testing;
 
 namespace {
 
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
-
 // Builds with exact fragments kept and checks the invariants; returns the tree.
 BspTree check_tree(const Scene& s, BspOptions opt = {}) {
   opt.keep_fragments = true;
-  BspTree t = BspTree::build(s.mesh(), s.faces(), opt);
+  BspTree t = BspTree::build(s.exterior_faces(), opt);
   const MeshFaces& f = s.faces();
   int64_t expected = 0;
   for (int32_t id : f.boundary) expected += f.face_size(id) - 2;
@@ -136,8 +131,7 @@ TEST(BspTree, SplitterChoices) {
 }
 
 TEST(BspTree, EmptyBoundaryGivesEmptyTree) {
-  CellMesh m;
-  const BspTree t = BspTree::build(m, MeshFaces{}, {});
+  const BspTree t = BspTree::build(ExteriorFaces{}, {});
   EXPECT_EQ(t.root(), -1);
   EXPECT_EQ(t.stats().nodes, 0);
 }

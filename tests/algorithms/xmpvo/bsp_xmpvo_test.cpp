@@ -9,18 +9,13 @@
 #include "harness/oracle/oracle.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::testing;
 
 namespace {
-
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
 
 struct Prepared {
   std::unique_ptr<Orderer> o;

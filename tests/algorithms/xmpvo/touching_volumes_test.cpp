@@ -11,7 +11,7 @@
 #include "harness/bench/registry.h"
 #include "harness/oracle/oracle.h"
 #include "harness/view/view_set.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 using vob::testing::is_permutation_of;

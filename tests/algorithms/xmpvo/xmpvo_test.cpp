@@ -8,34 +8,13 @@
 #include "harness/oracle/oracle.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
-#include "tests/algorithms/test_meshes.h"
+#include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::testing;
 
 namespace {
-
-struct Outcome {
-  Ordering ordering;
-  OracleResult oracle;
-};
-
-Outcome run(const std::string& spec, const Scene& scene, const Camera& view, int supersample = 1) {
-  auto o = make_orderer(spec);
-  PhaseClock prep, clock;
-  o->prepare(scene.fresh(), prep);
-  Outcome r{o->order(view, clock), {}};
-  OracleOptions opt;
-  opt.supersample = supersample;
-  r.oracle = check_ordering(scene, view, r.ordering.order, opt);
-  return r;
-}
-
-Scene dataset(const std::string& name, std::map<std::string, std::string> set) {
-  Params p(name);
-  for (const auto& [k, v] : set) p.set(k, v);
-  return make_dataset(name, p);
-}
 
 // 14 views: xmpvo exact, a permutation, no cycle. Returns how many views `control` fails.
 int expect_exact_over_views(const Scene& s, int w, int h, bool ortho, int supersample,
@@ -45,7 +24,7 @@ int expect_exact_over_views(const Scene& s, int w, int h, bool ortho, int supers
     ViewOptions opt{w, h};
     opt.ortho = ortho;
     const Camera view = fibonacci_view(s.bounds(), 14, v, opt);
-    const Outcome r = run("xmpvo", s, view, supersample);
+    const Outcome r = run_checked("xmpvo", s, view, supersample);
     EXPECT_TRUE(is_permutation_of(r.ordering.order, s.mesh().num_cells()));
     EXPECT_EQ(r.oracle.violating_fragments, 0) << s.name() << " view " << v << ": "
                                                << r.oracle.to_json().dump();
@@ -55,7 +34,7 @@ int expect_exact_over_views(const Scene& s, int w, int h, bool ortho, int supers
               k.at("exterior_faces"));
     EXPECT_EQ(k.at("skipped_faces"), 0);
     EXPECT_EQ(k.at("depth_undecided"), 0);
-    if (!control.empty() && !run(control, s, view, supersample).oracle.ok()) ++control_failures;
+    if (!control.empty() && !run_checked(control, s, view, supersample).oracle.ok()) ++control_failures;
   }
   return control_failures;
 }
@@ -99,11 +78,11 @@ TEST(Xmpvo, RelationsAcrossTheGap) {
   int mpvo_failures = 0;
   for (int v = 0; v < 14; ++v) {
     const Camera view = fibonacci_view(s.bounds(), 14, v, ViewOptions{200, 200});
-    const Outcome r = run("xmpvo", s, view);
+    const Outcome r = run_checked("xmpvo", s, view);
     EXPECT_TRUE(r.oracle.ok()) << "view " << v;
     EXPECT_EQ(ray_check(s, view, r.ordering.order).violations.size(), 0u) << "view " << v;
     const auto& k = r.ordering.counters;
-    if (!run("mpvo", s, view).oracle.ok()) {
+    if (!run_checked("mpvo", s, view).oracle.ok()) {
       ++mpvo_failures;
       EXPECT_GT(k.at("relations"), 0) << "view " << v;
     }
@@ -117,7 +96,7 @@ TEST(Xmpvo, RelationsAcrossTheGap) {
 TEST(Xmpvo, CompareModeMatchesExact) {
   const Scene s = dataset("helix", {{"cells", "2000"}});
   const Camera view = fibonacci_view(s.bounds(), 14, 3, ViewOptions{200, 200});
-  const Outcome exact = run("xmpvo", s, view), compare = run("xmpvo:predicates=compare", s, view);
+  const Outcome exact = run_checked("xmpvo", s, view), compare = run_checked("xmpvo:predicates=compare", s, view);
   EXPECT_EQ(exact.ordering.order, compare.ordering.order);
   const auto& k = compare.ordering.counters;
   EXPECT_EQ(k.at("facing_decisions"), k.at("exterior_faces"));
@@ -131,7 +110,7 @@ TEST(Xmpvo, CompareModeMatchesExact) {
 TEST(Xmpvo, ReportsCycles) {
   const Scene s = Scene::from_mesh("blade-ring", blade_ring(8));
   for (bool ortho : {false, true}) {
-    const Outcome r = run("xmpvo", s, ring_axis_view(ortho));
+    const Outcome r = run_checked("xmpvo", s, ring_axis_view(ortho));
     EXPECT_GT(r.ordering.cycles.cycles, 0);
     EXPECT_TRUE(is_permutation_of(r.ordering.order, s.mesh().num_cells()));
   }

@@ -6,7 +6,7 @@
 #include "harness/oracle/sequences.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
-#include "tests/harness/oracle/test_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 
@@ -19,8 +19,8 @@ struct Case {
 
 std::vector<Case> cases() {
   std::vector<Case> c;
-  c.push_back({"tet block 4", test::tet_block(4)});
-  c.push_back({"jittered tet block 5", test::tet_block(5, 1.0, 0.2, 11)});
+  c.push_back({"tet block 4", test::kuhn_block(4)});
+  c.push_back({"jittered tet block 5", test::kuhn_block(5, 1.0, 0.2, 11)});
   c.push_back({"hex block 3", test::hex_block(3)});
   return c;
 }
@@ -70,7 +70,7 @@ TEST(EmbreeAgreement, Supersampled) {
 TEST(EmbreeAgreement, EyeInsideTheMesh) {
   // Perspective rays start inside a cell; orthographic rays start on an eye plane that cuts
   // through the mesh. Both sources clip to t >= 0.
-  const CellMesh m = test::tet_block(3, 1.0, 0.2, 5);
+  const CellMesh m = test::kuhn_block(3, 1.0, 0.2, 5);
   const Scene s = Scene::from_mesh("inside", m);
   const EmbreeCaster caster(s);
   const double tol = 1e-5 * s.bounds().radius();
@@ -88,7 +88,7 @@ TEST(EmbreeAgreement, EyeInsideTheMesh) {
 
 TEST(EmbreeAgreement, ComparisonDetectsDifferentSequences) {
   // Not vacuous: sequences of two different views disagree, and a dropped cell is caught.
-  const CellMesh m = test::tet_block(3);
+  const CellMesh m = test::kuhn_block(3);
   const Scene s = Scene::from_mesh("block", m);
   const EmbreeCaster caster(s);
   ViewOptions vo;

@@ -8,7 +8,7 @@
 #include "harness/oracle/oracle.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
-#include "tests/harness/oracle/test_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 
@@ -19,7 +19,7 @@ int64_t histogram_total(const OracleResult& r) {
 }
 
 Scene block_scene(int n) {
-  CellMesh m = test::tet_block(n);
+  CellMesh m = test::kuhn_block(n);
   validate_cell_mesh(m, "tet block");
   return Scene::from_mesh("tet block", std::move(m));
 }

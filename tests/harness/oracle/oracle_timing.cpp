@@ -6,7 +6,7 @@
 
 #include "harness/oracle/oracle.h"
 #include "harness/view/view_set.h"
-#include "tests/harness/oracle/test_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 
@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   using clk = std::chrono::steady_clock;
   auto secs = [](clk::time_point a) { return std::chrono::duration<double>(clk::now() - a).count(); };
   auto t0 = clk::now();
-  const Scene s = Scene::from_mesh("tet block", test::tet_block(n));
+  const Scene s = Scene::from_mesh("tet block", test::kuhn_block(n));
   std::printf("cells %zu, built in %.2f s\n", s.num_primitives(), secs(t0));
   ViewOptions vo;
   vo.width = vo.height = size;

@@ -10,7 +10,7 @@
 #include "harness/raster/fragments.h"
 #include "harness/scene/cell_overlap.h"
 #include "harness/view/view_set.h"
-#include "tests/harness/scene/overlap_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 using namespace vob::test;
@@ -83,13 +83,13 @@ TEST(OracleOverlap, InterpenetratingBlocksAreReported) {
 TEST(OracleOverlap, TouchingCellsAreNotOverlapping) {
   const Vec3 O{0, 0, 0}, X{1, 0, 0}, Y{0, 1, 0}, Z{0, 0, 1};
   const CellMesh meshes[] = {
-      tet_block(3),
-      tet_block(3, 1.0, 0.25, 3),
+      kuhn_block(3),
+      kuhn_block(3, 1.0, 0.25, 3),
       hex_block(3),
       // duplicated nodes: conforming, non-conforming and hexahedral contacts
-      appended(tet_block(2), translated(tet_block(2), {2, 0, 0})),
-      appended(tet_block(2), translated(tet_block(4, 0.5), {2, 0, 0})),
-      appended(hex_block(2), translated(hex_block(2), {0, 0, 2})),
+      append(kuhn_block(2), translated(kuhn_block(2), {2, 0, 0})),
+      append(kuhn_block(2), translated(kuhn_block(4, 0.5), {2, 0, 0})),
+      append(hex_block(2), translated(hex_block(2), {0, 0, 2})),
       tet_pair(O, X, Y, Z, X, Y, Z, {1, 1, 1}),
       tet_pair(O, X, Y, Z, O, -X, -Y, -Z),
       tet_pair(O, X, Y, Z, {0.3, 0.2, 0}, {1.3, 0.2, 0}, {0.3, 1.2, 0}, {0.3, 0.2, -1}),

@@ -9,7 +9,7 @@
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/splat.h"
 #include "harness/scene/input_error.h"
-#include "tests/harness/oracle/test_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 
@@ -209,7 +209,7 @@ TEST(PolygonRaster, RejectsOtherVertexCounts) {
 }
 
 TEST(CellClip, NeighbourSegmentsMeetExactly) {
-  const CellMesh m = test::tet_block(2, 1.0, 0.15, 7);
+  const CellMesh m = test::kuhn_block(2, 1.0, 0.15, 7);
   validate_cell_mesh(m, "test");
   for (bool ortho : {false, true}) {
     const Camera cam = test::test_camera({5.1, -3.3, 4.2}, {1, 1, 1}, 48, 48, ortho, 4.0);
@@ -269,7 +269,7 @@ TEST(CellClip, SegmentsMatchAnalyticTetIntersection) {
 }
 
 TEST(CellClip, EyeInsideACellGivesSegmentsFromZero) {
-  const CellMesh m = test::tet_block(1, 2.0);
+  const CellMesh m = test::kuhn_block(1, 2.0);
   const Scene s = Scene::from_mesh("cube", m);
   Camera cam = test::test_camera({1.2, 0.9, 0.7}, {0.3, 1.5, 1.1}, 32, 32);
   const FragmentLists fl = collect_fragments(s, cam, all_primitives(s));

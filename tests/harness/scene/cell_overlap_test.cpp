@@ -9,7 +9,7 @@
 #include "harness/bench/suite.h"
 #include "harness/scene/cell_overlap.h"
 #include "harness/scene/mesh_faces.h"
-#include "tests/harness/scene/overlap_meshes.h"
+#include "tests/support/test_meshes.h"
 
 using namespace vob;
 using namespace vob::test;
@@ -83,7 +83,7 @@ TEST(CellOverlap, SameCellTwiceAndContainedCellOverlap) {
 }
 
 TEST(CellOverlap, ValidBlocksHaveNoPairs) {
-  for (const CellMesh& m : {tet_block(3), tet_block(4, 1.0, 0.2, 7)}) {
+  for (const CellMesh& m : {kuhn_block(3), kuhn_block(4, 1.0, 0.2, 7)}) {
     validate_cell_mesh(m, "block");
     const CellOverlapReport r = find_overlapping_cells(m);
     EXPECT_GT(r.candidates, int64_t(m.num_cells()));  // neighbours' boxes do overlap
@@ -98,9 +98,9 @@ TEST(CellOverlap, ValidBlocksHaveNoPairs) {
 }
 
 TEST(CellOverlap, BlocksTouchingThroughDuplicatedNodesHaveNoPairs) {
-  const CellMesh conforming = appended(tet_block(2), translated(tet_block(2), {2, 0, 0}));
-  const CellMesh nonconforming = appended(tet_block(2), translated(tet_block(4, 0.5), {2, 0, 0}));
-  const CellMesh hexes = appended(hex_block(2), translated(hex_block(2), {0, 0, 2}));
+  const CellMesh conforming = append(kuhn_block(2), translated(kuhn_block(2), {2, 0, 0}));
+  const CellMesh nonconforming = append(kuhn_block(2), translated(kuhn_block(4, 0.5), {2, 0, 0}));
+  const CellMesh hexes = append(hex_block(2), translated(hex_block(2), {0, 0, 2}));
   for (const CellMesh* m : {&conforming, &nonconforming, &hexes}) {
     validate_cell_mesh(*m, "blocks");
     EXPECT_TRUE(find_overlapping_cells(*m).pairs.empty());
@@ -131,9 +131,9 @@ TEST(CellOverlap, HexahedraSharingANonPlanarQuadAreNeighbours) {
   CellMesh upper;
   upper.points = {{0, 0, 1}, {1, 0, 1}, {1, 1, 1.05}, {0, 1, 1}, {0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}};
   upper.add_cell(CellType::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
-  EXPECT_FALSE(overlap(appended(lower, upper)));
-  EXPECT_TRUE(overlap(appended(lower, translated(upper, {0, 0, -0.01}))));
-  EXPECT_TRUE(overlap(appended(lower, lower)));
+  EXPECT_FALSE(overlap(append(lower, upper)));
+  EXPECT_TRUE(overlap(append(lower, translated(upper, {0, 0, -0.01}))));
+  EXPECT_TRUE(overlap(append(lower, lower)));
 }
 
 // The fast path (certify_cells_disjoint: boundary triangles against the cells they meet,
@@ -191,12 +191,12 @@ TEST(CellOverlapFast, AgreesWithTheExhaustiveSearchOnTheTestMeshes) {
       // Contained: no boundary contact at all, caught by the nesting sample.
       {tet_pair(O, X, Y, Z, c, c + X * 0.1, c + Y * 0.1, c + Z * 0.1), true},
       {tet_pair(O, X, Y, Z, O + X * 2, X * 3, X * 2 + Y, X * 2 + Z), false},
-      {tet_block(3), false},
-      {tet_block(4, 1.0, 0.2, 7), false},
+      {kuhn_block(3), false},
+      {kuhn_block(4, 1.0, 0.2, 7), false},
       {hex_block(3), false},
-      {appended(tet_block(2), translated(tet_block(2), {2, 0, 0})), false},
-      {appended(tet_block(2), translated(tet_block(4, 0.5), {2, 0, 0})), false},
-      {appended(hex_block(2), translated(hex_block(2), {0, 0, 2})), false},
+      {append(kuhn_block(2), translated(kuhn_block(2), {2, 0, 0})), false},
+      {append(kuhn_block(2), translated(kuhn_block(4, 0.5), {2, 0, 0})), false},
+      {append(hex_block(2), translated(hex_block(2), {0, 0, 2})), false},
       {interpenetrating_blocks(2), true},
   };
   for (size_t i = 0; i < cases.size(); ++i) {
@@ -210,9 +210,9 @@ TEST(CellOverlapFast, BentQuadsAreLeftToTheExhaustiveSearch) {
   CellMesh lower;
   lower.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1.05}, {0, 1, 1}};
   lower.add_cell(CellType::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
-  const OverlapCertificate c = certify(appended(lower, lower), "bent");
+  const OverlapCertificate c = certify(append(lower, lower), "bent");
   EXPECT_EQ(c.result, OverlapCertificate::Undecided);
-  EXPECT_EQ(check_overlapping_cells(appended(lower, lower), build_mesh_faces(appended(lower, lower), "bent"))
+  EXPECT_EQ(check_overlapping_cells(append(lower, lower), build_mesh_faces(append(lower, lower), "bent"))
                 .pairs.size(),
             1u);
 }
@@ -220,8 +220,8 @@ TEST(CellOverlapFast, BentQuadsAreLeftToTheExhaustiveSearch) {
 TEST(CellOverlapFast, ABlockNestedInsideAnotherWithoutContactIsCaught) {
   // A 2^3 block of side 1 inside a 4^3 block of side 4, away from its boundary and off its
   // grid planes: no boundary face of one meets a boundary face of the other.
-  const CellMesh big = tet_block(4);
-  const CellMesh m = appended(big, translated(tet_block(2, 0.5), {1.3, 1.2, 1.1}));
+  const CellMesh big = kuhn_block(4);
+  const CellMesh m = append(big, translated(kuhn_block(2, 0.5), {1.3, 1.2, 1.1}));
   const OverlapCertificate c = certify(m, "nested");
   EXPECT_EQ(c.result, OverlapCertificate::Overlap);
   EXPECT_EQ(c.components, 2);
@@ -234,30 +234,30 @@ TEST(CellOverlapFast, ABlockNestedInsideAnotherWithoutContactIsCaught) {
   shell.points = cube.points;
   for (size_t h = 0; h < cube.num_cells(); ++h)
     if (h != 13) shell.add_cell(cube.types[h], cube.cell_points(h));  // 13: the cavity
-  const CellMesh in_cavity = appended(shell, translated(tet_block(1, 0.5), {1.25, 1.25, 1.25}));
+  const CellMesh in_cavity = append(shell, translated(kuhn_block(1, 0.5), {1.25, 1.25, 1.25}));
   EXPECT_EQ(certify(in_cavity, "cavity").result, OverlapCertificate::Clean);
   EXPECT_EQ(certify(in_cavity, "cavity").components, 2);  // the shell, the inner block
   // A block that swallows the cavity, its boundary inside the shell's cells and the
   // cavity's wall inside its cells: no boundary face meets another, and every cell's
   // centroid but the shell's near the cavity is covered once. Sampling one centroid per
   // boundary component would miss it; boundary faces inside cells do not.
-  const CellMesh too_big = appended(shell, translated(tet_block(1, 1.2), {0.9, 0.9, 0.9}));
+  const CellMesh too_big = append(shell, translated(kuhn_block(1, 1.2), {0.9, 0.9, 0.9}));
   EXPECT_EQ(certify(too_big, "cavity").result, OverlapCertificate::Overlap);
 }
 
 TEST(CellOverlapFast, CrossingTouchingAndDuplicatedBlocks) {
   // Crossing: caught through the boundary contacts.
   const OverlapCertificate crossing = certify(
-      appended(tet_block(3), translated(tet_block(3, 1.0, 0.2, 5), {1.5, 0.5, -1.25})), "crossing");
+      append(kuhn_block(3), translated(kuhn_block(3, 1.0, 0.2, 5), {1.5, 0.5, -1.25})), "crossing");
   EXPECT_EQ(crossing.result, OverlapCertificate::Overlap);
   // Touching, face to face with duplicated nodes, conforming or not: clean.
-  EXPECT_EQ(certify(appended(tet_block(3), translated(tet_block(3), {0, 0, 3})), "touching").result,
+  EXPECT_EQ(certify(append(kuhn_block(3), translated(kuhn_block(3), {0, 0, 3})), "touching").result,
             OverlapCertificate::Clean);
-  EXPECT_EQ(certify(appended(tet_block(3), translated(tet_block(2, 1.5), {0.75, 0, 3})), "shifted").result,
+  EXPECT_EQ(certify(append(kuhn_block(3), translated(kuhn_block(2, 1.5), {0.75, 0, 3})), "shifted").result,
             OverlapCertificate::Clean);
   // A whole mesh twice: every boundary face lies on its copy, facing the same way.
-  for (const CellMesh& m : {tet_block(3), tet_block(3, 1.0, 0.25, 9), hex_block(2)})
-    EXPECT_EQ(certify(appended(m, m), "duplicate").result, OverlapCertificate::Overlap);
+  for (const CellMesh& m : {kuhn_block(3), kuhn_block(3, 1.0, 0.25, 9), hex_block(2)})
+    EXPECT_EQ(certify(append(m, m), "duplicate").result, OverlapCertificate::Overlap);
 }
 
 TEST(CellOverlapFast, AgreesOnTheGeneratedDatasets) {
@@ -296,14 +296,14 @@ TEST(CellOverlapFast, AgreesOnRandomPlacementsOfTwoAndThreeBlocks) {
   std::uniform_real_distribution<double> off(-1.0, 3.0);
   int overlapping = 0, clean = 0;
   for (int trial = 0; trial < 120; ++trial) {
-    CellMesh m = tet_block(3, 1.0, trial % 3 == 0 ? 0.2 : 0.0, uint32_t(trial + 1));
+    CellMesh m = kuhn_block(3, 1.0, trial % 3 == 0 ? 0.2 : 0.0, uint32_t(trial + 1));
     const int parts = 1 + trial % 2;
     for (int p = 0; p < parts; ++p) {
       const int kind = (trial / 2 + p) % 3;
-      const CellMesh b = kind == 0 ? tet_block(1, 0.5) : kind == 1 ? tet_block(2, 0.75) : hex_block(1, 0.5);
+      const CellMesh b = kind == 0 ? kuhn_block(1, 0.5) : kind == 1 ? kuhn_block(2, 0.75) : hex_block(1, 0.5);
       const Vec3 at = trial % 4 < 2 ? Vec3{lattice(rng) * 0.25, lattice(rng) * 0.25, lattice(rng) * 0.25}
                                     : Vec3{off(rng), off(rng), off(rng)};
-      m = appended(m, translated(b, at));
+      m = append(m, translated(b, at));
     }
     const OverlapCertificate c = certify(m, "trial " + std::to_string(trial));
     EXPECT_NE(c.result, OverlapCertificate::Undecided);

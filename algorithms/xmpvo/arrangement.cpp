@@ -1,0 +1,96 @@
+#include "algorithms/xmpvo/arrangement.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vob::xmpvo {
+
+Box Arrangement::edge_box(const Projection& proj, int32_t e) const {
+  const Box a = proj.point_box(edges[e].first), b = proj.point_box(edges[e].second);
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Signs& signs) {
+  const std::vector<Vec3>& points = ext.points;
+  const BucketGrid& grid = proj.grid;
+  vertices.clear();
+  for (size_t p = 0; p < points.size(); ++p)
+    if (proj.point_used[p]) vertices.push_back({static_cast<int32_t>(p), -1, -1, -1, 0, proj.point_box(p)});
+  projected_vertices = vertices.size();
+  // Unique projected edges (an edge shared by two exterior faces is one segment).
+  std::vector<uint64_t> keys;
+  keys.reserve(4 * proj.kept.size());
+  for (int32_t i : proj.kept) {
+    const int n = ext.size[i];
+    for (int k = 0; k < n; ++k) {
+      uint32_t a = ext.vertex[4 * i + k], b = ext.vertex[4 * i + (k + 1) % n];
+      if (a > b) std::swap(a, b);
+      keys.push_back((uint64_t(a) << 32) | b);
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  edges.resize(keys.size());
+  std::vector<int32_t> ids(keys.size());
+  for (size_t e = 0; e < keys.size(); ++e) {
+    edges[e] = {static_cast<int32_t>(keys[e] >> 32), static_cast<int32_t>(keys[e] & 0xffffffffu)};
+    ids[e] = static_cast<int32_t>(e);
+  }
+  grid.fill(ids, [&](int32_t e) { return edge_box(proj, e); }, edge_off, edge_items);
+  int64_t candidates = 0;
+  for (int r = 0; r < grid.gh; ++r)
+    for (int c = 0; c < grid.gw; ++c) {
+      const size_t cell = static_cast<size_t>(r) * grid.gw + c;
+      for (int32_t x = edge_off[cell]; x < edge_off[cell + 1]; ++x)
+        for (int32_t y = x + 1; y < edge_off[cell + 1]; ++y) {
+          const auto [a, b] = edges[edge_items[x]];
+          const auto [cc, d] = edges[edge_items[y]];
+          if (a == cc || a == d || b == cc || b == d) continue;  // no proper crossing
+          const Box ba = edge_box(proj, edge_items[x]), bb = edge_box(proj, edge_items[y]);
+          if (!ba.overlaps(bb)) continue;
+          // Test each pair once: in the bucket of its boxes' common lower corner.
+          if (grid.col(std::max(ba.x0, bb.x0)) != c || grid.row(std::max(ba.y0, bb.y0)) != r) continue;
+          ++candidates;
+          if (!signs.crosses(points[a], points[b], points[cc], points[d])) continue;
+          vertices.push_back(crossing_vertex(proj, a, b, cc, d, ba, bb));
+        }
+    }
+  return candidates;
+}
+
+// Where the crossing of (a, b) and (c, d) lies in projected doubles: the computed point
+// with a generous error radius, inside both edges' boxes; their whole common box when
+// the doubles are too close to call.
+ArrVertex Arrangement::crossing_vertex(const Projection& proj, int32_t a, int32_t b, int32_t c,
+                                       int32_t d, const Box& ba, const Box& bb) const {
+  const Box common{std::max(ba.x0, bb.x0), std::max(ba.y0, bb.y0), std::min(ba.x1, bb.x1),
+                   std::min(ba.y1, bb.y1)};
+  ArrVertex v{a, b, c, d, 0.5, common};
+  const auto [ax, ay] = proj.uv[a];
+  const auto [bx, by] = proj.uv[b];
+  const auto [cx, cy] = proj.uv[c];
+  const auto [dx, dy] = proj.uv[d];
+  auto orient = [](double ox, double oy, double px, double py, double qx, double qy) {
+    return (px - ox) * (qy - oy) - (py - oy) * (qx - ox);
+  };
+  const double oa = orient(cx, cy, dx, dy, ax, ay), ob = orient(cx, cy, dx, dy, bx, by);
+  if (!(oa * ob < 0)) return v;
+  const double t = oa / (oa - ob);
+  const double mag = std::max({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by),
+                               std::fabs(cx), std::fabs(cy), std::fabs(dx), std::fabs(dy)});
+  const double lcd = std::hypot(dx - cx, dy - cy), lab = std::hypot(bx - ax, by - ay);
+  const double err = 1e-12 * mag * (lcd + 2 * lab + 2 * mag) / std::fabs(oa - ob) * lab + proj.slack;
+  const double x = ax + t * (bx - ax), y = ay + t * (by - ay);
+  v.t = t;
+  v.box = {std::max(common.x0, x - err), std::max(common.y0, y - err),
+           std::min(common.x1, x + err), std::min(common.y1, y + err)};
+  if (!(v.box.x0 <= v.box.x1 && v.box.y0 <= v.box.y1)) v.box = common;
+  return v;
+}
+
+size_t Arrangement::bytes() const {
+  return edges.capacity() * 8 + (edge_off.capacity() + edge_items.capacity()) * 4 +
+         vertices.capacity() * sizeof(ArrVertex);
+}
+
+}  // namespace vob::xmpvo

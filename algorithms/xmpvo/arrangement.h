@@ -1,0 +1,37 @@
+// XMPVO's "arrangement vertices" phase: the projected vertices of the kept exterior faces
+// plus the proper crossings of their projected edges, found among edge pairs sharing a
+// bucket (exact crossing test).
+#pragma once
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "algorithms/xmpvo/projection.h"
+
+namespace vob::xmpvo {
+
+// An arrangement vertex: a projected boundary point (b < 0), or the proper crossing of the
+// projected edges (a, b) and (c, d). Ids are compact exterior point ids.
+struct ArrVertex {
+  int32_t a, b, c, d;
+  double t;  // crossing: approximate parameter along (a, b), for depth keys only
+  Box box;   // where its exact position lies, in projected doubles
+};
+
+struct Arrangement {
+  std::vector<std::pair<int32_t, int32_t>> edges;  // unique projected edges
+  std::vector<int32_t> edge_off, edge_items;       // edges per bucket (CSR)
+  std::vector<ArrVertex> vertices;                 // points first, then crossings
+  size_t projected_vertices = 0;
+
+  // Returns the number of candidate edge pairs tested.
+  int64_t build(const ExteriorFaces& ext, const Projection& proj, Signs& signs);
+  size_t bytes() const;
+
+ private:
+  Box edge_box(const Projection& proj, int32_t e) const;
+  ArrVertex crossing_vertex(const Projection& proj, int32_t a, int32_t b, int32_t c, int32_t d,
+                            const Box& ba, const Box& bb) const;
+};
+
+}  // namespace vob::xmpvo

@@ -1,0 +1,274 @@
+#include "algorithms/xmpvo/ray_queries.h"
+
+#include <algorithm>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+namespace vob::xmpvo {
+namespace {
+
+// A face with the query vertex on its projected boundary: it covers the directions from
+// ray s counter-clockwise (in the sign convention of D) to ray t; a half-plane when the
+// vertex is inside an edge, then `ref` is a face vertex strictly inside it.
+struct Wedge {
+  int32_t face, s, t, ref;
+  bool half;
+  int32_t pos;  // number of inside faces in front of it
+};
+
+// One thread's share of the queries: its own scratch, counters and relation pairs; the
+// per-view input is read only.
+class Worker {
+ public:
+  explicit Worker(const QueryInput& in) : in_(in), signs_(in.signs), face_stamp_(in.ext.face.size(), -1) {
+    signs_.side = signs_.dis_side = 0;
+  }
+  size_t bytes() const {
+    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity()) * 4 +
+           keys_.capacity() * 16 + wedges_.capacity() * sizeof(Wedge) + pairs_.capacity() * 8;
+  }
+  void query(int32_t vi);
+
+  QueryStats stats_;
+  Signs signs_;
+  std::vector<std::pair<int32_t, int32_t>> pairs_;
+
+ private:
+  int orient_at(const ArrVertex& v, int32_t p, int32_t q);
+  int depth(int32_t x, int32_t y);
+  void emit(int32_t nearer, int32_t farther);
+  bool covers_after(const ArrVertex& v, const Wedge& w, int32_t ray);
+  bool before(int32_t x, int32_t y);
+  void classify(const ArrVertex& v, int32_t f);
+  void sort_inside(const ArrVertex& v);
+  const Vec3& pt(int32_t p) const { return in_.ext.points[p]; }
+
+  const QueryInput& in_;
+  std::vector<int32_t> inside_, rays_, sector_, face_stamp_;
+  std::vector<std::pair<double, int32_t>> keys_;
+  std::vector<Wedge> wedges_;
+  const ArrVertex* current_ = nullptr;  // the vertex being queried
+  VertexRay ray_;                        // and its ray
+};
+
+// Sign of D(v, p, q): side of q relative to the projected line through v and p; with
+// (p, q) an edge, the side of v relative to the edge.
+int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
+  if (p == q) return 0;
+  if (v.b < 0) {
+    if (p == v.a || q == v.a) return 0;
+    return signs_.edge_side(pt(v.a), pt(p), pt(q));
+  }
+  if ((p == v.a && q == v.b) || (p == v.b && q == v.a) || (p == v.c && q == v.d) ||
+      (p == v.d && q == v.c))
+    return 0;
+  if (signs_.mode == Mode::Exact) {
+    ++signs_.side;
+    return vertex_side(ray_, pt(p), pt(q));
+  }
+  return signs_.crossing_side(pt(v.a), pt(v.b), pt(v.c), pt(v.d), pt(p), pt(q));
+}
+
+// Front-to-back depth order of two faces that both cover a region touching the query
+// vertex: where the vertex's own ray meets their planes at different points that order
+// holds over the whole overlap; otherwise (faces touching on that ray) the full test.
+int Worker::depth(int32_t x, int32_t y) {
+  ++stats_.depth_calls;
+  const ExteriorFaces& e = in_.ext;
+  const ArrVertex& v = *current_;
+  auto has = [&](int32_t f, int32_t p) {
+    for (int k = 0; k < e.size[f]; ++k)
+      if (e.vertex[4 * f + k] == p) return true;
+    return false;
+  };
+  // Faces sharing the vertex (or the crossing edge) meet the ray at the same point.
+  const bool touch = v.b < 0 ? has(x, v.a) && has(y, v.a)
+                             : (has(x, v.a) && has(x, v.b) && has(y, v.a) && has(y, v.b)) ||
+                                   (has(x, v.c) && has(x, v.d) && has(y, v.c) && has(y, v.d));
+  const int at = touch ? 0 : vertex_plane_order(ray_, in_.plane[x], in_.plane[y]);
+  if (at != 0) return at;
+  ++stats_.depth_full;
+  const int r = depth_order(signs_.g, &e.corners[4 * x], e.size[x], &e.corners[4 * y], e.size[y]);
+  stats_.depth_undecided += r == 0;
+  return r;
+}
+
+void Worker::emit(int32_t nearer, int32_t farther) {
+  // Leaving the mesh through `nearer`, entering it again through `farther`.
+  const std::vector<int8_t>& facing = in_.proj.facing;
+  const std::vector<int32_t>& cell = in_.ext.cell;
+  if (facing[nearer] < 0 && facing[farther] > 0 && cell[nearer] != cell[farther])
+    pairs_.push_back({cell[nearer], cell[farther]});
+}
+
+bool Worker::covers_after(const ArrVertex& v, const Wedge& w, int32_t ray) {
+  if (ray == w.s) return true;
+  if (ray == w.t) return false;
+  const int os = orient_at(v, w.s, ray);
+  if (!w.half) return os >= 0 && orient_at(v, ray, w.t) > 0;
+  if (os != 0) return os > 0;
+  return orient_at(v, ray, w.ref) > 0;  // along s or opposite it
+}
+
+void Worker::query(int32_t vi) {
+  const ArrVertex& v = in_.arr.vertices[vi];
+  const Projection& proj = in_.proj;
+  current_ = &v;
+  ray_ = v.b < 0 ? VertexRay::at_point(signs_.g, pt(v.a))
+                 : VertexRay::at_crossing(signs_.g, pt(v.a), pt(v.b), pt(v.c), pt(v.d));
+  ++stats_.vertex_queries;
+  inside_.clear();
+  wedges_.clear();
+  const BucketGrid& grid = proj.grid;
+  const int c0 = grid.col(v.box.x0), c1 = grid.col(v.box.x1), r0 = grid.row(v.box.y0), r1 = grid.row(v.box.y1);
+  for (int r = r0; r <= r1; ++r)
+    for (int c = c0; c <= c1; ++c) {
+      const size_t cell = static_cast<size_t>(r) * grid.gw + c;
+      for (int32_t x = proj.bucket_off[cell]; x < proj.bucket_off[cell + 1]; ++x) {
+        const int32_t f = proj.bucket_faces[x];
+        if (face_stamp_[f] == vi) continue;
+        face_stamp_[f] = vi;
+        if (proj.face_box[f].overlaps(v.box)) classify(v, f);
+      }
+    }
+  if (wedges_.empty()) return;
+  sort_inside(v);
+  const int32_t ni = static_cast<int32_t>(inside_.size());
+  for (Wedge& w : wedges_) {
+    int32_t lo = 0, hi = ni;
+    while (lo < hi) {
+      const int32_t mid = (lo + hi) / 2;
+      if (depth(w.face, inside_[mid]) < 0) hi = mid;
+      else lo = mid + 1;
+    }
+    w.pos = lo;
+    // The inside faces on either side of a boundary face are consecutive where it is not.
+    if (lo > 0 && lo < ni) emit(inside_[lo - 1], inside_[lo]);
+  }
+  rays_.clear();
+  for (const Wedge& w : wedges_)
+    for (int32_t r : {w.s, w.t})
+      if (std::find(rays_.begin(), rays_.end(), r) == rays_.end()) rays_.push_back(r);
+  for (int32_t ray : rays_) {
+    // The sector just counter-clockwise of `ray`.
+    sector_.clear();
+    for (int32_t k = 0; k < static_cast<int32_t>(wedges_.size()); ++k)
+      if (covers_after(v, wedges_[k], ray)) sector_.push_back(k);
+    ++stats_.sectors;
+    stats_.sector_faces += ni + static_cast<int64_t>(sector_.size());
+    // Insertion sort (terminates whatever the comparator says on invalid input).
+    for (size_t j = 1; j < sector_.size(); ++j)
+      for (size_t m = j; m > 0 && before(sector_[m], sector_[m - 1]); --m)
+        std::swap(sector_[m], sector_[m - 1]);
+    for (size_t j = 0; j < sector_.size(); ++j) {
+      const Wedge& w = wedges_[sector_[j]];
+      if (j > 0 && wedges_[sector_[j - 1]].pos == w.pos) emit(wedges_[sector_[j - 1]].face, w.face);
+      else if (w.pos > 0) emit(inside_[w.pos - 1], w.face);
+      const bool last_here = j + 1 == sector_.size() || wedges_[sector_[j + 1]].pos != w.pos;
+      if (last_here && w.pos < ni) emit(w.face, inside_[w.pos]);
+    }
+  }
+}
+
+bool Worker::before(int32_t x, int32_t y) {
+  const Wedge &a = wedges_[x], &b = wedges_[y];
+  if (a.pos != b.pos) return a.pos < b.pos;
+  return depth(a.face, b.face) < 0;
+}
+
+void Worker::classify(const ArrVertex& v, int32_t f) {
+  const int n = in_.ext.size[f];
+  const int32_t* p = &in_.ext.vertex[4 * f];
+  const int inner = -in_.proj.facing[f];  // edge_side of the projection's inside, every edge
+  unsigned zeros = 0;
+  for (int k = 0; k < n; ++k) {
+    const int s = orient_at(v, p[k], p[(k + 1) % n]) * inner;
+    if (s < 0) return;
+    if (s == 0) zeros |= 1u << k;
+  }
+  if (zeros == 0) {
+    inside_.push_back(f);
+    return;
+  }
+  const int count = __builtin_popcount(zeros);
+  const int k = __builtin_ctz(zeros);
+  Wedge w{f, 0, 0, 0, count == 1, 0};
+  if (count == 1) {
+    const int32_t a = p[k], b = p[(k + 1) % n];
+    w.s = inner > 0 ? b : a;
+    w.t = inner > 0 ? a : b;
+    w.ref = p[(k + 2) % n];
+  } else if (count == 2) {
+    // Zero sides on edges j-1 and j: v is on the ray of vertex j.
+    int j = 0;
+    while (j < n && zeros != ((1u << j) | (1u << ((j + n - 1) % n)))) ++j;
+    if (j == n) { ++stats_.degenerate; return; }
+    const int32_t a = p[(j + n - 1) % n], b = p[(j + 1) % n];
+    w.s = inner > 0 ? b : a;
+    w.t = inner > 0 ? a : b;
+  } else {
+    ++stats_.degenerate;
+    return;
+  }
+  wedges_.push_back(w);
+}
+
+// Inside faces front to back: approximate depth along v's ray, then an insertion pass
+// with the exact order (linear when the keys are right).
+void Worker::sort_inside(const ArrVertex& v) {
+  const Vec3 eye = signs_.g.eye;
+  Vec3 at = pt(v.a);
+  if (v.b >= 0) at = pt(v.a) + (pt(v.b) - pt(v.a)) * v.t;
+  const Vec3 org = signs_.g.ortho ? at : eye;
+  const Vec3 d = signs_.g.ortho ? signs_.g.dir : at - eye;
+  const FacePlanes& planes = in_.face_planes;
+  keys_.clear();
+  for (int32_t f : inside_) {
+    const Vec3 n = planes.normal[in_.ext.face[f]];
+    double t = -(dot(n, org) + planes.offset[in_.ext.face[f]]) / dot(n, d);
+    if (!(t == t)) t = 0;
+    keys_.push_back({t, f});
+  }
+  std::sort(keys_.begin(), keys_.end());
+  for (size_t j = 0; j < keys_.size(); ++j) inside_[j] = keys_[j].second;
+  for (size_t j = 1; j < inside_.size(); ++j)
+    for (size_t m = j; m > 0 && depth(inside_[m], inside_[m - 1]) < 0; --m)
+      std::swap(inside_[m], inside_[m - 1]);
+}
+
+}  // namespace
+
+void QueryStats::add(const QueryStats& x) {
+  vertex_queries += x.vertex_queries, sectors += x.sectors, sector_faces += x.sector_faces;
+  depth_calls += x.depth_calls, depth_full += x.depth_full;
+  depth_undecided += x.depth_undecided, degenerate += x.degenerate;
+  side += x.side, dis_side += x.dis_side;
+  scratch_bytes += x.scratch_bytes;
+}
+
+std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, QueryStats& stats) {
+  // Queries are independent: threads take runs of vertices; the relation set, sorted and
+  // deduplicated, and the summed counters do not depend on the split.
+  tbb::enumerable_thread_specific<Worker> workers([&in] { return Worker(in); });
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, in.arr.vertices.size(), 512),
+                    [&](const tbb::blocked_range<size_t>& r) {
+                      Worker& w = workers.local();
+                      for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
+                    });
+  std::vector<std::pair<int32_t, int32_t>> pairs;
+  stats = QueryStats{};
+  for (Worker& w : workers) {
+    pairs.insert(pairs.end(), w.pairs_.begin(), w.pairs_.end());
+    w.stats_.side = w.signs_.side;
+    w.stats_.dis_side = w.signs_.dis_side;
+    w.stats_.scratch_bytes = w.bytes();
+    stats.add(w.stats_);
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+}  // namespace vob::xmpvo

@@ -1,0 +1,40 @@
+// XMPVO's "ray queries" phase. At each arrangement vertex v: the faces whose closed
+// projection holds v (exact sides), split into those with v inside (sorted by exact depth
+// order) and those with v on their boundary (a wedge of directions). Each sector between
+// consecutive boundary directions is a region touching v; its faces are the inside ones
+// plus the boundary ones covering it, in depth order. Consecutive (back-facing nearer,
+// front-facing farther) pairs give "cell of the nearer in front of cell of the farther".
+// Queries run in parallel (TBB); the relation set and the counters do not depend on the
+// thread split.
+#pragma once
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "algorithms/xmpvo/arrangement.h"
+#include "harness/scene/mesh_faces.h"
+
+namespace vob::xmpvo {
+
+// What the queries read: the view's exterior faces, their projection and arrangement.
+struct QueryInput {
+  const Signs& signs;  // mode and view geometry
+  const ExteriorFaces& ext;
+  const std::vector<FacePlane>& plane;  // exact-filter planes of the exterior faces
+  const FacePlanes& face_planes;        // the scene's, for approximate depth keys
+  const Projection& proj;
+  const Arrangement& arr;
+};
+
+struct QueryStats {
+  int64_t vertex_queries = 0, sectors = 0, sector_faces = 0, depth_calls = 0,
+          depth_full = 0, depth_undecided = 0, degenerate = 0;
+  int64_t side = 0, dis_side = 0;  // sign decisions and disagreements (compare mode)
+  size_t scratch_bytes = 0;        // the query threads' scratch
+  void add(const QueryStats& o);
+};
+
+// The relation pairs (front cell, back cell), sorted and without duplicates.
+std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, QueryStats& stats);
+
+}  // namespace vob::xmpvo

@@ -1,0 +1,422 @@
+// Readers and writers: exact round trips, and bad input as one InputError line that names
+// the file, the element and the reason.
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "datasets/io/inr_reader.h"
+#include "datasets/io/tetgen_bridge.h"
+#include "datasets/io/vtk_io.h"
+#include "tests/support/test_util.h"
+
+using namespace vob;
+using namespace vob::test;
+
+namespace {
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+void expect_same(const CellMesh& a, const CellMesh& b) {
+  EXPECT_TRUE(a.points == b.points);
+  EXPECT_EQ(a.scalars, b.scalars);
+  EXPECT_EQ(a.types, b.types);
+  EXPECT_EQ(a.offsets, b.offsets);
+  EXPECT_EQ(a.conn, b.conn);
+}
+
+// A unit cube surface (12 triangles, outward).
+const char* kCube =
+    "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+    "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n"
+    "3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n3 3 0 4\n3 3 4 7\n";
+
+const char* kTwoTetsNode = "# two tetrahedra sharing a face\n5 3 1 0\n1 0 0 0 0.5\n2 1 0 0 1\n3 0 1 0 2\n4 0 0 1 3\n5 1 1 1 4\n";
+const char* kTwoTetsEle = "2 4 0\n1 1 2 3 4\n2 2 3 4 5\n";
+}  // namespace
+
+TEST(DatasetIO, CellRoundTripsAreExact) {
+  TempDir dir;
+  for (const char* name : {"zoo", "gap", "helix"}) {
+    const Scene s = name == std::string("gap") ? make(name, {{"nx", "3"}, {"ny", "2"}, {"nz", "4"}, {"gaps", "1"}})
+                                               : make(name, {{name == std::string("helix") ? "cells" : "scale",
+                                                              name == std::string("helix") ? "2000" : "1"}});
+    for (const char* ext : {".vtu", ".vtk"}) {
+      SCOPED_TRACE(std::string(name) + ext);
+      const std::string path = dir.file(std::string(name) + ext);
+      write_scene(s, path);
+      expect_same(s.mesh(), load_input(path).mesh());
+    }
+  }
+  const Scene tets = make("helix", {{"cells", "1000"}});
+  write_scene(tets, dir.file("h.node"));
+  expect_same(tets.mesh(), load_input(dir.file("h.node")).mesh());
+  expect_same(tets.mesh(), load_input(dir.file("h.ele")).mesh());  // either file names the pair
+}
+
+TEST(DatasetIO, VoxelAndTriangleRoundTripsAreExact) {
+  TempDir dir;
+  const Scene v = make("sparse", {{"nx", "20"}, {"ny", "12"}, {"nz", "9"}});
+  write_scene(v, dir.file("v.vti"));
+  const Scene v2 = load_input(dir.file("v.vti"));
+  EXPECT_EQ(v.grid().dims, v2.grid().dims);
+  EXPECT_EQ(v.grid().values, v2.grid().values);
+  EXPECT_TRUE(v.grid().origin == v2.grid().origin);
+  EXPECT_TRUE(v.grid().spacing == v2.grid().spacing);
+  EXPECT_EQ(v.grid().threshold, v2.grid().threshold);
+  const Scene t = make("spheres", {{"subdiv", "1"}});
+  write_scene(t, dir.file("t.off"));
+  const Scene t2 = load_input(dir.file("t.off"));
+  EXPECT_TRUE(t.soup().points == t2.soup().points);
+  EXPECT_EQ(t.soup().tris, t2.soup().tris);
+}
+
+TEST(DatasetIO, WriteRefusesTheWrongExtensionAndLeavesNoTemporaryFiles) {
+  TempDir dir;
+  const std::string e = input_error([&] { write_scene(make("sphere"), dir.file("s.vtu")); });
+  EXPECT_TRUE(contains(e, "s.vtu: file: a triangles scene is written as .off")) << e;
+  write_scene(make("cycle"), dir.file("sub/c.vtu"));
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.file("sub")))
+    files.push_back(entry.path().filename().string());
+  EXPECT_EQ(files, std::vector<std::string>{"c.vtu"});
+  EXPECT_TRUE(contains(input_error([&] { write_scene(make("zoo"), dir.file("z.node")); }),
+                       "is a pyramid; TetGen files hold tetrahedra only"));
+}
+
+TEST(DatasetIO, LegacyStructuredPointsAreVoxels) {
+  TempDir dir;
+  write_text(dir.file("sp.vtk"),
+             "# vtk DataFile Version 3.0\nvol\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 3 2 1\n"
+             "SPACING 1 2 3\nORIGIN 0.5 0 0\nPOINT_DATA 6\nSCALARS v float 1\nLOOKUP_TABLE default\n"
+             "0 1 2 3 4 5\n");
+  const Scene s = load_input(dir.file("sp.vtk"));
+  ASSERT_EQ(s.kind(), SceneKind::Voxels);
+  EXPECT_EQ(s.grid().dims, (std::array<int32_t, 3>{3, 2, 1}));
+  EXPECT_EQ(s.grid().values, (std::vector<float>{0, 1, 2, 3, 4, 5}));
+  EXPECT_TRUE(s.grid().spacing == Vec3(1, 2, 3));
+  EXPECT_TRUE(s.grid().origin == Vec3(0.5, 0, 0));
+  EXPECT_EQ(s.num_primitives(), 5u);  // threshold 0: values > 0
+}
+
+TEST(DatasetIO, TetgenFilesWithOneBasedIndicesCommentsAndAttributes) {
+  TempDir dir;
+  write_text(dir.file("t.node"), kTwoTetsNode);
+  write_text(dir.file("t.ele"), kTwoTetsEle);
+  const Scene s = load_input(dir.file("t.node"));
+  ASSERT_EQ(s.mesh().num_cells(), 2u);
+  EXPECT_EQ(s.mesh().conn, (std::vector<int32_t>{0, 1, 2, 3, 1, 2, 3, 4}));
+  EXPECT_EQ(s.mesh().scalars, (std::vector<double>{0.5, 1, 2, 3, 4}));
+}
+
+TEST(DatasetIO, TruncatedOrMalformedTetgenFiles) {
+  TempDir dir;
+  write_text(dir.file("a.node"), "5 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n");
+  write_text(dir.file("a.ele"), "1 4 0\n0 0 1 2 3\n");
+  std::string e = input_error([&] { load_input(dir.file("a.node")); });
+  EXPECT_TRUE(contains(e, "a.node: point 3: file ends early: the header promises 5 points, found 3")) << e;
+
+  write_text(dir.file("b.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
+  write_text(dir.file("b.ele"), "2 4 0\n0 0 1 2 3\n");
+  e = input_error([&] { load_input(dir.file("b.node")); });
+  EXPECT_TRUE(contains(e, "b.ele: tetrahedron 1: file ends early")) << e;
+
+  write_text(dir.file("c.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1\n3 0 0 1\n");
+  write_text(dir.file("c.ele"), "1 4 0\n0 0 1 2 3\n");
+  e = input_error([&] { load_input(dir.file("c.node")); });
+  EXPECT_TRUE(contains(e, "c.node: point 2 (line 4): expected 4 values")) << e;
+
+  write_text(dir.file("d.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
+  write_text(dir.file("d.ele"), "1 4 0\n0 0 1 2 4\n");
+  e = input_error([&] { load_input(dir.file("d.node")); });
+  EXPECT_TRUE(contains(e, "d.ele: tetrahedron 0 (line 2): point index 4 is out of range [0, 3]")) << e;
+
+  write_text(dir.file("e.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 nan 0\n3 0 0 1\n");
+  write_text(dir.file("e.ele"), "1 4 0\n0 0 1 2 3\n");
+  e = input_error([&] { load_input(dir.file("e.node")); });
+  EXPECT_TRUE(contains(e, "e.node: point 2 (line 4): value 'nan' is not finite")) << e;
+
+  write_text(dir.file("f.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
+  write_text(dir.file("f.ele"), "1 4 0\n0 0 2 1 3\n");  // inverted
+  e = input_error([&] { load_input(dir.file("f.node")); });
+  EXPECT_TRUE(contains(e, "f.node: cell 0: is inverted")) << e;
+
+  write_text(dir.file("g.node"), "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
+  e = input_error([&] { load_input(dir.file("g.node")); });
+  EXPECT_TRUE(contains(e, "g.ele: file: does not exist")) << e;
+
+  // A header that promises two billion points must not make the reader allocate them.
+  write_text(dir.file("h.node"), "2000000000 3 0 0\n0 0 0 0\n");
+  write_text(dir.file("h.ele"), "1 4 0\n0 0 1 2 3\n");
+  e = input_error([&] { load_input(dir.file("h.node")); });
+  EXPECT_TRUE(contains(e, "h.node: header (line 1): point count 2000000000 cannot fit in a file of")) << e;
+}
+
+TEST(DatasetIO, FaceSharedByThreeCellsIsRejected) {
+  TempDir dir;
+  // Three tetrahedra on face (0,1,2): two above would overlap, so use apexes on both sides
+  // and a third above: the face has three owners.
+  write_text(dir.file("t.node"), "6 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0.2 0.2 1\n4 0.2 0.2 -1\n5 0.3 0.3 2\n");
+  write_text(dir.file("t.ele"), "3 4 0\n0 0 1 2 3\n1 0 2 1 4\n2 0 1 2 5\n");
+  const std::string e = input_error([&] { load_input(dir.file("t.node")); });
+  EXPECT_TRUE(contains(e, "t.node: face (0,1,2): shared by more than two cells (0, 1, 2)")) << e;
+}
+
+TEST(DatasetIO, NanCoordinateInVtuAndOff) {
+  TempDir dir;
+  CellMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}, {0, 0, 1}};
+  m.add_cell(CellType::Tetra, {0, 1, 2, 3});
+  write_scene(Scene::from_mesh("nan", m), dir.file("nan.vtu"));
+  std::string e = input_error([&] { load_input(dir.file("nan.vtu")); });
+  EXPECT_TRUE(contains(e, "nan.vtu: point 2: coordinate is not finite")) << e;
+  write_text(dir.file("nan.off"), "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n");
+  e = input_error([&] { load_input(dir.file("nan.off")); });
+  EXPECT_TRUE(contains(e, "nan.off: vertex 1 (line 4): value 'nan' is not finite")) << e;
+}
+
+TEST(DatasetIO, OffErrors) {
+  TempDir dir;
+  write_text(dir.file("a.off"), "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  std::string e = input_error([&] { load_input(dir.file("a.off")); });
+  EXPECT_TRUE(contains(e, "a.off: face 0 (line 6): vertex index 3 is out of range [0, 2]")) << e;
+  write_text(dir.file("b.off"), "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n");
+  e = input_error([&] { load_input(dir.file("b.off")); });
+  EXPECT_TRUE(contains(e, "b.off: vertex 3: file ends early")) << e;
+  write_text(dir.file("c.off"), "PLY\n");
+  e = input_error([&] { load_input(dir.file("c.off")); });
+  EXPECT_TRUE(contains(e, "c.off: header (line 1): 'PLY' is not an OFF header")) << e;
+  write_text(dir.file("d.off"), "OFF 3 1 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n");
+  e = input_error([&] { load_input(dir.file("d.off")); });
+  EXPECT_TRUE(contains(e, "d.off: triangle 0: has zero area")) << e;
+  // Polygons are fan-split; colours after the indices are ignored.
+  write_text(dir.file("q.off"), "COFF\n# quad\n4 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n1 1 0 1 1 1 1\n0 1 0 1 1 1 1\n4 0 1 2 3 255 0 0\n");
+  EXPECT_EQ(load_input(dir.file("q.off")).soup().tris,
+            (std::vector<std::array<int32_t, 3>>{{0, 1, 2}, {0, 2, 3}}));
+}
+
+TEST(DatasetIO, VtkErrors) {
+  TempDir dir;
+  // A file with a triangle and no volume cell.
+  write_text(dir.file("tri.vtk"),
+             "# vtk DataFile Version 3.0\ntri\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 3 double\n"
+             "0 0 0 1 0 0 0 1 0\nCELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n5\n");
+  std::string e = input_error([&] { load_input(dir.file("tri.vtk")); });
+  EXPECT_TRUE(contains(e, "tri.vtk: cells: none of the 1 cells is a volume cell")) << e;
+  write_text(dir.file("bad.vtu"), "<VTKFile type=\"UnstructuredGrid\"><Unstr");
+  e = input_error([&] { load_input(dir.file("bad.vtu")); });
+  EXPECT_TRUE(contains(e, "bad.vtu: XML byte 33: tag is not closed")) << e;
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  std::printf("%s\n", e.c_str());
+  e = input_error([&] { load_input(dir.file("missing.vtu")); });
+  EXPECT_TRUE(contains(e, "missing.vtu: file: does not exist")) << e;
+  e = input_error([&] { load_input(dir.file("x.stl")); });
+  EXPECT_TRUE(contains(e, "does not exist")) << e;
+  write_text(dir.file("x.stl"), "solid\n");
+  e = input_error([&] { load_input(dir.file("x.stl")); });
+  EXPECT_TRUE(contains(e, "x.stl: file: unknown extension '.stl'")) << e;
+}
+
+TEST(DatasetIO, InrHeaderTypesAndEndianness) {
+  TempDir dir;
+  auto inr = [&](const std::string& name, const std::string& fields, const std::string& data) {
+    std::string h = "#INRIMAGE-4#{\n" + fields;
+    h += std::string(252 - h.size(), '\n') + "##}\n";
+    write_text(dir.file(name), h + data);
+  };
+  inr("u16.inr", "XDIM=2\nYDIM=1\nZDIM=1\nVDIM=1\nTYPE=unsigned fixed\nPIXSIZE=16 bits\nCPU=sun\nVX=2\n",
+      std::string("\x01\x02\x00\x05", 4));
+  const VoxelGrid g = load_input(dir.file("u16.inr")).grid();
+  EXPECT_EQ(g.values, (std::vector<float>{258, 5}));
+  EXPECT_EQ(g.spacing.x, 2.0);
+  float f[2] = {1.5f, -2.0f};
+  inr("f.inr", "XDIM=1\nYDIM=2\nZDIM=1\nTYPE=float\nPIXSIZE=32 bits\nCPU=decm\n", std::string(reinterpret_cast<char*>(f), 8));
+  EXPECT_EQ(load_input(dir.file("f.inr")).grid().values, (std::vector<float>{1.5f, -2.0f}));
+  inr("short.inr", "XDIM=4\nYDIM=4\nZDIM=4\nTYPE=float\nPIXSIZE=32 bits\nCPU=decm\n", std::string(20, '\0'));
+  std::string e = input_error([&] { load_input(dir.file("short.inr")); });
+  EXPECT_TRUE(contains(e, "short.inr: voxel 5: file ends early")) << e;
+  inr("huge.inr", "XDIM=1200\nYDIM=1200\nZDIM=1200\nTYPE=float\nPIXSIZE=64 bits\nCPU=decm\n", std::string(64, '\0'));
+  e = input_error([&] { load_input(dir.file("huge.inr")); });
+  EXPECT_TRUE(contains(e, "huge.inr: voxel 8: file ends early")) << e;
+  inr("vdim.inr", "XDIM=1\nYDIM=1\nZDIM=1\nVDIM=3\nTYPE=float\nPIXSIZE=32 bits\n", std::string(12, '\0'));
+  e = input_error([&] { load_input(dir.file("vdim.inr")); });
+  EXPECT_TRUE(contains(e, "vdim.inr: header VDIM: vector images")) << e;
+  write_text(dir.file("no.inr"), std::string(300, 'x'));
+  e = input_error([&] { load_input(dir.file("no.inr")); });
+  EXPECT_TRUE(contains(e, "no.inr: header: does not start with #INRIMAGE-4#{")) << e;
+}
+
+TEST(DatasetIO, TetrahedralizeAClosedOff) {
+  TempDir dir;
+  write_text(dir.file("cube.off"), kCube);
+  InputOptions opt;
+  opt.tetrahedralize = true;
+  const Scene s = load_input(dir.file("cube.off"), opt);
+  EXPECT_EQ(s.kind(), SceneKind::Cells);
+  EXPECT_GE(s.mesh().num_cells(), 5u);
+  double vol = 0;
+  for (size_t c = 0; c < s.mesh().num_cells(); ++c) {
+    const int32_t* p = s.mesh().cell_points(c);
+    const Vec3 a = s.mesh().points[p[0]];
+    vol += dot(cross(s.mesh().points[p[1]] - a, s.mesh().points[p[2]] - a), s.mesh().points[p[3]] - a) / 6;
+  }
+  EXPECT_NEAR(vol, 1.0, 1e-12);
+  opt.tetgen_switches = "pq1.2a0.01";
+  EXPECT_GT(load_input(dir.file("cube.off"), opt).mesh().num_cells(), 100u);
+  opt.tetgen_switches = "q1.2";
+  EXPECT_TRUE(contains(input_error([&] { load_input(dir.file("cube.off"), opt); }), "need 'p'"));
+  opt.tetgen_switches = "p;rm";
+  EXPECT_TRUE(contains(input_error([&] { load_input(dir.file("cube.off"), opt); }), "is not a switch"));
+}
+
+TEST(DatasetIO, TetgenOnAnOpenSurface) {
+  TempDir dir;
+  std::string open = kCube;
+  open.replace(open.find("12 0"), 4, "10 0");  // drop the last two triangles (one side)
+  open = open.substr(0, open.rfind("3 3 0 4"));
+  write_text(dir.file("open.off"), open);
+  InputOptions opt;
+  opt.tetrahedralize = true;
+  const std::string e = input_error([&] { load_input(dir.file("open.off"), opt); });
+  EXPECT_TRUE(contains(e, "open.off: edge (0,3): belongs to 1 triangle: the surface is not closed")) << e;
+  // TetGen itself, given the open surface, silently makes no tetrahedra: also an error.
+  const TriangleSoup soup = load_input(dir.file("open.off")).soup();
+  const std::string e2 = input_error([&] { tetrahedralize_surface(soup, "open.off", ""); });
+  EXPECT_TRUE(contains(e2, "open.off: surface: tetgen produced no tetrahedra")) << e2;
+  std::printf("%s\n%s\n", e.c_str(), e2.c_str());
+}
+
+TEST(DatasetIO, TetgenOnASelfIntersectingSurface) {
+  TempDir dir;
+  // Two closed cubes that interpenetrate: every edge has two triangles, yet faces cross.
+  std::string two = "OFF\n16 24 0\n";
+  for (double o : {0.0, 0.5})
+    for (const char* v : {"0 0 0", "1 0 0", "1 1 0", "0 1 0", "0 0 1", "1 0 1", "1 1 1", "0 1 1"}) {
+      double x, y, z;
+      std::sscanf(v, "%lf %lf %lf", &x, &y, &z);
+      two += std::to_string(x + o) + " " + std::to_string(y + o * 0.7) + " " + std::to_string(z + o * 0.3) + "\n";
+    }
+  const std::string faces = std::string(kCube).substr(std::string(kCube).find("3 0 2 1"));
+  two += faces;
+  std::istringstream in(faces);
+  std::string line;
+  while (std::getline(in, line)) {
+    int n, a, b, c;
+    std::sscanf(line.c_str(), "%d %d %d %d", &n, &a, &b, &c);
+    two += "3 " + std::to_string(a + 8) + " " + std::to_string(b + 8) + " " + std::to_string(c + 8) + "\n";
+  }
+  write_text(dir.file("two.off"), two);
+  InputOptions opt;
+  opt.tetrahedralize = true;
+  const std::string e = input_error([&] { load_input(dir.file("two.off"), opt); });
+  EXPECT_TRUE(contains(e, "two.off: tetgen facets #")) << e;
+  EXPECT_TRUE(contains(e, "the surface intersects itself")) << e;
+  std::printf("%s\n", e.c_str());
+}
+
+TEST(DatasetIO, TetgenSwitchesReachTheMesh) {
+  TempDir dir;
+  write_text(dir.file("cube.off"), kCube);
+  InputOptions opt;
+  opt.tetrahedralize = true;
+  opt.tetgen_switches = "-o2";  // no p
+  EXPECT_TRUE(contains(input_error([&] { load_input(dir.file("cube.off"), opt); }), "need 'p'"));
+  opt.tetgen_switches = "po2";  // second-order output
+  EXPECT_TRUE(contains(input_error([&] { load_input(dir.file("cube.off"), opt); }),
+                       "cube.off: tetgen switches 'po2': 'o' is not allowed"));
+}
+
+namespace {
+// A cube hexahedron with point scalars, plus what gmsh writes beside volume cells: a
+// vertex, a line and a triangle; `types` replaces the hexahedron's type.
+std::string gmsh_like_vtk(int hex_type = 12) {
+  return "# vtk DataFile Version 2.0\ncube, Created by Gmsh\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+         "POINTS 9 double\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n0.5 0.5 0.5\n"
+         "CELLS 4 18\n1 8\n2 0 1\n3 0 1 2\n8 0 1 2 3 4 5 6 7\n"
+         "CELL_TYPES 4\n1\n3\n5\n" + std::to_string(hex_type) +
+         "\nPOINT_DATA 9\nSCALARS s double 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7 8\n";
+}
+}  // namespace
+
+TEST(DatasetIO, LowerDimensionalCellsBesideVolumeCellsAreSkippedAndNoted) {
+  TempDir dir;
+  write_text(dir.file("g.vtk"), gmsh_like_vtk());
+  std::string note;
+  const Scene s = read_vtk_file(dir.file("g.vtk"), &note);
+  ASSERT_EQ(s.mesh().num_cells(), 1u);
+  EXPECT_EQ(s.mesh().types[0], CellType::Hexahedron);
+  EXPECT_EQ(s.mesh().conn, (std::vector<int32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
+  // Points keep the file's numbering, so the scalars stay with their points.
+  ASSERT_EQ(s.mesh().num_points(), 9u);
+  EXPECT_EQ(s.mesh().scalars[5], 5.0);
+  EXPECT_EQ(note, "read the volume cells only; skipped 3 cells of lower dimension "
+                  "(vtkLine 1, vtkTriangle 1, vtkVertex 1)");
+  EXPECT_EQ(load_input(dir.file("g.vtk")).mesh().num_cells(), 1u);
+  // Volume cells outside the four are refused by name, not skipped.
+  write_text(dir.file("q.vtk"), gmsh_like_vtk(25));
+  std::string e = input_error([&] { load_input(dir.file("q.vtk")); });
+  EXPECT_TRUE(contains(e, "q.vtk: cell 3: type 25 (vtkQuadraticHexahedron) is not supported")) << e;
+  write_text(dir.file("v.vtk"), gmsh_like_vtk(11));
+  e = input_error([&] { load_input(dir.file("v.vtk")); });
+  EXPECT_TRUE(contains(e, "v.vtk: cell 3: type 11 (vtkVoxel) is not supported")) << e;
+}
+
+std::string repeat(const std::string& s, int n) {
+  std::string out;
+  for (int i = 0; i < n; ++i) out += s;
+  return out;
+}
+
+TEST(DatasetIO, DeclaredSizesBeyondTheFileAreRefusedBeforeReading) {
+  TempDir dir;
+  std::string text = gmsh_like_vtk();
+  text.replace(text.find("POINTS 9"), 8, "POINTS 900000000");
+  write_text(dir.file("p.vtk"), text);
+  std::string e = input_error([&] { load_input(dir.file("p.vtk")); });
+  EXPECT_TRUE(contains(e, "p.vtk: POINTS (line 5): point count 900000000 cannot fit")) << e;
+  write_text(dir.file("d.vtu"), "<VTKFile type=\"UnstructuredGrid\">" + repeat("<a>", 20000) + repeat("</a>", 20000) + "</VTKFile>");
+  e = input_error([&] { load_input(dir.file("d.vtu")); });
+  EXPECT_TRUE(contains(e, "d.vtu: XML byte")) << e;
+  write_text(dir.file("o.vti"),
+             "<VTKFile type=\"ImageData\"><ImageData WholeExtent=\"0 1 0 1 0 1\" Origin=\"nan 0 0\" "
+             "Spacing=\"1 1 1\"></ImageData></VTKFile>");
+  e = input_error([&] { load_input(dir.file("o.vti")); });
+  EXPECT_TRUE(contains(e, "o.vti: ImageData Origin: 'nan' is not a finite number")) << e;
+}
+
+// VTK reports a short binary read only as a warning; it must still refuse the file.
+TEST(DatasetIO, TruncatedBinaryLegacyVtkIsRefused) {
+  TempDir dir;
+  const Scene zoo = make("zoo");
+  write_scene(zoo, dir.file("full.vtk"));
+  std::ifstream in(dir.file("full.vtk"), std::ios::binary);
+  std::stringstream all;
+  all << in.rdbuf();
+  const std::string bytes = all.str();
+  for (const double keep : {0.3, 0.6, 0.9}) {
+    write_text(dir.file("cut.vtk"), bytes.substr(0, static_cast<size_t>(bytes.size() * keep)));
+    const std::string e = input_error([&] { load_input(dir.file("cut.vtk")); });
+    EXPECT_TRUE(contains(e, "cut.vtk: ")) << keep << ": " << e;
+  }
+}
+
+// ParaView extracts mix surface cells into .vtu files too.
+TEST(DatasetIO, LowerDimensionalCellsInVtuAreSkipped) {
+  TempDir dir;
+  write_text(dir.file("m.vtu"),
+             "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+             "<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"2\"><Points>"
+             "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1"
+             "</DataArray></Points><Cells>"
+             "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 2 1 0 1 2 3</DataArray>"
+             "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3 7</DataArray>"
+             "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5 10</DataArray>"
+             "</Cells></Piece></UnstructuredGrid></VTKFile>\n");
+  std::string note;
+  const Scene s = read_vtk_file(dir.file("m.vtu"), &note);
+  EXPECT_EQ(s.mesh().num_cells(), 1u);
+  EXPECT_EQ(s.mesh().types[0], CellType::Tetra);
+  EXPECT_TRUE(contains(note, "skipped 1 cells of lower dimension (vtkTriangle 1)")) << note;
+}

@@ -1,0 +1,163 @@
+// Interpenetrating volumes through the vobench program: check refuses them (exit 2, one line
+// naming two cells), validate lists the pairs, run marks the record an input fault.
+// Data: tests/data/two_boxes.vtk, two boxes meshed separately by gmsh (two_boxes.geo), and
+// two Kuhn blocks built here.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "datasets/datasets.h"
+#include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+struct Outcome {
+  int code;
+  std::string out, err;
+};
+
+Outcome vobench(const std::string& args) {
+  const fs::path err = fs::temp_directory_path() / ("vobench_overlap_err_" + std::to_string(getpid()));
+  const std::string cmd = std::string(VOB_BINARY) + " " + args + " 2>" + err.string();
+  const vob::test::CommandOutput r = vob::test::run_command(cmd);
+  std::ifstream in(err);
+  std::string e((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {r.code, r.out, e};
+}
+
+fs::path scratch(const std::string& name) {
+  fs::path d = fs::temp_directory_path() / ("vobench_overlap_" + std::to_string(getpid()));
+  fs::create_directories(d);
+  return d / name;
+}
+
+const std::string kGmsh = std::string(VOB_TEST_DATA) + "/two_boxes.vtk";
+
+int lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+// Two Kuhn blocks of 48 cells overlapping by part of a cell, written as .vtu.
+std::string blocks_file() {
+  const fs::path p = scratch("blocks.vtu");
+  vob::CellMesh m = vob::test::interpenetrating_blocks(2);
+  vob::validate_cell_mesh(m, "blocks");
+  vob::write_scene(vob::Scene::from_mesh("blocks", std::move(m)), p.string());
+  return p.string();
+}
+}  // namespace
+
+TEST(CliOverlap, CheckRefusesInterpenetratingVolumesNamingTwoCells) {
+  for (const std::string& file : {kGmsh, blocks_file()}) {
+    for (const char* algo : {"mpvo", "sxmpvo"}) {
+      const Outcome r = vobench(std::string("check --algorithm ") + algo + " --input " + file +
+                                " --views 2 --size 64x64");
+      EXPECT_EQ(r.code, 2) << r.out << r.err;
+      EXPECT_EQ(lines(r.err), 1) << r.err;
+      EXPECT_NE(r.err.find(fs::path(file).filename().string()), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("cells "), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find(" overlap (sample at pixel "), std::string::npos) << r.err;
+      EXPECT_NE(r.err.find("the input has no visibility order"), std::string::npos) << r.err;
+    }
+  }
+}
+
+TEST(CliOverlap, ValidateListsThePairsAndExitsTwo) {
+  Outcome r = vobench("validate " + kGmsh);
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.out.find("interpenetrating pairs"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  cells "), std::string::npos) << r.out;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("interpenetrate"), std::string::npos) << r.err;
+  r = vobench("validate --json --input " + kGmsh);
+  EXPECT_EQ(r.code, 2);
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_GT(j["overlapping_pairs"].get<int>(), 20);  // more than the text listing shows
+  EXPECT_EQ(j["pairs"].size(), j["overlapping_pairs"].get<size_t>());
+  EXPECT_NE(r.err.find("cells " + std::to_string(j["pairs"][0][0].get<int>()) + " and " +
+                       std::to_string(j["pairs"][0][1].get<int>())),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(CliOverlap, ValidateOfAValidMeshIsClean) {
+  for (const char* how : {"", "--exhaustive "}) {
+    const Outcome r =
+        vobench(std::string("validate ") + how + "--dataset gap --set nx=4 --set ny=4 --set nz=6 --set gaps=2");
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find(", 0 interpenetrating pairs"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(*how ? "exhaustive search" : "certified by the boundary check"), std::string::npos)
+        << r.out;
+    EXPECT_TRUE(r.err.empty()) << r.err;
+  }
+}
+
+TEST(CliOverlap, ValidateListsEveryPairWhenTheBoundaryCheckFindsOne) {
+  const Outcome fast = vobench("validate --json " + kGmsh);
+  const Outcome full = vobench("validate --json --exhaustive " + kGmsh);
+  EXPECT_EQ(fast.code, 2);
+  EXPECT_EQ(full.code, 2);
+  const auto f = nlohmann::json::parse(fast.out), e = nlohmann::json::parse(full.out);
+  EXPECT_EQ(f["certificate"]["result"], "overlap");
+  EXPECT_EQ(f["method"], "exhaustive");
+  EXPECT_FALSE(e.contains("certificate"));
+  EXPECT_EQ(f["pairs"], e["pairs"]);
+}
+
+TEST(CliOverlap, ValidateFullOptionRefusesBeforeOrdering) {
+  Outcome r = vobench("check --validate full --algorithm mpvo --input " + blocks_file() +
+                      " --views 1 --size 16x16");
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("interpenetrate"), std::string::npos) << r.err;
+  r = vobench("check --validate full --algorithm mpvo --dataset gap --set nx=3 --set ny=3 "
+              "--set nz=4 --views 1 --size 16x16");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  r = vobench("check --validate sometimes --algorithm mpvo --dataset gap");
+  EXPECT_EQ(r.code, 2);
+}
+
+// A one-view mpvo suite over the interpenetrating gmsh boxes.
+fs::path gmsh_suite(const std::string& name) {
+  const fs::path suite = scratch(name);
+  std::ofstream(suite) << R"({"name": "t", "datasets": [{"input": ")" << kGmsh << R"("}],
+                   "algorithms": ["mpvo"], "views": 1, "sizes": ["48x48"],
+                   "repeats": 1, "warmup": 0})";
+  return suite;
+}
+
+TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
+  const fs::path suite = gmsh_suite("suite.json");
+  const fs::path results = scratch("results.jsonl");
+  fs::remove(results);
+  const Outcome r = vobench("run " + suite.string() + " -o " + results.string());
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  std::ifstream in(results);
+  std::string line;
+  ASSERT_TRUE(std::getline(in, line));
+  const auto j = nlohmann::json::parse(line);
+  ASSERT_TRUE(j.contains("input_fault")) << line.substr(0, 400);
+  EXPECT_GT(j["input_fault"]["overlapping_pairs"].get<int>(), 0);
+  EXPECT_EQ(j["input_fault"]["overlapping_pairs"], j["oracle"]["overlapping_pairs"]);
+  EXPECT_FALSE(j["input_fault"]["examples"].empty());
+  EXPECT_NE(r.err.find("input fault: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(", 0 with oracle violations"), std::string::npos) << r.err;
+}
+
+TEST(CliOverlap, RunWithValidateFullRefusesTheDatasetBeforeMeasuring) {
+  const fs::path suite = gmsh_suite("suite-full.json");
+  const fs::path results = scratch("results-full.jsonl");
+  fs::remove(results);
+  const Outcome r = vobench("run --validate full " + suite.string() + " -o " + results.string());
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("interpenetrate"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("two_boxes"), std::string::npos) << r.err;
+  std::error_code ec;
+  EXPECT_EQ(fs::exists(results, ec) ? fs::file_size(results, ec) : 0u, 0u);  // nothing measured
+}
