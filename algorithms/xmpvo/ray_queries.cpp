@@ -22,7 +22,7 @@ struct Wedge {
 // per-view input is read only.
 class Worker {
  public:
-  explicit Worker(const QueryInput& in) : in_(in), signs_(in.signs), face_stamp_(in.ext.face.size(), -1) {
+  explicit Worker(const QueryInput& in) : signs_(in.signs), in_(in), face_stamp_(in.ext.face.size(), -1) {
     signs_.side = signs_.dis_side = 0;
   }
   size_t bytes() const {

@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <random>
+#include <vector>
 
 #include "harness/bench/suite.h"
 #include "harness/scene/cell_overlap.h"
