@@ -1,0 +1,64 @@
+#!/usr/bin/python3
+"""Rebuilds every reproduction's tables, claims and figures from DIR/results.jsonl alone
+(docs/pipeline.md). `vobench reproduce` and `vobench report DIR` run this; it measures
+nothing.
+
+usage: build_tables.py DIR [--only NAME]
+"""
+import argparse
+import importlib.util
+import json
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+from vobtables import Doc, load_records  # noqa: E402
+
+
+def load_paper(paper):
+    base = os.path.join(HERE, "papers", paper)
+    spec = importlib.util.spec_from_file_location(f"paper_{paper.replace('-', '_')}", base + ".py")
+    if spec is None or not os.path.exists(base + ".py"):
+        sys.exit(f"tables: no table script reports/papers/{paper}.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    numbers = {}
+    if os.path.exists(base + ".json"):
+        with open(base + ".json") as f:
+            numbers = json.load(f)
+    return mod, numbers
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("dir")
+    ap.add_argument("--only", help="one reproduction")
+    args = ap.parse_args()
+    path = os.path.join(args.dir, "results.jsonl")
+    if not os.path.exists(path):
+        sys.exit(f"tables: {path}: no results file")
+    recs = load_records(path)
+    by_repro = {}
+    for r in recs:
+        name = r.get("reproduction")
+        if name and r.get("paper"):
+            by_repro.setdefault((name, r["paper"]), []).append(r)
+    built = 0
+    for (name, paper), rs in sorted(by_repro.items()):
+        if args.only and name != args.only:
+            continue
+        mod, numbers = load_paper(paper)
+        build = getattr(mod, "TABLES", {}).get(name)
+        if build is None:
+            sys.exit(f"tables: reports/papers/{paper}.py has no table for '{name}'")
+        doc = Doc(name, name, context=rs[0].get("context"), out_dir=args.dir)
+        build(rs, numbers, doc)
+        print(f"tables: wrote {doc.write()}", file=sys.stderr)
+        built += 1
+    if args.only and not built:
+        sys.exit(f"tables: {path}: no records of reproduction '{args.only}' with a paper")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,156 @@
+"""A reproduction's document: tables (ours beside the paper's), claims computed by an
+explicit criterion, figures; written as NAME.md, NAME.json and NAME.html, deterministically
+(the same records give the same bytes)."""
+import html
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def fmt(v):
+    """A table cell: 3 significant digits, integers as integers, None as '-'."""
+    if v is None:
+        return "-"
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        if math.isnan(v):
+            return "-"
+        if v == math.floor(v) and abs(v) < 1e15:
+            return str(int(v))
+        return f"{v:.3g}"
+    return str(v)
+
+
+def _clean(v):
+    """JSON-safe: NaN and infinities become null."""
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
+class Table:
+    def __init__(self, title, columns, notes=""):
+        self.title, self.columns, self.notes, self.rows = title, list(columns), notes, []
+
+    def row(self, *cells):
+        if len(cells) != len(self.columns):
+            raise ValueError(f"table '{self.title}': row has {len(cells)} cells for {len(self.columns)} columns")
+        self.rows.append([_clean(c) for c in cells])
+        return self
+
+
+class Doc:
+    def __init__(self, name, title, intro="", context=None, out_dir="."):
+        self.name, self.title, self.intro, self.context = name, title, intro, context
+        self.out_dir = out_dir
+        self.tables, self.claims, self.figures = [], [], []
+
+    def table(self, title, columns, notes=""):
+        t = Table(title, columns, notes)
+        self.tables.append(t)
+        return t
+
+    def claim(self, claim, ours, paper, criterion, holds):
+        """`holds` is computed from the numbers by `criterion` (a bool), or None when a
+        record it needs is missing ("not measured")."""
+        if holds is not None and not isinstance(holds, bool):
+            raise TypeError(f"claim '{claim}': holds must be a bool or None, not {type(holds).__name__}")
+        self.claims.append({"claim": claim, "holds": holds, "ours": _clean(ours),
+                            "paper": _clean(paper), "criterion": criterion})
+
+    def figure(self, fig, file_name, caption=""):
+        """Saves a matplotlib figure beside the document (deterministic PNG metadata)."""
+        path = os.path.join(self.out_dir, file_name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        fig.savefig(path, dpi=100, metadata={"Software": None})
+        plt.close(fig)
+        self.figures.append({"file": file_name, "caption": caption})
+
+    def image(self, file_name, caption=""):
+        """An image a probe or the runner wrote (path relative to the output folder)."""
+        self.figures.append({"file": file_name, "caption": caption})
+
+    # --- writing ---------------------------------------------------------------------------
+
+    def to_json(self):
+        return {"reproduction": self.name, "title": self.title, "intro": self.intro,
+                "context": self.context,
+                "tables": [{"title": t.title, "columns": t.columns,
+                            "rows": [dict(zip(t.columns, r)) for r in t.rows], "notes": t.notes}
+                           for t in self.tables],
+                "claims": self.claims, "figures": self.figures}
+
+    def to_markdown(self):
+        out = [f"# {self.title}", ""]
+        if self.intro:
+            out += [self.intro, ""]
+        for t in self.tables:
+            out += [f"## {t.title}", "", "| " + " | ".join(t.columns) + " |",
+                    "|" + "---|" * len(t.columns)]
+            out += ["| " + " | ".join(fmt(c) for c in r) + " |" for r in t.rows]
+            if t.notes:
+                out += ["", t.notes]
+            out.append("")
+        if self.claims:
+            out += ["## Claims", "", "| claim | holds | ours | paper | criterion |", "|---|---|---|---|---|"]
+            for c in self.claims:
+                verdict = "not measured" if c["holds"] is None else ("holds" if c["holds"] else "does not hold")
+                out.append(f"| {c['claim']} | {verdict} | {fmt(c['ours'])} | {fmt(c['paper'])} | {c['criterion']} |")
+            out.append("")
+        for f in self.figures:
+            out += [f"![{f['caption']}]({f['file']})", ""]
+        if self.context:
+            out += ["## Machine", "", "```", json.dumps(self.context, indent=1, sort_keys=True), "```", ""]
+        return "\n".join(out)
+
+    def to_html(self):
+        e = html.escape
+        out = ["<!doctype html><html><head><meta charset='utf-8'>",
+               f"<title>{e(self.title)}</title>",
+               "<style>body{font-family:sans-serif;max-width:70em;margin:2em auto}"
+               "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:2px 8px;"
+               "text-align:right}td:first-child{text-align:left}.no{color:#b00}.yes{color:#070}"
+               ".nm{color:#888}img{max-width:100%}</style></head><body>",
+               f"<h1>{e(self.title)}</h1>"]
+        if self.intro:
+            out.append(f"<p>{e(self.intro)}</p>")
+        for t in self.tables:
+            out.append(f"<h2>{e(t.title)}</h2><table><tr>" + "".join(f"<th>{e(c)}</th>" for c in t.columns) + "</tr>")
+            for r in t.rows:
+                out.append("<tr>" + "".join(f"<td>{e(fmt(c))}</td>" for c in r) + "</tr>")
+            out.append("</table>")
+            if t.notes:
+                out.append(f"<p>{e(t.notes)}</p>")
+        if self.claims:
+            out.append("<h2>Claims</h2><table><tr><th>claim</th><th>holds</th><th>ours</th><th>paper</th><th>criterion</th></tr>")
+            for c in self.claims:
+                cls, word = (("nm", "not measured") if c["holds"] is None
+                             else (("yes", "holds") if c["holds"] else ("no", "does not hold")))
+                out.append(f"<tr><td>{e(c['claim'])}</td><td class='{cls}'>{word}</td><td>{e(fmt(c['ours']))}</td>"
+                           f"<td>{e(fmt(c['paper']))}</td><td>{e(c['criterion'])}</td></tr>")
+            out.append("</table>")
+        for f in self.figures:
+            out.append(f"<figure><img src='{e(f['file'])}'><figcaption>{e(f['caption'])}</figcaption></figure>")
+        if self.context:
+            out.append("<h2>Machine</h2><pre>" + e(json.dumps(self.context, indent=1, sort_keys=True)) + "</pre>")
+        out.append("</body></html>")
+        return "\n".join(out)
+
+    def write(self):
+        os.makedirs(self.out_dir, exist_ok=True)
+        for ext, text in (("md", self.to_markdown()), ("json", json.dumps(self.to_json(), indent=1) + "\n"),
+                          ("html", self.to_html())):
+            path = os.path.join(self.out_dir, f"{self.name}.{ext}")
+            tmp = path + ".tmp"
+            with open(tmp, "w") as f:
+                f.write(text)
+            os.replace(tmp, path)
+        return os.path.join(self.out_dir, f"{self.name}.md")

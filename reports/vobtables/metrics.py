@@ -1,0 +1,102 @@
+"""Metrics: functions of stored records. Nothing here measures."""
+import statistics
+
+
+def select(records, **where):
+    """Records whose fields equal the given values (dotted names reach into objects:
+    select(rs, **{"parameters.k": 2}))."""
+    out = []
+    for r in records:
+        if all(get(r, k.replace("__", ".")) == v for k, v in where.items()):
+            out.append(r)
+    return out
+
+
+def get(r, dotted, default=None):
+    cur = r
+    for part in dotted.split("."):
+        if not isinstance(cur, dict) or part not in cur:
+            return default
+        cur = cur[part]
+    return cur
+
+
+def group(records, field):
+    """[(value, records)] in first-seen order; `field` is a dotted name or a function."""
+    keyf = field if callable(field) else (lambda r: get(r, field))
+    groups = {}
+    for r in records:
+        groups.setdefault(keyf(r), []).append(r)
+    return list(groups.items())
+
+
+def values(records, metric):
+    return [v for v in (metric(r) for r in records) if v is not None]
+
+
+def mean(records, metric):
+    v = values(records, metric)
+    return statistics.mean(v) if v else None
+
+
+def median(records, metric):
+    v = values(records, metric)
+    return statistics.median(v) if v else None
+
+
+def total(records, metric):
+    v = values(records, metric)
+    return sum(v) if v else None
+
+
+def maximum(records, metric):
+    v = values(records, metric)
+    return max(v) if v else None
+
+
+# --- per-record metrics -------------------------------------------------------------------
+
+def frame_seconds(r):
+    """Median per-frame order time of the record's repeats."""
+    return get(r, "total.median")
+
+
+def phase(name):
+    return lambda r: get(r, f"phases.{name}.median")
+
+
+def counter(name):
+    return lambda r: get(r, f"counters.{name}")
+
+
+def oracle(name):
+    return lambda r: get(r, f"oracle.{name}")
+
+
+def result(dotted):
+    """A value of a probe record's result."""
+    return lambda r: get(r, f"result.{dotted}")
+
+
+def prepare_seconds(r):
+    return get(r, "prepare.seconds")
+
+
+def violating_pixels(r):
+    """The oracle's violating pixels; 0 when the input has overlapping cells (not the
+    orderer's fault); HAVS reports its own (it composites itself)."""
+    if "input_fault" in r:
+        return 0
+    own = get(r, "counters.havs_violating_pixels")
+    if own is not None:
+        return int(own)
+    return get(r, "oracle.violating_pixels")
+
+
+def failing(r):
+    v = violating_pixels(r)
+    return None if v is None else int(v > 0)
+
+
+def ratio(a, b):
+    return None if a is None or b in (None, 0) else a / b

@@ -1,0 +1,21 @@
+"""Reading results.jsonl: every record, in file order."""
+import json
+import sys
+
+
+def load_records(path):
+    recs = []
+    with open(path) as f:
+        for n, raw in enumerate(f, 1):
+            line = raw.strip()
+            if not line:
+                continue
+            try:
+                recs.append(json.loads(line))
+            except json.JSONDecodeError as e:
+                # A torn last line (a writer killed mid-write); `vobench run` repairs it.
+                if not raw.endswith("\n"):
+                    print(f"tables: note: {path}: line {n}: incomplete last line skipped", file=sys.stderr)
+                    continue
+                sys.exit(f"tables: {path}: line {n}: not JSON ({e})")
+    return recs
