@@ -34,21 +34,29 @@ GLuint compile(const Functions& gl, const ShaderStage& stage) {
 ShaderStage shader_stage(GLenum type, const std::vector<ShaderFile>& files,
                          const std::string& defines) {
   ShaderStage st{type, "", {}};
+  int line = 1;  // where the next file starts in the concatenated source
   for (size_t i = 0; i < files.size(); ++i) {
     std::string text(files[i].text);
-    st.name += (i ? " + " : "") + std::string(files[i].path) + " (" + std::to_string(i) + ")";
+    if (!text.empty() && text.back() != '\n') text += '\n';
+    const int lines = int(std::count(text.begin(), text.end(), '\n'));
+    if (files.size() > 1)
+      st.name += (i ? " + " : "") + std::string(files[i].path) + " (lines " + std::to_string(line) +
+                 "-" + std::to_string(line + lines - 1) + ")";
+    else
+      st.name = files[i].path;
     if (i == 0) {
-      // GLSL wants #version first: the defines and the #line go after its line.
+      // GLSL wants #version first: the defines go after its line, then "#line" restores
+      // the numbering so that the defines do not shift it.
       const size_t v = text.find("#version");
       const size_t eol = v == std::string::npos ? 0 : text.find('\n', v) + 1;
-      const int next_line = int(std::count(text.begin(), text.begin() + eol, '\n')) + 1;
+      const int next = int(std::count(text.begin(), text.begin() + eol, '\n')) + 1;
       st.parts.push_back(text.substr(0, eol));
-      st.parts.push_back(defines + "#line " + std::to_string(next_line) + " 0\n");
+      st.parts.push_back(defines + "#line " + std::to_string(next) + "\n");
       st.parts.push_back(text.substr(eol));
     } else {
-      st.parts.push_back("\n#line 1 " + std::to_string(i) + "\n");
       st.parts.push_back(std::move(text));
     }
+    line += lines;
   }
   return st;
 }

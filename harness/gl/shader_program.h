@@ -31,8 +31,9 @@ struct ShaderError : std::runtime_error {
 GLuint link_program(const Functions& gl, const std::vector<ShaderStage>& stages);
 
 // The files' texts in order, `defines` (e.g. "#define K 8\n") inserted after the first
-// one's #version line, and "#line 1 i" before file i, so that a driver log line "i:L"
-// means line L of file i; the stage's name lists the files with their numbers.
+// one's #version line without shifting the line numbers. The stage's name lists each file
+// with its line range in the concatenation, so that a log line "0:L" (Mesa reports no
+// source-string number) can be traced to its file.
 ShaderStage shader_stage(GLenum type, const std::vector<ShaderFile>& files,
                          const std::string& defines = "");
 
