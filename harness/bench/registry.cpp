@@ -7,6 +7,7 @@
 #include "algorithms/havs/havs.h"
 #include "algorithms/mpvo/mpvo.h"
 #include "algorithms/stencil/stencil_layers.h"
+#include "algorithms/stencil/stencil_probes.h"
 #include "algorithms/stencil/stencil_xmpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
@@ -53,6 +54,8 @@ const OrdererInfo& find_orderer(const std::string& name) {
 const std::vector<ProbeInfo>& probe_registry() {
   static const std::vector<ProbeInfo> registry = {
       xmpvo_stability_probe_info(),
+      stencil_read_scan_probe_info(),
+      stencil_layer_images_probe_info(),
   };
   return registry;
 }

@@ -163,7 +163,7 @@ def fig3(records, paper, doc):
     frame = f"orbit frame {res['view_index']}" + (f" of {views}" if views else "")
     t = doc.table(f"Layers of the {rec['row']} at {res['w']}x{res['h']} ({frame}): triangles and footprint",
                   ["layer", "triangles", "footprint pixels", "share of covered pixels %", "image"])
-    images = res.get("images", {})
+    images = rec.get("images") or res.get("images") or {}  # the runner moves them to the record
     foot, tris, shown = res["footprint"], res["triangles_per_layer"], res["layer_images"]
     covered = res["covered_pixels"]
     decreasing = sum(1 for l in range(1, layers) if foot[l] <= foot[l - 1])
