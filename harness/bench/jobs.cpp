@@ -57,6 +57,18 @@ std::vector<const ProbeSpec*> sceneless_probes(const SuiteSpec& suite) {
 
 std::vector<std::pair<int, Camera>> suite_views(const SuiteSpec& suite, const DatasetSpec& ds,
                                                 const Scene& scene, int w, int h) {
+  if (suite.orbit) {
+    ViewOptions vo;
+    vo.width = w;
+    vo.height = h;
+    vo.ortho = suite.ortho;
+    vo.zoom = suite.zoom;
+    std::vector<std::pair<int, Camera>> out;
+    for (int i = 0; i < suite.views; ++i)
+      if (suite.view_indices.empty() || std::count(suite.view_indices.begin(), suite.view_indices.end(), i))
+        out.emplace_back(i, orbit_view(scene.bounds(), suite.views, i, vo));
+    return out;
+  }
   if (suite.view_directions.empty())
     return dataset_views(ds, scene, suite.views, suite.view_indices, w, h, suite.ortho, suite.zoom);
   std::vector<std::pair<int, Camera>> out;
@@ -69,7 +81,7 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
                               const RunTags& tags) {
   std::vector<Job> jobs;
   const std::string scope = tags.suite_name(suite), label = plan.dataset.label();
-  const std::string view_set = suite.view_directions.empty() ? "|v" : "|d";
+  const std::string view_set = suite.orbit ? "|o" : suite.view_directions.empty() ? "|v" : "|d";
   if (plan.orderers)
     for (const auto& spec : algorithms_for(suite.algorithms, scene.kind()))
       for (const auto& [w, h] : suite.sizes)

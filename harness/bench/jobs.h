@@ -45,7 +45,8 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
                               const RunTags& tags);
 Job sceneless_job(const SuiteSpec& suite, const ProbeSpec& probe, const RunTags& tags);
 
-// The suite's views of a dataset at w x h: its view_directions, or the dataset's own cameras
+// The suite's views of a dataset at w x h: its view_directions, the frames of its orbit
+// (all, spread or listed indices), or the dataset's own cameras
 // (hard cases about a view), or the Fibonacci view set (all, spread or listed indices).
 std::vector<std::pair<int, Camera>> suite_views(const SuiteSpec& suite, const DatasetSpec& ds,
                                                 const Scene& scene, int w, int h);

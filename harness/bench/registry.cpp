@@ -7,6 +7,7 @@
 #include "algorithms/havs/havs.h"
 #include "algorithms/mpvo/mpvo.h"
 #include "algorithms/stencil/stencil_layers.h"
+#include "algorithms/stencil/stencil_probes.h"
 #include "algorithms/stencil/stencil_xmpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
@@ -62,6 +63,8 @@ ResolvedParams resolve_orderer_params(const std::string& spec) {
 const std::vector<ProbeInfo>& probe_registry() {
   static const std::vector<ProbeInfo> registry = {
       xmpvo_stability_probe_info(),
+      stencil_read_scan_probe_info(),
+      stencil_layer_images_probe_info(),
   };
   return registry;
 }

@@ -7,6 +7,7 @@
 //    "algorithms": ["mpvo", {"name": "havs", "grid": {"k": [2, 6]}}],  // or ["all"]
 //    "probes": [{"name": "xmpvo-stability"}],
 //    "views": 14, "view_indices": [0, 3] | "spread_views": 3 | "view_directions": [...],
+//    "orbit": false,
 //    "ortho": false, "zoom": 1, "sizes": ["512x512"], "repeats": 3, "warmup": 1,
 //    "threads": 1, "oracle": true, "supersample": 1, "image_error": true,
 //    "image_views": [0], "images_of_violations": false, "exterior_area": true}
@@ -57,6 +58,7 @@ struct SuiteSpec {
   int views = 14;
   std::vector<int> view_indices;  // empty: all (spread_views fills it)
   std::vector<ViewDirection> view_directions;  // non-empty: these views instead
+  bool orbit = false;             // views are the frames of a `views`-frame orbit (view_set.h)
   bool ortho = false;
   double zoom = 1.0;
   std::vector<std::pair<int, int>> sizes{{512, 512}};

@@ -10,6 +10,7 @@
 #include "harness/bench/scale_overlay.h"
 #include "harness/bench/suite.h"
 #include "harness/scene/input_error.h"
+#include "harness/view/view_set.h"
 
 using namespace vob;
 using json = nlohmann::json;
@@ -110,6 +111,27 @@ TEST(SuiteFormat, KeysCarryReproductionViewSetAndScale) {
   ASSERT_EQ(jobs.size(), 6u);  // mpvo x 6 views
   EXPECT_EQ(jobs[2].key, "repro/s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|s1|tiny");
   EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{})[2].key, "s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|s1");
+}
+
+TEST(SuiteFormat, OrbitViewsAreOrbitFramesWithTheirOwnKeys) {
+  auto j = gap_suite();
+  j["views"] = 30;
+  j["orbit"] = true;
+  j["spread_views"] = 3;
+  const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
+  const auto plans = plan_datasets(s);
+  const Scene scene = make_scene(plans[0].dataset);
+  const auto views = suite_views(s, plans[0].dataset, scene, 64, 32);
+  ASSERT_EQ(views.size(), 3u);
+  EXPECT_EQ(views[1].first, 10);
+  const Camera want = orbit_view(scene.bounds(), 30, 10, ViewOptions{64, 32});
+  EXPECT_EQ(views[1].second.to_json(), want.to_json());
+  EXPECT_NE(views[1].second.to_json(), fibonacci_view(scene.bounds(), 30, 10, ViewOptions{64, 32}).to_json());
+  EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{})[1].key, "s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|o10/30|512x512|s1");
+  j.erase("views");
+  j.erase("spread_views");
+  j["view_directions"] = json::parse(R"([{"from": [1, 0, 0]}])");
+  EXPECT_EQ(error_of(j).rfind("s.json: orbit: ", 0), 0u) << error_of(j);
 }
 
 TEST(Reproduction, FindsFilesByNameAndReadsSuitesAtTheScale) {
