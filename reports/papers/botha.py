@@ -151,8 +151,8 @@ def table1(records, paper, doc):
         fratio_text = "-" if fratio is None else f"{fratio:.3f}"
         extra = div(None if ratio is None else sec["ip-pbtf"] - sec["pbtf"], fr.get("pbtf"))
         noise_text = "-" if noise is None else f"{noise:.3f}"
-        doc.claim(f"ip-pbtf whole splatting frame as fast as pbtf's on {row} (frame time ratio {fratio_text}; ip-pbtf's extra "
-                  f"ordering time is {pct(extra, 2)} of pbtf's frame)",
+        doc.claim(f"ip-pbtf whole splatting frame as fast as pbtf's on {row} (frame time ratio {fratio_text}; "
+                  f"ip-pbtf's extra ordering time is {pct(extra, 2)} of pbtf's frame)",
                   ours=fratio, paper=paper_ratio,
                   criterion=f"abs(ours - 1) <= pbtf's repeat spread in this run ({noise_text}: median over views "
                             "of (max - min) / median)",
@@ -363,7 +363,8 @@ def violations(records, paper, doc):
                    "slab reverses to itself, so the order and its count are btf's.")
         complete = len(views) == nviews and all(None not in c.values() for c in per_view)
         doc.claim(f"ip-pbtf < pbtf < btf on every view of {row}", ours=ranked, paper=None,
-                  criterion=f"ours == {nviews} (views ranked, of {nviews})", holds=ranked == nviews if complete else None)
+                  criterion=f"ours == {nviews} (views ranked, of {nviews})",
+                  holds=ranked == nviews if complete else None)
         doc.claim(f"distance-sort has no violation on {row}", ours=clean, paper=None,
                   criterion=f"ours == {nviews} (views without a violating pixel, of {nviews})",
                   holds=clean == nviews if complete else None)
