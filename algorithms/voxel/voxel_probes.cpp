@@ -52,6 +52,7 @@ void check_complete(const Scene& s, std::vector<int32_t> order, const std::strin
 json splat_frames(Params& params, const ProbeContext& ctx) {
   const std::vector<std::string> specs = {"btf", "pbtf", "ip-pbtf"};  // the paper's Table 1 orderings
   const int frame_views = params.get_int("frame_views", 2, 1, 1000);
+  if (params.dry_run()) return json::object();  // suite validation: parameters only
   const Scene& s = *ctx.scene;
   std::map<std::string, std::unique_ptr<Prepared>> prep;
   for (const auto& spec : specs) prep[spec] = prepare_voxel_orderer(spec, s);
@@ -93,7 +94,8 @@ int64_t positions_differing(const std::vector<int32_t>& a, const std::vector<int
   return d;
 }
 
-json order_splits(Params&, const ProbeContext& ctx) {
+json order_splits(Params& params, const ProbeContext& ctx) {
+  if (params.dry_run()) return json::object();  // no parameters
   const Scene& s = *ctx.scene;
   const VoxelGrid& g = s.grid();
   const std::vector<std::string> specs = {"btf", "wbtf", "pbtf", "ip-pbtf"};
