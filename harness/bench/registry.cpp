@@ -14,6 +14,7 @@
 #include "algorithms/xmpvo/stability_probe.h"
 #include "algorithms/xmpvo/xmpvo.h"
 #include "algorithms/voxel/grid_orderers.h"
+#include "algorithms/voxel/voxel_probes.h"
 #include "harness/bench/probe.h"
 #include "harness/scene/input_error.h"
 
@@ -53,6 +54,8 @@ const OrdererInfo& find_orderer(const std::string& name) {
 const std::vector<ProbeInfo>& probe_registry() {
   static const std::vector<ProbeInfo> registry = {
       xmpvo_stability_probe_info(),
+      voxel_splat_frames_probe_info(),
+      voxel_order_splits_probe_info(),
   };
   return registry;
 }
