@@ -15,6 +15,7 @@
 #include "algorithms/xmpvo/stability_probe.h"
 #include "algorithms/xmpvo/xmpvo.h"
 #include "algorithms/voxel/grid_orderers.h"
+#include "algorithms/voxel/voxel_probes.h"
 #include "harness/bench/probe.h"
 #include "harness/scene/input_error.h"
 
@@ -65,6 +66,8 @@ const std::vector<ProbeInfo>& probe_registry() {
       xmpvo_stability_probe_info(),
       stencil_read_scan_probe_info(),
       stencil_layer_images_probe_info(),
+      voxel_splat_frames_probe_info(),
+      voxel_order_splits_probe_info(),
   };
   return registry;
 }

@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "harness/bench/runner.h"
+#include "harness/oracle/oracle.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/scene_args.h"
 #include "harness/render/compositor.h"

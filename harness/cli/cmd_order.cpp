@@ -4,6 +4,7 @@
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/runner.h"
+#include "harness/oracle/oracle.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/scene_args.h"
 #include "harness/scene/input_error.h"

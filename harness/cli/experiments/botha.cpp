@@ -12,6 +12,7 @@
 #include "datasets/datasets.h"
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/runner.h"
+#include "harness/oracle/oracle.h"
 #include "harness/cli/experiment_table.h"
 #include "harness/render/compositor.h"
 #include "harness/view/view_set.h"

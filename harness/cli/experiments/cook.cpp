@@ -8,6 +8,7 @@
 #include "datasets/datasets.h"
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/runner.h"
+#include "harness/oracle/oracle.h"
 #include "harness/cli/experiment_table.h"
 #include "harness/cli/experiments/measure.h"
 #include "harness/raster/cell_clip.h"
