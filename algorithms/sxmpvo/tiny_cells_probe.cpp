@@ -32,7 +32,7 @@ nlohmann::json run(Params& params, const ProbeContext& ctx) {
   // Square images side x side; the camera is the suite's first view with that size (the
   // view set's cameras depend on the size only through width and height).
   const int side = params.get_int("side", 412, 1, kMaxImageSide);
-  if (!ctx.scene) return nlohmann::json::object();  // parameters checked, nothing to measure
+  if (params.dry_run()) return nlohmann::json::object();  // suite validation: parameters only
   if (ctx.scene->kind() != SceneKind::Cells)
     throw InputError(ctx.dataset_label, "sxmpvo-tiny-cells", "needs a cell dataset");
   if (ctx.views.empty()) throw InputError(ctx.dataset_label, "sxmpvo-tiny-cells", "the suite gives no view");

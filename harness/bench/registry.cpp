@@ -9,6 +9,7 @@
 #include "algorithms/stencil/stencil_layers.h"
 #include "algorithms/stencil/stencil_xmpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
+#include "algorithms/sxmpvo/tiny_cells_probe.h"
 #include "algorithms/voxel/distance_sort.h"
 #include "algorithms/xmpvo/bsp_xmpvo.h"
 #include "algorithms/xmpvo/stability_probe.h"
@@ -53,6 +54,7 @@ const OrdererInfo& find_orderer(const std::string& name) {
 const std::vector<ProbeInfo>& probe_registry() {
   static const std::vector<ProbeInfo> registry = {
       xmpvo_stability_probe_info(),
+      sxmpvo_tiny_cells_probe_info(),
   };
   return registry;
 }
