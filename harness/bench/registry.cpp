@@ -10,6 +10,7 @@
 #include "algorithms/stencil/stencil_probes.h"
 #include "algorithms/stencil/stencil_xmpvo.h"
 #include "algorithms/sxmpvo/sxmpvo.h"
+#include "algorithms/sxmpvo/tiny_cells_probe.h"
 #include "algorithms/voxel/distance_sort.h"
 #include "algorithms/xmpvo/bsp_xmpvo.h"
 #include "algorithms/xmpvo/stability_probe.h"
@@ -68,6 +69,7 @@ const std::vector<ProbeInfo>& probe_registry() {
       stencil_layer_images_probe_info(),
       voxel_splat_frames_probe_info(),
       voxel_order_splits_probe_info(),
+      sxmpvo_tiny_cells_probe_info(),
   };
   return registry;
 }
