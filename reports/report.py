@@ -211,6 +211,11 @@ def main():
     recs = load(a.results)
     if not recs:
         sys.exit("report: no records")
+    # Probe records (docs/pipeline.md) feed the paper tables, not this report.
+    recs = [r for r in recs if "probe" not in r]
+    if not recs:
+        print("report: only probe records: no generic report")
+        return
     os.makedirs(os.path.join(a.out, "figures"), exist_ok=True)
     rows = summarise(recs)
     scenes = list(collections.OrderedDict((r["scene"], 1) for r in rows))

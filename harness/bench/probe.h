@@ -31,7 +31,9 @@ struct ProbeInfo {
   bool needs_scene = false;  // the suite entry must list datasets
   // Reads its parameters from `params` (keys it does not read are refused afterwards),
   // measures, and returns the record's "result" object; image paths it wrote go in
-  // result["images"] as {name: path relative to ctx.image_dir's parent}.
+  // result["images"] as {name: path relative to ctx.image_dir's parent} (the runner moves
+  // them to the record's "images"). With params.dry_run() (suite validation, before any
+  // work; ctx is empty) it only reads and checks its parameters and returns {}.
   std::function<nlohmann::json(Params& params, const ProbeContext& ctx)> run;
 };
 

@@ -11,8 +11,10 @@
 #include "algorithms/sxmpvo/sxmpvo.h"
 #include "algorithms/voxel/distance_sort.h"
 #include "algorithms/xmpvo/bsp_xmpvo.h"
+#include "algorithms/xmpvo/stability_probe.h"
 #include "algorithms/xmpvo/xmpvo.h"
 #include "algorithms/voxel/grid_orderers.h"
+#include "harness/bench/probe.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -45,6 +47,22 @@ const OrdererInfo& find_orderer(const std::string& name) {
   std::string all;
   for (const auto& info : orderer_registry()) all += (all.empty() ? "" : ", ") + info.name;
   throw InputError("--algorithm", name, "unknown orderer (known: " + all + ")");
+}
+
+// Probes: measurements that are not orderer x dataset x view (probe.h).
+const std::vector<ProbeInfo>& probe_registry() {
+  static const std::vector<ProbeInfo> registry = {
+      xmpvo_stability_probe_info(),
+  };
+  return registry;
+}
+
+const ProbeInfo& find_probe(const std::string& name) {
+  for (const auto& info : probe_registry())
+    if (info.name == name) return info;
+  std::string all;
+  for (const auto& info : probe_registry()) all += (all.empty() ? "" : ", ") + info.name;
+  throw InputError("probe", name, "unknown probe (known: " + all + ")");
 }
 
 std::unique_ptr<Orderer> make_orderer(const std::string& spec) {

@@ -5,15 +5,24 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include "datasets/datasets.h"
 #include "harness/bench/json_input.h"
+#include "harness/bench/probe.h"
 #include "harness/bench/registry.h"
+#include "harness/bench/scale_overlay.h"
+#include "harness/bench/suite_reader.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
+namespace {
+std::string params_text(const std::map<std::string, std::string>& set) {
+  std::string s;
+  for (const auto& [k, v] : set) s += (s.empty() ? "" : ",") + k + "=" + v;
+  return s;
+}
+}  // namespace
 
 std::string DatasetSpec::label() const {
   if (!input.empty()) {
@@ -21,17 +30,7 @@ std::string DatasetSpec::label() const {
     return (slash == std::string::npos ? input : input.substr(slash + 1)) +
            (tetrahedralize ? "(tet)" : "");
   }
-  std::string s = name;
-  if (!set.empty()) {
-    s += "(";
-    bool first = true;
-    for (const auto& [k, v] : set) {
-      s += (first ? "" : ",") + k + "=" + v;
-      first = false;
-    }
-    s += ")";
-  }
-  return s;
+  return set.empty() ? name : name + "(" + params_text(set) + ")";
 }
 
 nlohmann::json DatasetSpec::to_json() const {
@@ -46,6 +45,16 @@ nlohmann::json DatasetSpec::to_json() const {
     j["set"] = p.to_json();
   }
   return j;
+}
+
+std::string ProbeSpec::label() const {
+  return "probe:" + name + (set.empty() ? "" : "(" + params_text(set) + ")");
+}
+
+nlohmann::json ProbeSpec::parameters() const {
+  Params p(name);
+  for (const auto& [k, v] : set) p.set(k, v);
+  return p.to_json();
 }
 
 std::pair<int, int> parse_size(const std::string& s, const std::string& where) {
@@ -77,103 +86,75 @@ Scene make_scene(const DatasetSpec& spec) {
 }
 
 namespace {
-// Reads the values of one suite file; every message names the file and the entry
-// ("quick.json: datasets[1].set: ..."), and integers are range-checked as 64-bit values
-// before they are narrowed.
-class SuiteReader {
- public:
-  explicit SuiteReader(const std::string& source) : source_(source) {}
 
-  [[noreturn]] void fail(const std::string& where, const std::string& why) const {
-    throw InputError(source_, where, why);
+// "gap {gaps}" with gaps=5 -> "gap 5"; a {key} the point does not set is an error.
+std::string fill_label(const SuiteReader& r, std::string label, const std::map<std::string, std::string>& set,
+                       const std::string& where) {
+  std::string out;
+  for (size_t i = 0; i < label.size(); ++i) {
+    const size_t close = label.find('}', i);
+    if (label[i] != '{' || close == std::string::npos) {
+      out += label[i];
+      continue;
+    }
+    const std::string key = label.substr(i + 1, close - i - 1);
+    if (!set.count(key)) r.fail(where, "{" + key + "} is not a parameter of this dataset");
+    out += set.at(key);
+    i = close;
   }
-  int integer(const nlohmann::json& v, const std::string& where, int64_t lo, int64_t hi) const {
-    const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-    if (!v.is_number_integer()) fail(where, v.dump().substr(0, 40) + " is not " + range);
-    // nlohmann keeps non-negative integers unsigned: compare as unsigned first.
-    if (v.is_number_unsigned() ? (v.get<uint64_t>() > static_cast<uint64_t>(hi) ||
-                                  static_cast<int64_t>(v.get<uint64_t>()) < lo)
-                               : (v.get<int64_t>() < lo || v.get<int64_t>() > hi))
-      fail(where, v.dump() + " is not " + range);
-    return static_cast<int>(v.get<int64_t>());
-  }
-  double number(const nlohmann::json& v, const std::string& where, double lo, double hi) const {
-    const std::string range = "a number in (" + nlohmann::json(lo).dump() + ", " + nlohmann::json(hi).dump() + "]";
-    if (!v.is_number() || !std::isfinite(v.get<double>()) || !(v.get<double>() > lo) ||
-        !(v.get<double>() <= hi))
-      fail(where, v.dump().substr(0, 40) + " is not " + range);
-    return v.get<double>();
-  }
-  bool boolean(const nlohmann::json& v, const std::string& where) const {
-    if (!v.is_boolean()) fail(where, "must be true or false");
-    return v.get<bool>();
-  }
-  std::string string(const nlohmann::json& v, const std::string& where) const {
-    if (!v.is_string() || v.get_ref<const std::string&>().empty()) fail(where, "must be a non-empty string");
-    return v.get<std::string>();
-  }
-  const nlohmann::json& array(const nlohmann::json& v, const std::string& where) const {
-    if (!v.is_array() || v.empty()) fail(where, "must be a non-empty array");
-    return v;
-  }
-  void only_keys(const nlohmann::json& v, const std::string& where,
-                 const std::set<std::string>& known) const {
-    if (!v.is_object()) fail(where, "must be a JSON object");
-    for (const auto& [k, _] : v.items())
-      if (!known.count(k)) {
-        std::string all;
-        for (const auto& n : known) all += (all.empty() ? "" : ", ") + n;
-        fail(where + (where.empty() ? "" : ".") + k, "is not a known key (known: " + all + ")");
-      }
-  }
-
- private:
-  const std::string& source_;
-};
-
-// A generator parameter as Params reads it: integers exactly, other numbers as JSON writes
-// them; arrays, objects and null are not parameters.
-std::string parameter_text(const SuiteReader& r, const nlohmann::json& v, const std::string& where) {
-  if (v.is_string()) return v.get<std::string>();
-  if (v.is_number() || v.is_boolean()) return v.dump();
-  r.fail(where, "must be a number, a string or true/false");
+  return out;
 }
 
-DatasetSpec read_dataset(const SuiteReader& r, const nlohmann::json& d, const std::string& where) {
-  r.only_keys(d, where, {"name", "set", "input", "tetrahedralize", "comment"});
+// One dataset entry: one DatasetSpec per grid point.
+std::vector<DatasetSpec> read_dataset(const SuiteReader& r, const nlohmann::json& d, const std::string& where) {
+  r.only_keys(d, where, {"name", "set", "grid", "label", "input", "tetrahedralize", "comment"});
   DatasetSpec ds;
   if (d.contains("name") == d.contains("input")) r.fail(where, "give exactly one of \"name\" or \"input\"");
+  const std::string label = d.contains("label") ? r.string(d["label"], where + ".label") : "";
   if (d.contains("input")) {
     ds.input = r.string(d["input"], where + ".input");
     std::error_code ec;
     if (!std::filesystem::is_regular_file(ds.input, ec))
       r.fail(where + ".input", "'" + ds.input + "' is not a readable file");
     if (d.contains("tetrahedralize")) ds.tetrahedralize = r.boolean(d["tetrahedralize"], where + ".tetrahedralize");
-    if (d.contains("set")) r.fail(where + ".set", "applies to generated datasets (\"name\") only");
-    return ds;
+    for (const char* k : {"set", "grid"})
+      if (d.contains(k)) r.fail(where + "." + k, "applies to generated datasets (\"name\") only");
+    ds.row = label;
+    return {ds};
   }
   ds.name = r.string(d["name"], where + ".name");
   if (d.contains("tetrahedralize")) r.fail(where + ".tetrahedralize", "applies to \"input\" files only");
   const auto& known = dataset_registry();
   if (std::none_of(known.begin(), known.end(), [&](const DatasetInfo& i) { return i.name == ds.name; }))
     r.fail(where + ".name", "'" + ds.name + "' is not a dataset (see: vobench list)");
-  if (d.contains("set")) {
-    if (!d["set"].is_object()) r.fail(where + ".set", "must be a JSON object of parameters");
-    for (const auto& [k, v] : d["set"].items()) ds.set[k] = parameter_text(r, v, where + ".set." + k);
+  const auto points = r.set_and_grid(d, where);
+  if (points.size() > 1 && !label.empty() && label.find('{') == std::string::npos)
+    r.fail(where + ".label", "must name the grid's keys as {key}, or every grid point gets the same row");
+  std::vector<DatasetSpec> out;
+  for (const auto& set : points) {
+    ds.set = set;
+    Params p(ds.name);
+    for (const auto& [k, v] : ds.set) p.set(k, v);
+    try {
+      check_dataset_params(ds.name, p);
+    } catch (const InputError& e) {
+      r.fail(where + (d.contains("grid") ? ".grid" : ".set"), e.what());
+    }
+    ds.row = label.empty() ? "" : fill_label(r, label, set, where + ".label");
+    out.push_back(ds);
   }
-  Params p(ds.name);
-  for (const auto& [k, v] : ds.set) p.set(k, v);
-  try {
-    check_dataset_params(ds.name, p);
-  } catch (const InputError& e) {
-    r.fail(where + ".set", e.what());
-  }
-  return ds;
+  return out;
 }
 
-std::string read_algorithm(const SuiteReader& r, const nlohmann::json& a, const std::string& where) {
-  const std::string spec = r.string(a, where);
-  if (spec == "all") return spec;
+std::vector<DatasetSpec> read_datasets(const SuiteReader& r, const nlohmann::json& list, const std::string& where) {
+  std::vector<DatasetSpec> out;
+  r.array(list, where);
+  for (size_t i = 0; i < list.size(); ++i)
+    for (auto& ds : read_dataset(r, list[i], where + "[" + std::to_string(i) + "]")) out.push_back(std::move(ds));
+  return out;
+}
+
+void check_orderer(const SuiteReader& r, const std::string& spec, const std::string& where) {
   std::string name;
   try {
     name = Params::parse_spec(spec).first;
@@ -188,7 +169,58 @@ std::string read_algorithm(const SuiteReader& r, const nlohmann::json& a, const 
   } catch (const InputError& e) {
     r.fail(where, e.what());
   }
-  return spec;
+}
+
+// A string spec ("havs:k=6", "all") or {"name", "set", "grid"}: one spec per grid point.
+std::vector<std::string> read_algorithm(const SuiteReader& r, const nlohmann::json& a, const std::string& where) {
+  if (a.is_string()) {
+    const std::string spec = r.string(a, where);
+    if (spec != "all") check_orderer(r, spec, where);
+    return {spec};
+  }
+  r.only_keys(a, where, {"name", "set", "grid", "comment"});
+  if (!a.contains("name")) r.fail(where + ".name", "is missing");
+  const std::string name = r.string(a["name"], where + ".name");
+  std::vector<std::string> out;
+  for (const auto& set : r.set_and_grid(a, where)) {
+    const std::string spec = set.empty() ? name : name + ":" + params_text(set);
+    check_orderer(r, spec, where);
+    out.push_back(spec);
+  }
+  return out;
+}
+
+// A probe entry: one ProbeSpec per grid point, each checked by a dry run of the probe.
+std::vector<ProbeSpec> read_probe(const SuiteReader& r, const nlohmann::json& e, const std::string& where,
+                                  const SuiteSpec& suite) {
+  r.only_keys(e, where, {"name", "set", "grid", "datasets", "repeats", "warmup", "comment"});
+  if (!e.contains("name")) r.fail(where + ".name", "is missing");
+  ProbeSpec p;
+  p.name = r.string(e["name"], where + ".name");
+  const auto& known = probe_registry();
+  const auto info = std::find_if(known.begin(), known.end(), [&](const ProbeInfo& i) { return i.name == p.name; });
+  if (info == known.end()) r.fail(where + ".name", "'" + p.name + "' is not a probe (see: vobench list)");
+  p.repeats = e.contains("repeats") ? r.integer(e["repeats"], where + ".repeats", 1, kMaxRepeats) : suite.repeats;
+  p.warmup = e.contains("warmup") ? r.integer(e["warmup"], where + ".warmup", 0, kMaxRepeats) : suite.warmup;
+  if (e.contains("datasets")) p.datasets = read_datasets(r, e["datasets"], where + ".datasets");
+  else if (info->needs_scene) p.datasets = suite.datasets;
+  if (info->needs_scene && p.datasets.empty())
+    r.fail(where, "probe '" + p.name + "' needs datasets: list them in the entry or the suite");
+  std::vector<ProbeSpec> out;
+  for (const auto& set : r.set_and_grid(e, where)) {
+    p.set = set;
+    Params params("probe " + p.name);
+    for (const auto& [k, v] : set) params.set(k, v);
+    params.set_dry_run(true);
+    try {
+      info->run(params, ProbeContext{});
+      params.check_all_used();
+    } catch (const InputError& err) {
+      r.fail(where + (e.contains("grid") ? ".grid" : ".set"), err.what());
+    }
+    out.push_back(p);
+  }
+  return out;
 }
 
 std::vector<int> read_view_list(const SuiteReader& r, const nlohmann::json& v, const std::string& where, int views) {
@@ -198,27 +230,48 @@ std::vector<int> read_view_list(const SuiteReader& r, const nlohmann::json& v, c
     out.push_back(r.integer(v[i], where + "[" + std::to_string(i) + "]", 0, views - 1));
   return out;
 }
-}  // namespace
 
-SuiteSpec SuiteSpec::from_json(const nlohmann::json& j, const std::string& source) {
-  const SuiteReader r(source);
-  if (!j.is_object()) r.fail("suite", "must be a JSON object");
-  r.only_keys(j, "", {"name", "datasets", "algorithms", "views", "view_indices", "ortho", "zoom",
-                      "sizes", "repeats", "warmup", "oracle", "supersample", "image_error",
-                      "image_views", "images_of_violations", "comment"});
-  SuiteSpec s;
-  if (j.contains("name")) s.name = r.string(j["name"], "name");
-  else s.name = "suite";
-  if (!j.contains("datasets")) r.fail("datasets", "is missing");
-  const auto& datasets = r.array(j["datasets"], "datasets");
-  for (size_t i = 0; i < datasets.size(); ++i)
-    s.datasets.push_back(read_dataset(r, datasets[i], "datasets[" + std::to_string(i) + "]"));
-  if (!j.contains("algorithms")) r.fail("algorithms", "is missing");
-  const auto& algorithms = r.array(j["algorithms"], "algorithms");
-  for (size_t i = 0; i < algorithms.size(); ++i)
-    s.algorithms.push_back(read_algorithm(r, algorithms[i], "algorithms[" + std::to_string(i) + "]"));
+Vec3 read_vector(const SuiteReader& r, const nlohmann::json& v, const std::string& where) {
+  if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const auto& x) { return x.is_number(); }))
+    r.fail(where, "must be [x, y, z]");
+  const Vec3 out{v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
+  if (!(std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z)) || out.x * out.x + out.y * out.y + out.z * out.z == 0)
+    r.fail(where, "must be a finite, non-zero vector");
+  return out;
+}
+
+std::vector<ViewDirection> read_directions(const SuiteReader& r, const nlohmann::json& list) {
+  std::vector<ViewDirection> out;
+  r.array(list, "view_directions");
+  for (size_t i = 0; i < list.size(); ++i) {
+    const std::string where = "view_directions[" + std::to_string(i) + "]";
+    r.only_keys(list[i], where, {"from", "up"});
+    if (!list[i].contains("from")) r.fail(where + ".from", "is missing");
+    ViewDirection d;
+    d.from = read_vector(r, list[i]["from"], where + ".from");
+    if (list[i].contains("up")) d.up = read_vector(r, list[i]["up"], where + ".up");
+    const Vec3 c{d.from.y * d.up.z - d.from.z * d.up.y, d.from.z * d.up.x - d.from.x * d.up.z,
+                 d.from.x * d.up.y - d.from.y * d.up.x};
+    if (c.x * c.x + c.y * c.y + c.z * c.z == 0) r.fail(where + ".up", "is parallel to \"from\"");
+    out.push_back(d);
+  }
+  return out;
+}
+
+void read_views(const SuiteReader& r, const nlohmann::json& j, SuiteSpec& s) {
   if (j.contains("views")) s.views = r.integer(j["views"], "views", 1, kMaxViews);
+  const int ways = j.contains("view_indices") + j.contains("spread_views") + j.contains("view_directions");
+  if (ways > 1) r.fail("view_indices", "give at most one of view_indices, spread_views, view_directions");
   if (j.contains("view_indices")) s.view_indices = read_view_list(r, j["view_indices"], "view_indices", s.views);
+  if (j.contains("spread_views")) {
+    const int m = r.integer(j["spread_views"], "spread_views", 1, s.views);
+    for (int i = 0; i < m; ++i) s.view_indices.push_back(i * s.views / m);
+  }
+  if (j.contains("view_directions")) {
+    s.view_directions = read_directions(r, j["view_directions"]);
+    if (j.contains("views")) r.fail("views", "does not apply with view_directions (one view per direction)");
+    s.views = static_cast<int>(s.view_directions.size());
+  }
   if (j.contains("ortho")) s.ortho = r.boolean(j["ortho"], "ortho");
   if (j.contains("zoom")) s.zoom = r.number(j["zoom"], "zoom", 0.0, kMaxZoom);
   if (j.contains("sizes")) {
@@ -226,28 +279,64 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& j, const std::string& sourc
     s.sizes.clear();
     for (size_t i = 0; i < sizes.size(); ++i) {
       const std::string where = "sizes[" + std::to_string(i) + "]";
-      s.sizes.push_back(parse_size(r.string(sizes[i], where), source + ": " + where));
+      s.sizes.push_back(parse_size(r.string(sizes[i], where), r.source() + ": " + where));
     }
   }
+}
+}  // namespace
+
+SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& source) {
+  const SuiteReader r(source);
+  if (!input.is_object()) r.fail("suite", "must be a JSON object");
+  const nlohmann::json j = apply_scale(input, "default", source);
+  r.only_keys(j, "", {"name", "datasets", "algorithms", "probes", "views", "view_indices", "spread_views",
+                      "view_directions", "ortho", "zoom", "sizes", "repeats", "warmup", "threads", "oracle",
+                      "supersample", "image_error", "image_views", "images_of_violations", "exterior_area",
+                      "comment"});
+  SuiteSpec s;
+  s.name = j.contains("name") ? r.string(j["name"], "name") : "suite";
+  if (s.name.find_first_of("|/") != std::string::npos) r.fail("name", "must not contain '|' or '/'");
   if (j.contains("repeats")) s.repeats = r.integer(j["repeats"], "repeats", 1, kMaxRepeats);
   if (j.contains("warmup")) s.warmup = r.integer(j["warmup"], "warmup", 0, kMaxRepeats);
+  if (j.contains("datasets")) s.datasets = read_datasets(r, j["datasets"], "datasets");
+  if (!j.contains("probes")) {
+    if (!j.contains("datasets")) r.fail("datasets", "is missing");
+    if (!j.contains("algorithms")) r.fail("algorithms", "is missing");
+  }
+  if (j.contains("algorithms")) {
+    const auto& algorithms = r.array(j["algorithms"], "algorithms");
+    if (s.datasets.empty()) r.fail("algorithms", "need datasets");
+    for (size_t i = 0; i < algorithms.size(); ++i)
+      for (auto& spec : read_algorithm(r, algorithms[i], "algorithms[" + std::to_string(i) + "]"))
+        s.algorithms.push_back(std::move(spec));
+  }
+  if (j.contains("probes")) {
+    const auto& probes = r.array(j["probes"], "probes");
+    for (size_t i = 0; i < probes.size(); ++i)
+      for (auto& p : read_probe(r, probes[i], "probes[" + std::to_string(i) + "]", s)) s.probes.push_back(std::move(p));
+  }
+  read_views(r, j, s);
+  if (j.contains("threads")) s.threads = r.integer(j["threads"], "threads", 1, kMaxThreads);
   if (j.contains("oracle")) s.oracle = r.boolean(j["oracle"], "oracle");
   if (j.contains("supersample")) s.supersample = r.integer(j["supersample"], "supersample", 1, 16);
   if (j.contains("image_error")) s.image_error = r.boolean(j["image_error"], "image_error");
   if (j.contains("image_views")) s.image_views = read_view_list(r, j["image_views"], "image_views", s.views);
   if (j.contains("images_of_violations"))
     s.images_of_violations = r.boolean(j["images_of_violations"], "images_of_violations");
+  if (j.contains("exterior_area")) s.exterior_area = r.boolean(j["exterior_area"], "exterior_area");
   return s;
 }
 
-SuiteSpec SuiteSpec::load(const std::string& path) {
+nlohmann::json read_json_file(const std::string& path, const std::string& what) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "suite", "is not a readable file");
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, what, "is not a readable file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "suite", "cannot be read");
+  if (!in) throw InputError(path, what, "cannot be read");
   std::ostringstream text;
   text << in.rdbuf();
-  return from_json(parse_json_input(text.str(), path, "suite"), path);
+  return parse_json_input(text.str(), path, what);
 }
+
+SuiteSpec SuiteSpec::load(const std::string& path) { return from_json(read_json_file(path, "suite"), path); }
 
 }  // namespace vob

@@ -1,29 +1,38 @@
-// vobench list: orderers, datasets and reproducible experiments.
+// vobench list: orderers, probes, datasets and reproductions.
 #include <iostream>
 
 #include "datasets/datasets.h"
+#include "harness/bench/probe.h"
 #include "harness/bench/registry.h"
+#include "harness/bench/reproduction.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/experiments.h"
 
 namespace vob {
 
 Command add_list_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("list", "list orderers, datasets and experiments");
+  auto* cmd = app.add_subcommand("list", "list orderers, probes, datasets and reproductions");
   auto json = std::make_shared<bool>(false);
   cmd->add_flag("--json", *json, "machine-readable output");
   return [json]() {
+    const auto reproductions = list_reproductions(std::string(VOB_SOURCE_DIR) + "/datasets/suites");
     if (*json) {
       nlohmann::json j{{"orderers", nlohmann::json::array()},
+                       {"probes", nlohmann::json::array()},
                        {"datasets", nlohmann::json::array()},
+                       {"reproductions", nlohmann::json::array()},
                        {"experiments", nlohmann::json::array()}};
       for (const auto& o : orderer_registry())
         j["orderers"].push_back({{"name", o.name}, {"kind", scene_kind_name(o.kind)},
                                  {"summary", o.summary}, {"parameters", o.parameters}});
+      for (const auto& p : probe_registry())
+        j["probes"].push_back({{"name", p.name}, {"summary", p.summary}, {"needs_scene", p.needs_scene}});
       for (const auto& d : dataset_registry())
         j["datasets"].push_back({{"name", d.name}, {"kind", scene_kind_name(d.kind)},
                                  {"summary", d.summary}, {"parameters", d.parameters},
                                  {"hard_case", d.hard_case}});
+      for (const auto& r : reproductions)
+        j["reproductions"].push_back({{"name", r.name}, {"summary", r.summary}, {"file", r.path}});
       for (const auto& e : experiment_registry())
         j["experiments"].push_back({{"name", e.name}, {"summary", e.summary}});
       std::cout << j.dump(2) << "\n";
@@ -34,13 +43,17 @@ Command add_list_command(CLI::App& app) {
       std::cout << "  " << o.name << " [" << scene_kind_name(o.kind) << "]  " << o.summary << "\n";
       if (!o.parameters.empty()) std::cout << "      " << o.parameters << "\n";
     }
+    std::cout << "\nProbes (suite \"probes\" entries):\n";
+    for (const auto& p : probe_registry())
+      std::cout << "  " << p.name << (p.needs_scene ? " [datasets]" : "") << "  " << p.summary << "\n";
     std::cout << "\nDatasets (--dataset NAME --set k=v ...):\n";
     for (const auto& d : dataset_registry()) {
       std::cout << "  " << d.name << " [" << scene_kind_name(d.kind) << (d.hard_case ? ", hard case" : "")
                 << "]  " << d.summary << "\n";
       if (!d.parameters.empty()) std::cout << "      " << d.parameters << "\n";
     }
-    std::cout << "\nExperiments (vobench reproduce NAME):\n";
+    std::cout << "\nReproductions (vobench reproduce NAME [--tiny|--full]):\n";
+    for (const auto& r : reproductions) std::cout << "  " << r.name << "  " << r.summary << "\n";
     for (const auto& e : experiment_registry()) std::cout << "  " << e.name << "  " << e.summary << "\n";
     return 0;
   };

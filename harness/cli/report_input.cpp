@@ -64,6 +64,8 @@ std::string field_name(const char* pointer) {
 
 std::string report_record_problem(const nlohmann::json& r) {
   if (!r.is_object()) return "is not a JSON object (a results record)";
+  // Probe records feed the table scripts; the generic report leaves them out.
+  if (r.contains("probe")) return r["probe"].is_string() ? "" : "field 'probe' must be a string";
   for (const Field& f : kFields) {
     const nlohmann::json::json_pointer p(f.path);
     // A parent that is absent was reported already (required) or makes its children moot.

@@ -1,0 +1,45 @@
+#include <algorithm>
+#include <filesystem>
+
+#include "harness/bench/reporters.h"
+#include "harness/render/compositor.h"
+
+namespace vob {
+
+namespace {
+std::string file_safe(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
+  return s;
+}
+}  // namespace
+
+ImageReporter::ImageReporter(const SuiteSpec& suite, std::string image_dir)
+    : suite_(suite), dir_(std::move(image_dir)) {}
+
+bool ImageReporter::writes_files() const { return !suite_.image_views.empty() || suite_.images_of_violations; }
+
+void ImageReporter::report(Measurement& m, const Scene& scene, const Camera& cam) const {
+  namespace fs = std::filesystem;
+  Record& rec = m.record;
+  const bool want_images =
+      std::count(suite_.image_views.begin(), suite_.image_views.end(), rec.view_index) > 0 ||
+      (suite_.images_of_violations && m.violated);
+  if (!suite_.image_error && !want_images) return;
+  // The image error shares the two renders with the files: both are made here.
+  const Image ordered = render_in_order(scene, cam, m.ordering.order);
+  const Image exact = render_exact(scene, cam);
+  rec.image_error = image_error(ordered, exact).to_json();
+  if (!want_images) return;
+  const std::string stem =
+      (fs::path(dir_) / file_safe(rec.dataset + "-" + rec.algorithm + "-v" + std::to_string(rec.view_index) +
+                                  "-" + std::to_string(rec.w) + "x" + std::to_string(rec.h)))
+          .string();
+  fs::create_directories(dir_);
+  write_png(ordered, stem + "-order.png");
+  write_png(exact, stem + "-exact.png");
+  write_png(difference_image(ordered, exact), stem + "-diff.png");
+  rec.images = {{"order", stem + "-order.png"}, {"exact", stem + "-exact.png"}, {"diff", stem + "-diff.png"}};
+}
+
+}  // namespace vob

@@ -1,0 +1,210 @@
+#include "harness/bench/measure.h"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+
+#include "harness/bench/registry.h"
+#include "harness/oracle/oracle.h"
+#include "harness/raster/polygon_raster.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+namespace {
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+std::string file_safe(std::string s) {
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '.') c = '_';
+  return s;
+}
+
+// The orderer's identity in a record: every question to the orderer about itself is here.
+void fill_orderer_identity(Record& rec, const PreparedOrderer& p) {
+  rec.algorithm = p.spec;
+  rec.orderer = p.orderer->name();
+  rec.parameters = p.orderer->parameters();
+  const Claims cl = p.orderer->claims();
+  rec.claims = {{"object_exact", cl.object_exact}, {"image_exact", cl.image_exact}};
+}
+}  // namespace
+
+PreparedOrderer prepare_orderer(const std::string& spec, const Scene& scene) {
+  PreparedOrderer p;
+  p.spec = spec;
+  p.orderer = make_orderer(spec);
+  if (p.orderer->scene_kind() != scene.kind())
+    throw InputError("--algorithm", spec,
+                     std::string("orders ") + scene_kind_name(p.orderer->scene_kind()) +
+                         ", but scene '" + scene.name() + "' has " + scene_kind_name(scene.kind()));
+  p.scene = scene.fresh();
+  const auto t0 = std::chrono::steady_clock::now();
+  p.orderer->prepare(p.scene, p.prepare_clock);
+  p.prepare_seconds = seconds_since(t0);
+  return p;
+}
+
+nlohmann::json FrameMeasurement::phases_json() const {
+  nlohmann::json j = nlohmann::json::object();
+  if (repeats.empty()) return j;
+  for (const auto& [name, _] : repeats.back()) {
+    std::vector<double> v;
+    for (const auto& r : repeats)
+      for (const auto& [n, s] : r)
+        if (n == name) v.push_back(s);
+    j[name] = {{"min", *std::min_element(v.begin(), v.end())}, {"median", median(v)}};
+  }
+  return j;
+}
+
+nlohmann::json FrameMeasurement::total_json() const {
+  std::vector<double> v;
+  for (const auto& r : repeats) {
+    double t = 0;
+    for (const auto& [n, s] : r) t += s;
+    v.push_back(t);
+  }
+  if (v.empty()) return {{"min", 0.0}, {"median", 0.0}};
+  return {{"min", *std::min_element(v.begin(), v.end())}, {"median", median(v)}};
+}
+
+double FrameMeasurement::total_median() const { return total_json()["median"].get<double>(); }
+
+FrameMeasurement measure_frame(PreparedOrderer& p, const Camera& view, int warmup, int repeats) {
+  FrameMeasurement m;
+  for (int i = 0; i < warmup; ++i) {
+    PhaseClock c;
+    p.orderer->order(view, c);
+  }
+  for (int i = 0; i < repeats; ++i) {
+    PhaseClock c;
+    m.ordering = p.orderer->order(view, c);
+    m.repeats.push_back(c.phases());
+  }
+  return m;
+}
+
+Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene& scene,
+                                const SuiteSpec& suite, const Record& base) {
+  FrameMeasurement m = measure_frame(p, job.camera, suite.warmup, suite.repeats);
+  check_complete(scene, m.ordering, job.spec);
+  Measurement out;
+  Record& rec = out.record;
+  rec = base;
+  rec.key = job.key;
+  fill_orderer_identity(rec, p);
+  rec.w = job.w;
+  rec.h = job.h;
+  rec.view_index = job.view_index;
+  rec.views = suite.views;
+  rec.camera = job.camera;
+  rec.repeats = suite.repeats;
+  rec.warmup = suite.warmup;
+  rec.phases = m.phases_json();
+  rec.total = m.total_json();
+  nlohmann::json prep_phases = nlohmann::json::object();
+  for (const auto& [n, s] : p.prepare_clock.phases()) prep_phases[n] = s;
+  nlohmann::json derived = nlohmann::json::array();
+  for (const auto& d : p.scene.derived_stats())
+    derived.push_back({{"name", d.name}, {"seconds", d.seconds}, {"bytes", d.bytes}});
+  rec.prepare = {{"seconds", p.prepare_seconds}, {"phases", prep_phases}, {"derived", derived}};
+  rec.bytes = {{"orderer", p.orderer->bytes()}, {"scene", scene.bytes()}, {"derived", p.scene.derived_bytes()}};
+  const auto& cyc = m.ordering.cycles.primitives;
+  rec.cycles = {{"count", m.ordering.cycles.cycles},
+                {"primitives", std::vector<int32_t>(cyc.begin(), cyc.begin() + std::min<size_t>(cyc.size(), 20))}};
+  rec.counters = m.ordering.counters;
+  if (suite.exterior_area && scene.kind() == SceneKind::Cells) rec.a = exterior_area_pixels(scene, job.camera);
+  if (suite.oracle) {
+    OracleOptions oo;
+    oo.supersample = suite.supersample;
+    const OracleResult r = check_ordering(scene, job.camera, m.ordering.order, oo);
+    rec.oracle = r.to_json();
+    // Overlapping cells: the input has no visibility order; not the orderer's fault.
+    if (r.input_fault())
+      rec.input_fault = {{"overlapping_pairs", r.overlapping_pairs}, {"examples", r.overlap_examples}};
+    out.violated = !r.ok() && !r.input_fault();
+  }
+  out.ordering = std::move(m.ordering);
+  return out;
+}
+
+Record run_probe_job(const Job& job, const Scene* scene, const SuiteSpec& suite, const DatasetSpec* ds,
+                     const Record& base, const std::string& image_dir,
+                     const std::function<void(const std::string&)>& progress) {
+  const ProbeSpec& spec = *job.probe;
+  const ProbeInfo& info = find_probe(spec.name);
+  Params params("probe " + spec.name);
+  for (const auto& [k, v] : spec.set) params.set(k, v);
+  ProbeContext ctx;
+  ctx.scene = scene;
+  if (scene) {
+    ctx.dataset_label = ds->label();
+    ctx.views = suite_views(suite, *ds, *scene, suite.sizes[0].first, suite.sizes[0].second);
+  }
+  ctx.repeats = spec.repeats;
+  ctx.warmup = spec.warmup;
+  ctx.image_dir = std::filesystem::absolute(image_dir).string();
+  ctx.image_prefix = file_safe(job.key);
+  ctx.progress = progress;
+  Record rec = base;
+  rec.key = job.key;
+  rec.probe = spec.name;
+  rec.parameters = spec.parameters();
+  rec.repeats = spec.repeats;
+  rec.warmup = spec.warmup;
+  const auto t0 = std::chrono::steady_clock::now();
+  rec.result = info.run(params, ctx);
+  rec.seconds = seconds_since(t0);
+  params.check_all_used();
+  if (rec.result.is_object() && rec.result.contains("images")) {
+    rec.images = rec.result["images"];
+    rec.result.erase("images");
+  }
+  return rec;
+}
+
+nlohmann::json scene_facts(const Scene& scene) {
+  nlohmann::json j{{"kind", scene_kind_name(scene.kind())}, {"n", scene.num_primitives()}};
+  if (scene.kind() == SceneKind::Cells) {
+    const CellMesh& m = scene.mesh();
+    j["points"] = m.num_points();
+    j["b"] = scene.faces().boundary.size();
+    nlohmann::json types = nlohmann::json::object();
+    for (CellType t : m.types) {
+      const std::string name = cell_type_name(t);
+      types[name] = types.value(name, 0) + 1;
+    }
+    j["cell_types"] = types;
+  } else if (scene.kind() == SceneKind::Triangles) {
+    j["points"] = scene.soup().points.size();
+  } else {
+    const VoxelGrid& g = scene.grid();
+    j["dims"] = {g.dims[0], g.dims[1], g.dims[2]};
+    j["voxels"] = g.num_voxels();
+  }
+  return j;
+}
+
+int64_t exterior_area_pixels(const Scene& scene, const Camera& view) {
+  const SampleFrame frame(view, 1);
+  const MeshFaces& faces = scene.faces();
+  const CellMesh& mesh = scene.mesh();
+  int64_t covered = 0;
+  for (int32_t f : faces.boundary) {
+    Vec3 v[4];
+    const int n = faces.face_size(f);
+    for (int i = 0; i < n; ++i) v[i] = mesh.points[faces.face_points(f)[i]];
+    rasterize_polygon(frame, v, n, frame.bounds(), [&](int, int, double) { ++covered; });
+  }
+  return covered;
+}
+
+}  // namespace vob

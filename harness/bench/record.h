@@ -1,0 +1,42 @@
+// One line of a results file (docs/pipeline.md "Records"): what measuring one job yields,
+// as a struct; to_json is the one place that names the record's fields.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "harness/view/camera.h"
+
+namespace vob {
+
+struct Record {
+  // Every record.
+  std::string key, suite;
+  std::string dataset, row;       // dataset label and table row; empty for a sceneless probe
+  nlohmann::json dataset_spec;    // null for a sceneless probe
+  nlohmann::json facts;           // scene_facts(): kind, n, points, b, cell_types | dims, voxels
+  int repeats = 0, warmup = 0, threads = 0;
+  std::string reproduction, paper, scale;  // when run by reproduce (paper empty: null)
+  nlohmann::json context;
+
+  // Orderer records.
+  std::string algorithm;          // the spec as the suite gave it
+  std::string orderer;            // registry name
+  nlohmann::json parameters, claims;
+  int w = 0, h = 0, view_index = 0, views = 0;
+  Camera camera;
+  nlohmann::json phases, total, prepare, bytes, cycles, counters;
+  std::optional<int64_t> a;       // exterior area in pixels (cells, exterior_area)
+  nlohmann::json oracle, input_fault, image_error, images;  // null: absent
+
+  // Probe records (probe non-empty; parameters above are the probe's).
+  std::string probe;
+  double seconds = 0;
+  nlohmann::json result;
+
+  nlohmann::json to_json() const;
+};
+
+}  // namespace vob

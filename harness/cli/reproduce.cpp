@@ -1,0 +1,105 @@
+#include "harness/cli/reproduce.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+#include "harness/bench/atomic_file.h"
+#include "harness/bench/results.h"
+#include "harness/bench/runner.h"
+#include "harness/cli/experiments.h"
+#include "harness/cli/python_script.h"
+#include "harness/cli/stop_signals.h"
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string results_of(const std::string& dir) { return (fs::path(dir) / "results.jsonl").string(); }
+
+// One folder, one scale per reproduction: tables never mix tiny and default records.
+void check_scale_of_folder(const Reproduction& rep, const std::string& results) {
+  std::error_code ec;
+  if (!fs::exists(results, ec)) return;
+  for (const auto& r : ResultsFile::read_all(results))
+    if (r.value("reproduction", "") == rep.name && r.value("scale", "default") != rep.scale)
+      throw InputError(results, "records", "hold " + rep.name + "'s records at scale " +
+                                               r.value("scale", "default") + ", not " + rep.scale +
+                                               ": use --force or another -o folder");
+}
+}  // namespace
+
+int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& name,
+                    const std::string& out_dir, bool force, const RunTags& tags) {
+  require_writable_folder(out_dir);
+  const std::string results = results_of(out_dir);
+  if (force) {
+    std::error_code ec;
+    fs::remove(results, ec);
+    if (!ec) fs::remove_all(fs::path(out_dir) / "images", ec);
+    if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
+  }
+  const StopSignals signals;
+  RunOptions opt;
+  opt.results_path = results;
+  opt.tags = tags;
+  opt.stop_requested = [] { return StopSignals::received() != 0; };
+  const auto t0 = std::chrono::steady_clock::now();
+  opt.progress = [t0](const std::string& line) {
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::fprintf(stderr, "[%6.1f s] %s\n", s, line.c_str());
+  };
+  for (const SuiteSpec& suite : suites) {
+    std::fprintf(stderr, "suite %s\n", suite.name.c_str());
+    const RunSummary r = run_suite(suite, opt);
+    std::cerr << suite.name << ": " << r.written << " records written, " << r.skipped << " kept, ";
+    if (r.written_elsewhere) std::cerr << r.written_elsewhere << " written meanwhile by another run, ";
+    std::cerr << r.violations << " with oracle violations\n";
+    if (r.stopped) {
+      const int sig = StopSignals::received();
+      std::cerr << name << ": stopped by " << StopSignals::name(sig) << "; every finished record is in "
+                << results << ": run the same command again to resume\n";
+      return StopSignals::exit_code(sig);
+    }
+  }
+  return 0;
+}
+
+int reproduce(const Reproduction& rep, const std::string& out_dir, bool force) {
+  if (!force) check_scale_of_folder(rep, results_of(out_dir));
+  const RunTags tags{rep.name, rep.paper, rep.scale};
+  const int status = run_suites_into(rep.suites, rep.name, out_dir, force, tags);
+  if (status != 0) return status;
+  if (!rep.paper.empty()) return run_python_script("build_tables.py", {out_dir, "--only", rep.name});
+  return run_report({results_of(out_dir)}, out_dir, rep.title, rep.name);
+}
+
+int report_folder(const std::string& dir, const std::string& suites_dir) {
+  const std::string results = results_of(dir);
+  std::error_code ec;
+  if (!fs::is_regular_file(results, ec)) throw InputError(dir, "folder", "holds no results.jsonl");
+  std::set<std::string> generic;  // reproductions without a paper
+  bool orderer_records = false;
+  for (const auto& r : ResultsFile::read_all(results)) {
+    orderer_records = orderer_records || !r.contains("probe");
+    if (r.contains("reproduction") && r.value("paper", nlohmann::json()).is_null())
+      generic.insert(r["reproduction"].get<std::string>());
+  }
+  int status = run_python_script("build_tables.py", {dir});
+  if (!orderer_records) return status;
+  std::string name, title = "vobench report";
+  if (generic.size() == 1) {
+    name = *generic.begin();
+    title = "vobench " + name + " report";
+    for (const auto& e : list_reproductions(suites_dir))
+      if (e.name == name) title = e.title;
+  }
+  const int report = run_report({results}, dir, title, name);
+  return status != 0 ? status : report;
+}
+
+}  // namespace vob

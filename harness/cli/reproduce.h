@@ -1,0 +1,28 @@
+// `vobench reproduce NAME` and `vobench report DIR`: running a reproduction's suites and
+// probes into DIR/results.jsonl (resumable) and building its tables from the records.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "harness/bench/jobs.h"
+#include "harness/bench/reproduction.h"
+
+namespace vob {
+
+// Runs the suites into out_dir/results.jsonl, keeping the records already there unless
+// `force` (which also drops out_dir/images), printing progress. Returns 0, or 130 / 143
+// when SIGINT / SIGTERM stopped the run (every finished record is on disk).
+int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& name,
+                    const std::string& out_dir, bool force, const RunTags& tags);
+
+// The whole reproduction: its suites, then its tables (build_tables.py --only NAME when it
+// has a paper, else the generic report as NAME.md). Refuses (InputError) a folder holding
+// this reproduction's records at another scale. Returns the exit status.
+int reproduce(const Reproduction& rep, const std::string& out_dir, bool force);
+
+// Every table of every reproduction whose records are in DIR/results.jsonl, and the
+// generic report of its orderer records (NAME.md too when they belong to one reproduction
+// without a paper). Returns the exit status.
+int report_folder(const std::string& dir, const std::string& suites_dir);
+
+}  // namespace vob

@@ -1,0 +1,138 @@
+// The suite format of docs/pipeline.md: grids, labels, spread views, view directions,
+// threads, probes, the tiny/full overlays, reproduction files, and the keys jobs get.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "harness/bench/jobs.h"
+#include "harness/bench/reproduction.h"
+#include "harness/bench/scale_overlay.h"
+#include "harness/bench/suite.h"
+#include "harness/scene/input_error.h"
+
+using namespace vob;
+using json = nlohmann::json;
+
+namespace {
+std::string error_of(const json& j) {
+  try {
+    SuiteSpec::from_json(j, "s.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+json gap_suite() {
+  return json::parse(R"({"name": "s", "datasets": [{"name": "gap", "set": {"nx": 2, "ny": 2, "nz": 8},
+      "grid": {"gaps": [0, 3]}, "label": "{gaps} gaps"}], "algorithms": ["mpvo"], "views": 6})");
+}
+}  // namespace
+
+TEST(SuiteFormat, GridsExpandDatasetsAndAlgorithms) {
+  auto j = gap_suite();
+  j["algorithms"] = json::parse(R"(["mpvo", {"name": "centroid", "grid": {"key": ["view", "depth"]}}])");
+  const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
+  ASSERT_EQ(s.datasets.size(), 2u);
+  EXPECT_EQ(s.datasets[1].label(), "gap(gaps=3,nx=2,ny=2,nz=8)");
+  EXPECT_EQ(s.datasets[1].row_label(), "3 gaps");
+  EXPECT_EQ(s.algorithms, (std::vector<std::string>{"mpvo", "centroid:key=view", "centroid:key=depth"}));
+}
+
+TEST(SuiteFormat, RefusesBadGridsAndLabelsNamingTheEntry) {
+  auto j = gap_suite();
+  j["datasets"][0]["label"] = "same row";
+  EXPECT_EQ(error_of(j).rfind("s.json: datasets[0].label: ", 0), 0u) << error_of(j);
+  j = gap_suite();
+  j["datasets"][0]["grid"]["gaps"] = json::array();
+  EXPECT_EQ(error_of(j).rfind("s.json: datasets[0].grid.gaps: ", 0), 0u) << error_of(j);
+  j = gap_suite();
+  j["datasets"][0]["grid"]["gaps"] = {0, 99};  // 99 >= nz
+  EXPECT_EQ(error_of(j).rfind("s.json: datasets[0].grid: ", 0), 0u) << error_of(j);
+  j = gap_suite();
+  j["algorithms"] = json::parse(R"([{"name": "havs", "grid": {"k": [2, 99]}}])");
+  EXPECT_EQ(error_of(j).rfind("s.json: algorithms[0]: ", 0), 0u) << error_of(j);
+}
+
+TEST(SuiteFormat, SpreadViewsDirectionsAndThreads) {
+  auto j = gap_suite();
+  j["views"] = 14;
+  j["spread_views"] = 3;
+  j["threads"] = 1;
+  SuiteSpec s = SuiteSpec::from_json(j, "s.json");
+  EXPECT_EQ(s.view_indices, (std::vector<int>{0, 4, 9}));
+  EXPECT_EQ(s.threads, 1);
+  j["view_indices"] = {1};
+  EXPECT_EQ(error_of(j).rfind("s.json: view_indices: ", 0), 0u) << error_of(j);
+  j = gap_suite();
+  j.erase("views");
+  j["view_directions"] = json::parse(R"([{"from": [1, 0, 0], "up": [0, 0, 1]}, {"from": [0, 1, 0]}])");
+  s = SuiteSpec::from_json(j, "s.json");
+  EXPECT_EQ(s.views, 2);
+  j["view_directions"][1]["up"] = {0, 2, 0};  // parallel to from
+  EXPECT_EQ(error_of(j).rfind("s.json: view_directions[1].up: ", 0), 0u) << error_of(j);
+}
+
+TEST(SuiteFormat, ProbesAreCheckedByADryRun) {
+  auto j = gap_suite();
+  j["probes"] = json::parse(R"([{"name": "xmpvo-stability"}])");
+  const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
+  ASSERT_EQ(s.probes.size(), 1u);
+  EXPECT_EQ(s.probes[0].datasets.size(), 2u);  // needs a scene: the suite's datasets
+  EXPECT_EQ(s.probes[0].label(), "probe:xmpvo-stability");
+  j["probes"][0]["set"] = {{"colour", 1}};
+  EXPECT_EQ(error_of(j).rfind("s.json: probes[0].set: ", 0), 0u) << error_of(j);
+  j["probes"][0] = {{"name", "nope"}};
+  EXPECT_EQ(error_of(j).rfind("s.json: probes[0].name: ", 0), 0u) << error_of(j);
+  j = json::parse(R"({"name": "p", "probes": [{"name": "xmpvo-stability"}]})");
+  EXPECT_EQ(error_of(j).rfind("s.json: probes[0]: ", 0), 0u) << error_of(j);  // no datasets anywhere
+}
+
+TEST(SuiteFormat, OverlaysReplaceKeysRecursivelyAtTheirScale) {
+  const json j = json::parse(R"({"views": 14, "datasets": [{"name": "gap", "set": {"nx": 10, "ny": 10},
+      "tiny": {"set": {"nx": 2}}}], "tiny": {"views": 2}, "full": {"views": 50}})");
+  const json tiny = apply_scale(j, "tiny", "r.json");
+  EXPECT_EQ(tiny["views"], 2);
+  EXPECT_EQ(tiny["datasets"][0]["set"], json::parse(R"({"nx": 2, "ny": 10})"));
+  EXPECT_FALSE(tiny.contains("tiny") || tiny.contains("full") || tiny["datasets"][0].contains("tiny"));
+  EXPECT_EQ(apply_scale(j, "full", "r.json")["views"], 50);
+  EXPECT_EQ(apply_scale(j, "default", "r.json")["datasets"][0]["set"]["nx"], 10);
+  EXPECT_THROW(apply_scale(json::parse(R"({"tiny": 3})"), "tiny", "r.json"), InputError);
+}
+
+TEST(SuiteFormat, KeysCarryReproductionViewSetAndScale) {
+  const SuiteSpec s = SuiteSpec::from_json(gap_suite(), "s.json");
+  const auto plans = plan_datasets(s);
+  ASSERT_EQ(plans.size(), 2u);
+  const Scene scene = make_scene(plans[0].dataset);
+  const RunTags tags{"repro", "paper", "tiny"};
+  const auto jobs = dataset_jobs(s, plans[0], scene, tags);
+  ASSERT_EQ(jobs.size(), 6u);  // mpvo x 6 views
+  EXPECT_EQ(jobs[2].key, "repro/s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|s1|tiny");
+  EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{})[2].key, "s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|s1");
+}
+
+TEST(Reproduction, FindsFilesByNameAndReadsSuitesAtTheScale) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("vob_repro_" + std::to_string(getpid()));
+  fs::create_directories(dir / "paper");
+  std::ofstream(dir / "plain.json") << gap_suite().dump();
+  json r = {{"reproduction", "r1"}, {"paper", nullptr}, {"summary", "one"},
+            {"suites", json::array({"plain.json", gap_suite()})}};
+  r["suites"][1]["name"] = "s2";
+  r["suites"][1]["tiny"] = {{"views", 2}};
+  std::ofstream(dir / "paper" / "r1.json") << r.dump();
+  EXPECT_EQ(find_reproduction(dir.string(), "r1"), (dir / "paper" / "r1.json").string());
+  EXPECT_EQ(find_reproduction(dir.string(), "plain"), "");
+  const Reproduction rep = load_reproduction(find_reproduction(dir.string(), "r1"), "tiny", dir.string());
+  ASSERT_EQ(rep.suites.size(), 2u);
+  EXPECT_EQ(rep.suites[1].views, 2);
+  EXPECT_EQ(rep.suites[0].views, 6);
+  EXPECT_TRUE(rep.paper.empty());
+  r["suites"][1]["name"] = "s";  // two suites named s
+  std::ofstream(dir / "paper" / "r1.json") << r.dump();
+  EXPECT_THROW(load_reproduction((dir / "paper" / "r1.json").string(), "default", dir.string()), InputError);
+  std::ofstream(dir / "paper" / "r2.json") << r.dump();  // the same name twice
+  EXPECT_THROW(list_reproductions(dir.string()), InputError);
+  fs::remove_all(dir);
+}
