@@ -20,7 +20,8 @@ nlohmann::json run_sorts(Params& p, const ProbeContext& ctx) {
   const size_t n = size_t(p.get_int("n", 1000000, 1, 100000000));
   const int seed = p.get_int("seed", 1, 0, INT_MAX);
   const std::string sort = p.get_choice("sort", "radix", {"shell", "heap", "quick", "stable", "radix"});
-  std::mt19937 rng(uint32_t(seed));
+  if (p.dry_run()) return nlohmann::json::object();
+  std::mt19937 rng(static_cast<uint32_t>(seed));
   std::uniform_real_distribution<float> u(-1000.f, 1000.f);
   std::vector<float> src(n);
   for (float& k : src) k = u(rng);
@@ -61,6 +62,7 @@ nlohmann::json run_sorts(Params& p, const ProbeContext& ctx) {
 nlohmann::json run_analysis(Params& p, const ProbeContext& ctx) {
   // The analysis needs a face order; k only decides the k-buffer rerun, not the columns.
   const int k = p.get_int("k", 2, 1, havs::kMaxK);
+  if (p.dry_run()) return nlohmann::json::object();
   const havs::FaceData fd = havs::build_face_data(*ctx.scene);
   nlohmann::json views = nlohmann::json::array();
   int64_t worst_score = -1;

@@ -4,7 +4,9 @@
 #include "algorithms/centroid/centroid.h"
 #include "algorithms/centroid/triangle_centroid.h"
 #include "algorithms/centroid/vtk_centroid.h"
+#include "algorithms/havs/gl/gl_race_probe.h"
 #include "algorithms/havs/havs.h"
+#include "algorithms/havs/havs_probes.h"
 #include "algorithms/mpvo/mpvo.h"
 #include "algorithms/stencil/stencil_layers.h"
 #include "algorithms/stencil/stencil_xmpvo.h"
@@ -53,6 +55,9 @@ const OrdererInfo& find_orderer(const std::string& name) {
 const std::vector<ProbeInfo>& probe_registry() {
   static const std::vector<ProbeInfo> registry = {
       xmpvo_stability_probe_info(),
+      havs_sorts_probe_info(),
+      havs_analysis_probe_info(),
+      havs_gl_probe_info(),
   };
   return registry;
 }

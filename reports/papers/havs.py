@@ -20,12 +20,24 @@ SORTS = [("shell", "shellsort"), ("heap", "heapsort (std::make_heap + sort_heap)
          ("radix", "LSD radix sort (4 x 8 bits)")]
 
 
+def command(records):
+    """The command that made these records, with its scale."""
+    r = records[0] if records else {}
+    scale = r.get("scale", "default")
+    return f"`vobench reproduce {r.get('reproduction')}" + ("" if scale == "default" else f" --{scale}") + "`"
+
+
 def probes(records, name):
     return [r for r in records if r.get("probe") == name]
 
 
 def orderer_records(records):
     return [r for r in records if "probe" not in r]
+
+
+def image(r, name):
+    """An image a probe wrote: the runner moves result.images into the record's images."""
+    return m.get(r, f"images.{name}") or m.get(r, f"result.images.{name}")
 
 
 def paper_name(row):
@@ -54,7 +66,7 @@ def ratio(a, b):
 
 def table1(records, paper, doc):
     doc.title = "HAVS Table 1: CPU sorting"
-    doc.intro = ("`vobench reproduce havs-table1`: five sorts of the same one million (float, id) "
+    doc.intro = (command(records) + ": five sorts of the same one million (float, id) "
                  "pairs in one run, then the face and cell sorts of a 1M-cell mesh.")
     p1 = paper["table1"]["ms"]
     sorts = {m.get(r, "parameters.sort"): r for r in probes(records, "havs-sorts")}
@@ -106,7 +118,7 @@ def table1(records, paper, doc):
 
 def table2(records, paper, doc):
     doc.title = "HAVS Table 2: k-buffer analysis"
-    doc.intro = ("`vobench reproduce havs-table2` (`--full` for paper-sized helix and zoo). Fig. 6-style "
+    doc.intro = (command(records) + " (`--full` for paper-sized helix and zoo). Fig. 6-style "
                  "maps of the view with most k > 2 pixels: green k <= 2, yellow 2 < k <= 6, red k > 6.")
     recs = probes(records, "havs-analysis")
     nviews = max((len(m.get(r, "result.views", [])) for r in recs), default=0)
@@ -132,7 +144,7 @@ def table2(records, paper, doc):
         t.row(r.get("row"), r.get("n"), vmax("fragments"), vmax("max_list"), vmax("max_k"), vmax("k_gt_2"),
               vmax("k_gt_6"), pp.get("fragments"), pp.get("max_a"), pp.get("max_k"), pp.get("k_gt_2"),
               pp.get("k_gt_6"))
-        kmap = m.get(r, "result.images.kmap")
+        kmap = image(r, "kmap")
         if kmap:
             doc.image(kmap, f"{r.get('row')}: k needed, view {m.get(r, 'result.worst_view')} "
                             "(the view with most k > 2 pixels)")
@@ -142,7 +154,7 @@ def table2(records, paper, doc):
 
 def table34(records, paper, doc):
     doc.title = "HAVS Tables 3 and 4: render performance"
-    doc.intro = "`vobench reproduce havs-table3-4` (`--full` for paper-sized helix and zoo, and 3 repeats)."
+    doc.intro = command(records) + " (`--full` for paper-sized helix and zoo, and 3 repeats)."
     recs = orderer_records(records)
     nviews = len({r.get("view_index") for r in recs})
     size = f"{recs[0].get('w')}x{recs[0].get('h')}" if recs else "-"
@@ -186,7 +198,7 @@ def _error(r):
 
 def k_tradeoff(records, paper, doc):
     doc.title = "HAVS: time against error as k grows"
-    doc.intro = "`vobench reproduce havs-k-tradeoff`: reproduction file datasets/suites/havs/k-tradeoff.json."
+    doc.intro = command(records) + ": reproduction file datasets/suites/havs/k-tradeoff.json."
     acc = {}
     for r in orderer_records(records):
         vp, cov, rmse = _error(r)
@@ -271,7 +283,7 @@ def gl(records, paper, doc):
     gl_desc = (f"{m.get(ok[0], 'result.gl_version')}, {m.get(ok[0], 'result.gl_renderer')}" if ok else
                f"not available ({m.get(down[0], 'result.reason')})" if down else "not measured")
     doc.intro = (
-        "`vobench reproduce havs-gl` (`--full`: 14 views, median of 3, paper-sized helix and zoo). The same "
+        command(records) + " (`--full`: 14 views, median of 3, paper-sized helix and zoo). The same "
         "face order (CPU radix sort) goes through the software k-buffer (algorithms/havs/kbuffer.h, TBB over "
         "bands of rows) and through the GL 4.5 core shader k-buffer (algorithms/havs/gl/gl_kbuffer.h: image "
         "load/store, no fragment-shader interlock), drawn in one call (batched, the paper's way) and in "
@@ -322,10 +334,9 @@ def gl(records, paper, doc):
                    v["serialized_vs_sw"]["differing"], v["serialized_vs_sw"]["differing_by_more_than_1"],
                    v["serialized_vs_sw_differing_with_coverage_difference"], v["serialized_vs_sw"]["max"],
                    v["race_changed_pixels"])
-        images = res.get("images", {})
         first = vs[0]["view"] if vs else None
         for kind in ("gl", "diff"):
-            f = images.get(f"{kind}-v{first}")
+            f = image(r, f"{kind}-v{first}")
             if f:
                 doc.image(f, f"{r.get('row')}, view {first}, k={res['k']}: " +
                           ("GL image (batched)" if kind == "gl" else "GL against software, white > 1/255"))

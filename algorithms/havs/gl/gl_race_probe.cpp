@@ -46,6 +46,7 @@ std::vector<uint32_t> pixel_fragment_counts(const havs::FaceData& fd, const Came
 
 nlohmann::json run_gl(Params& p, const ProbeContext& ctx) {
   const int k = p.get_int("k", 2, 1, havs::kMaxK);
+  if (p.dry_run()) return nlohmann::json::object();
   const havs::FaceData fd = havs::build_face_data(*ctx.scene);
   nlohmann::json out{{"k", k}, {"cells", ctx.scene->num_primitives()}, {"faces", fd.faces->num_faces()}};
   const char* lp_threads = std::getenv("LP_NUM_THREADS");
