@@ -64,6 +64,7 @@ nlohmann::json run_analysis(Params& p, const ProbeContext& ctx) {
   const int k = p.get_int("k", 2, 1, havs::kMaxK);
   if (p.dry_run()) return nlohmann::json::object();
   const havs::FaceData fd = havs::build_face_data(*ctx.scene);
+  std::filesystem::create_directories(ctx.image_dir);
   nlohmann::json views = nlohmann::json::array();
   int64_t worst_score = -1;
   int worst = -1;

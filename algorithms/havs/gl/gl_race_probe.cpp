@@ -63,6 +63,7 @@ nlohmann::json run_gl(Params& p, const ProbeContext& ctx) {
   out["available"] = true;
   out["gl_version"] = gl->version();
   out["gl_renderer"] = gl->renderer();
+  fs::create_directories(ctx.image_dir);
   const std::string img_dir = fs::path(ctx.image_dir).filename().string();
   nlohmann::json views = nlohmann::json::array(), images = nlohmann::json::object();
   for (size_t vi = 0; vi < ctx.views.size(); ++vi) {
