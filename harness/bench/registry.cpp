@@ -4,7 +4,9 @@
 #include "algorithms/centroid/centroid.h"
 #include "algorithms/centroid/triangle_centroid.h"
 #include "algorithms/centroid/vtk_centroid.h"
+#include "algorithms/havs/gl/gl_race_probe.h"
 #include "algorithms/havs/havs.h"
+#include "algorithms/havs/havs_probes.h"
 #include "algorithms/mpvo/mpvo.h"
 #include "algorithms/stencil/stencil_layers.h"
 #include "algorithms/stencil/stencil_probes.h"
@@ -70,6 +72,9 @@ const std::vector<ProbeInfo>& probe_registry() {
       voxel_splat_frames_probe_info(),
       voxel_order_splits_probe_info(),
       sxmpvo_tiny_cells_probe_info(),
+      havs_sorts_probe_info(),
+      havs_analysis_probe_info(),
+      havs_gl_probe_info(),
   };
   return registry;
 }
