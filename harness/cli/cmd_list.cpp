@@ -6,7 +6,6 @@
 #include "harness/bench/registry.h"
 #include "harness/bench/reproduction.h"
 #include "harness/cli/commands.h"
-#include "harness/cli/experiments.h"
 
 namespace vob {
 
@@ -20,8 +19,7 @@ Command add_list_command(CLI::App& app) {
       nlohmann::json j{{"orderers", nlohmann::json::array()},
                        {"probes", nlohmann::json::array()},
                        {"datasets", nlohmann::json::array()},
-                       {"reproductions", nlohmann::json::array()},
-                       {"experiments", nlohmann::json::array()}};
+                       {"reproductions", nlohmann::json::array()}};
       for (const auto& o : orderer_registry()) {
         // Claims of the default configuration (some depend on a parameter, e.g. backend).
         const Claims c = make_orderer(o.name)->claims();
@@ -42,8 +40,6 @@ Command add_list_command(CLI::App& app) {
                                  {"hard_case", d.hard_case}});
       for (const auto& r : reproductions)
         j["reproductions"].push_back({{"name", r.name}, {"summary", r.summary}, {"file", r.path}});
-      for (const auto& e : experiment_registry())
-        j["experiments"].push_back({{"name", e.name}, {"summary", e.summary}});
       std::cout << j.dump(2) << "\n";
       return 0;
     }
@@ -63,7 +59,6 @@ Command add_list_command(CLI::App& app) {
     }
     std::cout << "\nReproductions (vobench reproduce NAME [--tiny|--full]):\n";
     for (const auto& r : reproductions) std::cout << "  " << r.name << "  " << r.summary << "\n";
-    for (const auto& e : experiment_registry()) std::cout << "  " << e.name << "  " << e.summary << "\n";
     return 0;
   };
 }

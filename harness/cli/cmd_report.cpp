@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "harness/cli/commands.h"
-#include "harness/cli/experiments.h"
+#include "harness/cli/reproduce.h"
 #include "harness/cli/report_input.h"
 #include "harness/cli/reproduce.h"
 #include "harness/scene/input_error.h"

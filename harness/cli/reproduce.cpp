@@ -9,7 +9,6 @@
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/results.h"
 #include "harness/bench/runner.h"
-#include "harness/cli/experiments.h"
 #include "harness/cli/python_script.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/scene/input_error.h"
@@ -100,6 +99,14 @@ int report_folder(const std::string& dir, const std::string& suites_dir) {
   }
   const int report = run_report({results}, dir, title, name);
   return status != 0 ? status : report;
+}
+
+int run_report(const std::vector<std::string>& results, const std::string& out_dir,
+               const std::string& title, const std::string& name) {
+  std::vector<std::string> args = {"--out", out_dir, "--title", title};
+  if (!name.empty()) args.insert(args.end(), {"--name", name});
+  args.insert(args.end(), results.begin(), results.end());
+  return run_python_script("report.py", args);
 }
 
 }  // namespace vob

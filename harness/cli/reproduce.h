@@ -25,4 +25,9 @@ int reproduce(const Reproduction& rep, const std::string& out_dir, bool force);
 // without a paper). Returns the exit status.
 int report_folder(const std::string& dir, const std::string& suites_dir);
 
+// The generic report (reports/report.py) of results files into out_dir; `name` adds
+// NAME.md / NAME.json. Returns the script's exit status.
+int run_report(const std::vector<std::string>& results, const std::string& out_dir,
+               const std::string& title, const std::string& name);
+
 }  // namespace vob

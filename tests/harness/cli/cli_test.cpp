@@ -67,7 +67,7 @@ TEST(Cli, ListJsonHasEveryOrdererWithClaimsAndDeclaredParameters) {
   }
   EXPECT_TRUE(saw_havs);
   EXPECT_FALSE(j.at("datasets").empty());
-  EXPECT_FALSE(j.at("experiments").empty());
+  EXPECT_FALSE(j.at("reproductions").empty());
   const Outcome text = vobench("list");
   EXPECT_NE(text.out.find("k=2 (1..16): k-buffer entries per pixel"), std::string::npos) << text.out;
 }
