@@ -65,6 +65,9 @@ class StencilXmpvo final : public Orderer {
       auto p = clock.phase("DFS");
       core_.dfs_all(out, &extra_);
     }
+    // Faces the layer extraction had to force out of a visibility cycle: a cycle it met and
+    // broke, reported by the cells they bound (as stencil-layers reports its triangles).
+    for (int32_t f : result_.forced) out.cycles.add({ext_->cell[size_t(f)]});
     core_.add_counters(out);
     add_layer_counters(result_, out);
     auto& k = out.counters;
