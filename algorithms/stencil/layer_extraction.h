@@ -48,6 +48,7 @@
 #include <nlohmann/json.hpp>
 
 #include "algorithms/stencil/layer_backend.h"
+#include "harness/bench/orderer.h"
 #include "harness/bench/param_spec.h"
 #include "harness/bench/phase_clock.h"
 
