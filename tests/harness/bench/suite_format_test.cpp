@@ -32,12 +32,12 @@ json gap_suite() {
 
 TEST(SuiteFormat, GridsExpandDatasetsAndAlgorithms) {
   auto j = gap_suite();
-  j["algorithms"] = json::parse(R"(["mpvo", {"name": "centroid", "grid": {"key": ["view", "depth"]}}])");
+  j["algorithms"] = json::parse(R"(["mpvo", {"name": "centroid", "grid": {"key": ["view", "eye"]}}])");
   const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
   ASSERT_EQ(s.datasets.size(), 2u);
   EXPECT_EQ(s.datasets[1].label(), "gap(gaps=3,nx=2,ny=2,nz=8)");
   EXPECT_EQ(s.datasets[1].row_label(), "3 gaps");
-  EXPECT_EQ(s.algorithms, (std::vector<std::string>{"mpvo", "centroid:key=view", "centroid:key=depth"}));
+  EXPECT_EQ(s.algorithms, (std::vector<std::string>{"mpvo", "centroid:key=view", "centroid:key=eye"}));
 }
 
 TEST(SuiteFormat, RefusesBadGridsAndLabelsNamingTheEntry) {
