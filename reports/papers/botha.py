@@ -160,8 +160,8 @@ def table1(records, paper, doc):
                   holds=None if fratio is None or noise is None else abs(fratio - 1) <= noise)
     nviews = first.get("views", "-")
     t.notes = (f"{nviews} Fibonacci views at zoom {zoom:g} (eye at 1.5 bounding radii), {first.get('repeats', '-')} "
-               f"timed frames each after {WORDS.get(first.get('warmup'), first.get('warmup'))} warm-up; mean over views of "
-               "the median. The "
+               f"timed frames each after {WORDS.get(first.get('warmup'), first.get('warmup'))} warm-up; mean over "
+               "views of the median. The "
                "synthetic volumes stand in for the paper's data sets at their sizes. btf runs on the same perspective "
                "views (the paper ran it orthographic; its cost does not depend on the projection).")
     ft.notes = ("Frame = the ordering then render_in_order (harness/render/compositor.h: every significant voxel "
