@@ -160,8 +160,8 @@ def table1(records, paper, doc):
                   holds=None if fratio is None or noise is None else abs(fratio - 1) <= noise)
     nviews = first.get("views", "-")
     t.notes = (f"{nviews} Fibonacci views at zoom {zoom:g} (eye at 1.5 bounding radii), {first.get('repeats', '-')} "
-               f"timed frames each after {WORDS.get(first.get('warmup'), first.get('warmup'))} warm-up; mean over views of "
-               "the median. The "
+               f"timed frames each after {WORDS.get(first.get('warmup'), first.get('warmup'))} warm-up; mean over "
+               "views of the median. The "
                "synthetic volumes stand in for the paper's data sets at their sizes. btf runs on the same perspective "
                "views (the paper ran it orthographic; its cost does not depend on the projection).")
     ft.notes = ("Frame = the ordering then render_in_order (harness/render/compositor.h: every significant voxel "
@@ -255,15 +255,20 @@ def fig1(records, paper, doc):
     t = doc.table(f"Oracle and image against distance-sort, one close-up view (zoom {zoom:g}, {size})",
                   ["volume", "view", "ordering", "violating pixels", "violating fragments", "max k",
                    "pixels off vs distance-sort", "RMSE vs distance-sort"],
-                  "Images: each ordering's rendering (written by the runner, image_views) and its difference "
-                  "image against the distance-sort rendering (white: off by 2 or more 8-bit steps in the PNGs, "
-                  "the distance-sort image dimmed elsewhere). The paper shows the PBTF cross artefact; the "
-                  "oracle counts it.")
+                  "Pixels off (some channel off by more than 1/255) and RMSE: the runner's image error against "
+                  "the exact image, which is distance-sort's rendering when distance-sort's own image error is 0 "
+                  "(else computed from the PNGs: off by 2 or more 8-bit steps). Images: each ordering's rendering "
+                  "(written by the runner, image_views) and its difference image against the distance-sort "
+                  "rendering from the PNGs (white: off by 2 or more 8-bit steps, the distance-sort image dimmed "
+                  "elsewhere). The paper shows the PBTF cross artefact; the oracle counts it.")
     for row in rows_of(ords):
         recs = {s: (of(ords, row, s) or [None])[-1] for s in specs}
         imgs = {s: read_png(r["images"]["order"], doc.out_dir) if r and "images" in r else None
                 for s, r in recs.items()}
         ref = imgs["distance-sort"]
+        # distance-sort's rendering is the exact one when its own image error is zero: then
+        # the records' image_error (float images) is the difference against distance-sort.
+        same_as_exact = m.get(recs["distance-sort"] or {}, "image_error.max_error") == 0
         panels = []
         for s in specs:
             r = recs[s]
@@ -273,6 +278,8 @@ def fig1(records, paper, doc):
             off = rmse = diff = None
             if imgs[s] is not None and ref is not None:
                 off, rmse, diff = compare(imgs[s], ref)
+            if same_as_exact:  # the runner's float image error against the exact image is ours
+                off, rmse = m.get(r, "image_error.pixels_off"), m.get(r, "image_error.rmse")
             o = r.get("oracle", {})
             t.row(row, r["view_index"], s, o.get("violating_pixels"), o.get("violating_fragments"), o.get("max_k"),
                   off, rmse)
