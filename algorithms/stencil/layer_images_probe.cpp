@@ -77,7 +77,7 @@ nlohmann::json run(Params& params, const ProbeContext& ctx) {
   const auto& [view_index, view] = ctx.views.front();
   Params op("stencil-layers");
   op.set("backend", backend);
-  auto orderer = stencil_layers_orderer_info().make(op);
+  auto orderer = make_from_info(stencil_layers_orderer_info(), op);
   op.check_all_used();
   PhaseClock clock;
   orderer->prepare(s, clock);

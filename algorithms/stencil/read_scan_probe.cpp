@@ -27,14 +27,25 @@ const std::vector<Variant>& variants() {
   return v;
 }
 
-std::unique_ptr<Orderer> make_variant(const Variant& v) {
+Params variant_params(const Variant& v) {
   Params p("stencil-layers");
   p.set("backend", v.backend);
   p.set("variant", v.variant);
   if (v.block) p.set("block", std::to_string(v.block));
-  auto o = stencil_layers_orderer_info().make(p);
+  return p;
+}
+
+std::unique_ptr<Orderer> make_variant(const Variant& v) {
+  Params p = variant_params(v);
+  auto o = make_from_info(stencil_layers_orderer_info(), p);
   p.check_all_used();
   return o;
+}
+
+// Every declared parameter of the variant with its effective value (as records show them).
+nlohmann::json variant_parameters(const Variant& v) {
+  Params p = variant_params(v);
+  return resolve_params(stencil_layers_orderer_info().params, p).values();
 }
 
 nlohmann::json run(Params& params, const ProbeContext& ctx) {
@@ -91,7 +102,7 @@ nlohmann::json run(Params& params, const ProbeContext& ctx) {
     nlohmann::json phases = nlohmann::json::object();
     for (const auto& [name, sec] : sums[i].phases) phases[name] = sec;
     list.push_back({{"label", vs[i].label},
-                    {"parameters", orderers[i]->parameters()},
+                    {"parameters", variant_parameters(vs[i])},
                     {"seconds", sums[i].total},
                     {"phases", phases},
                     {"pixels_read_per_frame", sums[i].pixels_read / frames},

@@ -34,7 +34,7 @@ std::unique_ptr<Prepared> prepare_voxel_orderer(const std::string& spec, const S
   if (it == infos.end())
     throw InputError("orderings", spec, "not a voxel orderer (btf, wbtf, pbtf, ip-pbtf, distance-sort)");
   auto p = std::make_unique<Prepared>();
-  p->orderer = it->make(params);
+  p->orderer = make_from_info(*it, params);
   params.check_all_used();
   p->scene = s.fresh();
   PhaseClock c;

@@ -12,7 +12,7 @@ using json = nlohmann::json;
 Ordering order_once(const std::string& predicates, const Scene& scene, const Camera& cam) {
   Params p("xmpvo");
   p.set("predicates", predicates);
-  auto o = xmpvo_orderer_info().make(p);
+  auto o = make_from_info(xmpvo_orderer_info(), p);
   PhaseClock prep, clock;
   const Scene fresh = scene.fresh();  // lives while the orderer does: it may keep references
   o->prepare(fresh, prep);

@@ -22,6 +22,12 @@ struct OrdererInfo {
   std::function<std::unique_ptr<Orderer>(const ResolvedParams&)> make;
 };
 
+// An orderer from its registration and given parameters, checked against the declared
+// specs (for probes in plugin folders, which build their own orderers' variants).
+inline std::unique_ptr<Orderer> make_from_info(const OrdererInfo& info, Params& given) {
+  return info.make(resolve_params(info.params, given));
+}
+
 const std::vector<OrdererInfo>& orderer_registry();
 const OrdererInfo& find_orderer(const std::string& name);  // InputError if unknown
 // The info of the orderer a spec "name:k=v,..." names (InputError if unknown).
