@@ -6,6 +6,7 @@
 #include <string>
 
 #include "datasets/datasets.h"
+#include "harness/bench/reproduction.h"
 #include "harness/bench/suite.h"
 #include "harness/scene/input_error.h"
 
@@ -149,12 +150,19 @@ TEST(SuiteValidation, SizesAreStrict) {
 }
 
 TEST(SuiteValidation, EverySuiteOfTheRepositoryIsValid) {
-  // The validation must not refuse what the reproductions run.
-  int n = 0;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(VOB_SOURCE_DIR) + "/datasets/suites")) {
+  // The validation must not refuse what `vobench run` and the reproductions run: the plain
+  // suites at the top, and every reproduction file at every scale.
+  const std::string dir = std::string(VOB_SOURCE_DIR) + "/datasets/suites";
+  int suites = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
     if (e.path().extension() != ".json") continue;
     EXPECT_NO_THROW(SuiteSpec::load(e.path().string())) << e.path();
-    ++n;
+    ++suites;
   }
-  EXPECT_GE(n, 4);
+  EXPECT_GE(suites, 3);
+  const auto reproductions = list_reproductions(dir);
+  EXPECT_GE(reproductions.size(), 25u);  // the 25 of issue 12
+  for (const auto& r : reproductions)
+    for (const char* scale : {"tiny", "default", "full"})
+      EXPECT_NO_THROW(load_reproduction(r.path, scale, dir)) << r.name << " at " << scale;
 }
