@@ -57,23 +57,6 @@ def size_note(records, opt_in):
     return "Default sizes; --full adds " + opt_in + "."
 
 
-def fit_line(x, y):
-    """Least squares y = intercept + slope * x, with r^2 (as the C++ reproductions fitted)."""
-    n = len(x)
-    if n < 2:
-        return None
-    sx, sy = sum(x), sum(y)
-    sxx, sxy, syy = sum(v * v for v in x), sum(a * b for a, b in zip(x, y)), sum(v * v for v in y)
-    d = n * sxx - sx * sx
-    if d == 0:
-        return None
-    slope = (n * sxy - sx * sy) / d
-    intercept = (sy - slope * sx) / n
-    ss_tot = syy - sy * sy / n
-    ss_res = sum((b - intercept - slope * a) ** 2 for a, b in zip(x, y))
-    return {"slope": slope, "intercept": intercept, "r2": 1 - ss_res / ss_tot if ss_tot > 0 else 1.0}
-
-
 def views_violating(recs):
     """Views whose order the oracle rejects (records without the oracle count as none)."""
     return sum(m.values(recs, m.failing))
@@ -191,8 +174,8 @@ def table4(records, paper, doc):
         ours.row(row, recs[0]["n"], t["sxmpvo"], t["mpvonc"], t["vtk-centroid"], m.ratio(t["sxmpvo"], t["mpvonc"]),
                  m.ratio(t["sxmpvo"], t["vtk-centroid"]))
     helices = [r for r in rows if r[0].startswith("helix") and r[2]["sxmpvo"] is not None and r[2]["mpvonc"] is not None]
-    fs = fit_line([r[1] for r in helices], [r[2]["sxmpvo"] for r in helices])
-    fn = fit_line([r[1] for r in helices], [r[2]["mpvonc"] for r in helices])
+    fs = m.fit_line([r[1] for r in helices], [r[2]["sxmpvo"] for r in helices])
+    fn = m.fit_line([r[1] for r in helices], [r[2]["mpvonc"] for r in helices])
     ours.notes = size_note(records, "helix 1.0M-4.5M")
     if fs and fn:
         ours.notes += (" Linear fit over the helices: SXMPVO %.3g us per cell (r^2 = %.4f), "
@@ -332,7 +315,7 @@ def fig11(records, paper, doc):
         if a is not None and ts is not None:
             pts.append((gaps, a, ts, tn))
     pts.sort()
-    f = fit_line([p[1] for p in pts], [p[2] for p in pts])
+    f = m.fit_line([p[1] for p in pts], [p[2] for p in pts])
     t.notes = size_note(records, "the paper's 1.5M-cell meshes (50x50x100 hexes; default 20x20x100 = 240k cells)")
     if f:
         t.notes += (" Linear fit of SXMPVO time against a: %.3g us per pixel entry, intercept %.3g s, r^2 = %.4f."

@@ -33,25 +33,6 @@ def of(records, orderer):
     return [r for r in records if r.get("orderer") == orderer]
 
 
-def fit_line(x, y):
-    """Least squares y = intercept + slope x, with r^2 (1 when y does not vary)."""
-    n = float(len(x))
-    if n < 2:
-        return None
-    sx, sy = sum(x), sum(y)
-    sxx = sum(v * v for v in x)
-    sxy = sum(a * b for a, b in zip(x, y))
-    syy = sum(v * v for v in y)
-    d = n * sxx - sx * sx
-    if d == 0:
-        return None
-    slope = (n * sxy - sx * sy) / d
-    intercept = (sy - slope * sx) / n
-    ss_tot = syy - sy * sy / n
-    ss_res = sum((b - intercept - slope * a) ** 2 for a, b in zip(x, y))
-    return {"slope": slope, "intercept": intercept, "r2": 1 - ss_res / ss_tot if ss_tot > 0 else 1.0}
-
-
 # --- xmpvo-scaling ---------------------------------------------------------------------------
 
 def scaling_figure(rows, fits, size, doc):
@@ -124,7 +105,7 @@ def scaling(records, paper, doc):
     fit = {}
     for key in ("bsp", "xmpvo"):
         if have[key]:
-            fit[key] = (fit_line(bs, [r[key] for r in rows]), fit_line(b2, [r[key] for r in rows]))
+            fit[key] = (m.fit_line(bs, [r[key] for r in rows]), m.fit_line(b2, [r[key] for r in rows]))
             if fit[key][1]:
                 fits[key] = fit[key][1]
     notes.append("b = exterior faces (triangles here). BSP build = the prepare phase 'BSP build' alone (unique faces "

@@ -100,3 +100,21 @@ def failing(r):
 
 def ratio(a, b):
     return None if a is None or b in (None, 0) else a / b
+
+
+def fit_line(x, y):
+    """Least squares y = intercept + slope * x, with r^2 (1 when y does not vary); None for
+    fewer than two points or constant x."""
+    n = len(x)
+    if n < 2:
+        return None
+    sx, sy = sum(x), sum(y)
+    sxx, sxy, syy = sum(v * v for v in x), sum(a * b for a, b in zip(x, y)), sum(v * v for v in y)
+    d = n * sxx - sx * sx
+    if d == 0:
+        return None
+    slope = (n * sxy - sx * sy) / d
+    intercept = (sy - slope * sx) / n
+    ss_tot = syy - sy * sy / n
+    ss_res = sum((b - intercept - slope * a) ** 2 for a, b in zip(x, y))
+    return {"slope": slope, "intercept": intercept, "r2": 1 - ss_res / ss_tot if ss_tot > 0 else 1.0}
