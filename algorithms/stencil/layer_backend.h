@@ -31,6 +31,13 @@ class LayerBackend {
   virtual std::string name() const = 0;  // "gl" or "software"
   // View-independent: polygon i has points[4 * i .. 4 * i + sizes[i]) (sizes 3 or 4).
   virtual void set_primitives(const std::vector<Vec3>& points, const std::vector<int8_t>& sizes) = 0;
+  // Exterior faces of cells only (stencil-xmpvo), per frame: which primitives face the eye
+  // (1) and which face away (0), or null. Two exterior faces of volumes that touch face to
+  // face lie in one plane and meet every ray through their overlap at one depth; a backend
+  // that honours this orders such a tie exactly: the back-facing face is nearer, since the
+  // ray leaves its cell before entering the other's (coplanar_order in
+  // algorithms/xmpvo/face_pairs.h). The GL backend ignores it (it claims no exactness).
+  virtual void set_facing(const std::vector<uint8_t>* /*front_facing*/) {}
   // Per frame: the camera fixes the buffer size (W x H) and the projection.
   virtual void begin_frame(const Camera& view) = 0;
   // Steps 1-2: clear the colour to 0 and the depth to 1.0 (far), stencil test disabled,

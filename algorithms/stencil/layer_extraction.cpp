@@ -239,6 +239,11 @@ size_t LayerExtractor::bytes() const {
          in_f_.capacity();
 }
 
+size_t Extraction::bytes() const {
+  return extractor.bytes() + (backend ? backend->bytes() : 0) + result.layer.capacity() * 4 +
+         result.visible.capacity();
+}
+
 std::vector<ParamSpec> extraction_params() {
   return {ParamSpec::choice("backend", "gl", {"gl", "software"},
                             "OpenGL through OSMesa, or the same passes on the harness rasterizer"),

@@ -42,6 +42,7 @@
 #pragma once
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,7 @@
 #include "algorithms/stencil/layer_backend.h"
 #include "harness/bench/orderer.h"
 #include "harness/bench/param_spec.h"
+#include "harness/bench/registry.h"
 #include "harness/bench/phase_clock.h"
 
 namespace vob::stencil {
@@ -122,5 +124,27 @@ class LayerExtractor {
   std::vector<int32_t> behind_pixels_;  // per primitive: pixels where it was G(p) != C(p)
   std::vector<uint8_t> in_f_;  // 1 in F, 2 removed in the current pass, 0 otherwise
 };
+
+// What both stencil plugins hold: the backend they were asked for, the extraction options
+// (both from extraction_params()), the backend once made, and the extractor with its
+// latest result.
+struct Extraction {
+  explicit Extraction(const ResolvedParams& p)
+      : backend_name(p.get_choice("backend")), opt(extract_options(p)) {}
+  std::string backend_name;
+  ExtractOptions opt;
+  std::unique_ptr<LayerBackend> backend;
+  LayerExtractor extractor;
+  LayerResult result;
+  size_t bytes() const;  // extractor, backend and the result's per-primitive arrays
+};
+
+// The registration of a stencil plugin: its parameters are extraction_params(), and
+// `Plugin` is constructed from the resolved ones.
+template <class Plugin>
+OrdererInfo extraction_orderer_info(std::string name, SceneKind kind, std::string doc) {
+  return {std::move(name), kind, std::move(doc), extraction_params(),
+          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> { return std::make_unique<Plugin>(p); }};
+}
 
 }  // namespace vob::stencil

@@ -3,8 +3,11 @@
 // the oracle, so the layers it yields are exact for the oracle's samples. Passes follow the
 // OpenGL configurations of layer_backend.h fragment by fragment, in drawing order: GL_LESS
 // keeps the first of equal depths, GL_GEQUAL the last; GL_INCR saturates at 255.
+// With set_facing, a depth tie between exactly coplanar faces facing opposite ways (their
+// interpolated depths differ only by rounding) is decided by the facing rule instead.
 #pragma once
 #include <memory>
+#include <unordered_map>
 
 #include "algorithms/stencil/layer_backend.h"
 #include "harness/raster/sample_frame.h"
@@ -16,6 +19,7 @@ class SoftwareBackend final : public LayerBackend {
   std::string name() const override { return "software"; }
   void set_primitives(const std::vector<Vec3>& points, const std::vector<int8_t>& sizes) override;
   void begin_frame(const Camera& view) override;
+  void set_facing(const std::vector<uint8_t>* front_facing) override { front_ = front_facing; }
   void render_candidates(const std::vector<int32_t>& ids) override;
   void render_complexity(const std::vector<int32_t>& ids) override;
   void finish() override {}
@@ -24,6 +28,14 @@ class SoftwareBackend final : public LayerBackend {
   size_t bytes() const override;
 
  private:
+  // Draws `ids` in order; the farthest fragment wins when `keep_far` (GL_GEQUAL, counting
+  // the stencil), else the nearest (GL_LESS).
+  void draw(const std::vector<int32_t>& ids, bool keep_far);
+  // -1 when primitive a (depth ta) is nearer than b (depth tb) by the facing rule, +1 when
+  // b is, 0 when the pair is no coplanar opposite-facing tie.
+  int tie_order(int32_t a, double ta, int32_t b, double tb);
+  bool coplanar(int32_t a, int32_t b);
+
   std::vector<Vec3> points_;
   std::vector<int8_t> sizes_;
   std::unique_ptr<SampleFrame> frame_;
@@ -31,6 +43,8 @@ class SoftwareBackend final : public LayerBackend {
   std::vector<double> depth_;
   std::vector<uint32_t> colour_;
   std::vector<uint8_t> stencil_;
+  const std::vector<uint8_t>* front_ = nullptr;
+  std::unordered_map<uint64_t, bool> coplanar_;  // exact, view-independent, by id pair
 };
 
 }  // namespace vob::stencil

@@ -13,11 +13,11 @@ using namespace stencil;
 
 class StencilLayers final : public Orderer {
  public:
-  StencilLayers(std::string backend, ExtractOptions opt) : backend_name_(std::move(backend)), opt_(opt) {}
+  explicit StencilLayers(const ResolvedParams& p) : x_(p) {}
 
   Claims claims() const override {
     Claims c;
-    c.image_exact = backend_name_ == "software";
+    c.image_exact = x_.backend_name == "software";
     c.detects_cycles = true;
     return c;
   }
@@ -35,22 +35,23 @@ class StencilLayers final : public Orderer {
       for (int k = 0; k < 3; ++k) points_[4 * t + k] = s.points[s.tris[t][k]];
       centroids_[t] = (points_[4 * t] + points_[4 * t + 1] + points_[4 * t + 2]) / 3.0;
     }
-    backend_ = make_layer_backend(backend_name_, "stencil-layers");
-    backend_->set_primitives(points_, sizes_);
+    x_.backend = make_layer_backend(x_.backend_name, "stencil-layers");
+    x_.backend->set_primitives(points_, sizes_);
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
     {
       auto p = clock.phase("render");
-      backend_->begin_frame(view);
+      x_.backend->begin_frame(view);
     }
     const int32_t n = int32_t(sizes_.size());
-    extractor_.run(*backend_, n, view, opt_, clock, result_);
+    x_.extractor.run(*x_.backend, n, view, x_.opt, clock, x_.result);
+    const LayerResult& result = x_.result;
     Ordering out;
-    out.layers = result_.layer;
+    out.layers = result.layer;
     std::vector<int32_t> stuck, hidden;
     for (int32_t t = 0; t < n; ++t)
-      if (result_.layer[size_t(t)] < 0) (result_.visible[size_t(t)] ? stuck : hidden).push_back(t);
+      if (result.layer[size_t(t)] < 0) (result.visible[size_t(t)] ? stuck : hidden).push_back(t);
     std::vector<std::pair<double, int32_t>> by_depth;
     for (int32_t t : stuck) by_depth.push_back({-view.depth(centroids_[size_t(t)]), t});
     std::sort(by_depth.begin(), by_depth.end());
@@ -58,29 +59,28 @@ class StencilLayers final : public Orderer {
     for (const auto& [d, t] : by_depth) out.order.push_back(t);
     out.order.insert(out.order.end(), hidden.begin(), hidden.end());
     // Layers back to front: counting sort by layer, farthest first.
-    std::vector<int32_t> start(size_t(result_.layers) + 1, 0);
+    std::vector<int32_t> start(size_t(result.layers) + 1, 0);
     for (int32_t t = 0; t < n; ++t)
-      if (result_.layer[size_t(t)] >= 0) ++start[size_t(result_.layers - 1 - result_.layer[size_t(t)]) + 1];
+      if (result.layer[size_t(t)] >= 0) ++start[size_t(result.layers - 1 - result.layer[size_t(t)]) + 1];
     for (size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
     const size_t base = out.order.size();
     out.order.resize(size_t(n));
     for (int32_t t = 0; t < n; ++t) {
-      const int32_t l = result_.layer[size_t(t)];
-      if (l >= 0) out.order[base + size_t(start[size_t(result_.layers - 1 - l)]++)] = t;
+      const int32_t l = result.layer[size_t(t)];
+      if (l >= 0) out.order[base + size_t(start[size_t(result.layers - 1 - l)]++)] = t;
     }
     if (!stuck.empty()) out.cycles.add(stuck);
-    for (int32_t t : result_.forced) out.cycles.add({t});
-    add_counters(out, result_);
-    out.counters["bytes_buffers"] = double(extractor_.bytes() + backend_->bytes());
-    out.extras["footprint"] = result_.footprint;
-    out.extras["backend"] = backend_->name();
+    for (int32_t t : result.forced) out.cycles.add({t});
+    add_counters(out, result);
+    out.counters["bytes_buffers"] = double(x_.extractor.bytes() + x_.backend->bytes());
+    out.extras["footprint"] = result.footprint;
+    out.extras["backend"] = x_.backend->name();
     return out;
   }
 
   size_t bytes() const override {
     return points_.capacity() * sizeof(Vec3) + sizes_.capacity() + centroids_.capacity() * sizeof(Vec3) +
-           extractor_.bytes() + (backend_ ? backend_->bytes() : 0) + result_.layer.capacity() * 4 +
-           result_.visible.capacity();
+           x_.bytes();
   }
 
   static void add_counters(Ordering& out, const LayerResult& r) {
@@ -92,25 +92,18 @@ class StencilLayers final : public Orderer {
   }
 
  private:
-  std::string backend_name_;
-  ExtractOptions opt_;
+  Extraction x_;
   std::vector<Vec3> points_, centroids_;
   std::vector<int8_t> sizes_;
-  std::unique_ptr<LayerBackend> backend_;
-  LayerExtractor extractor_;
-  LayerResult result_;
 };
 
 }  // namespace
 
 OrdererInfo stencil_layers_orderer_info() {
-  return {"stencil-layers", SceneKind::Triangles,
-          "Krishnan et al.'s layer extraction with item, z and stencil buffers (OpenGL through "
-          "OSMesa, or the same passes on the harness rasterizer)",
-          stencil::extraction_params(),
-          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<StencilLayers>(p.get_choice("backend"), stencil::extract_options(p));
-          }};
+  return extraction_orderer_info<StencilLayers>(
+      "stencil-layers", SceneKind::Triangles,
+      "Krishnan et al.'s layer extraction with item, z and stencil buffers (OpenGL through "
+      "OSMesa, or the same passes on the harness rasterizer)");
 }
 
 }  // namespace vob

@@ -12,16 +12,17 @@ using namespace stencil;
 
 class StencilXmpvo final : public Orderer {
  public:
-  StencilXmpvo(std::string backend, ExtractOptions opt) : backend_name_(std::move(backend)), opt_(opt) {}
+  explicit StencilXmpvo(const ResolvedParams& p) : x_(p) {}
 
-  Claims claims() const override { return mpvo::core_claims(false, backend_name_ == "software"); }
+  Claims claims() const override { return mpvo::core_claims(false, x_.backend_name == "software"); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     core_.prepare(scene, clock);
     { auto p = clock.phase("exterior faces"); ext_ = &scene.exterior_faces(); }
     auto p = clock.phase("upload");
-    backend_ = make_layer_backend(backend_name_, "stencil-xmpvo");
-    backend_->set_primitives(ext_->corners, ext_->size);
+    x_.backend = make_layer_backend(x_.backend_name, "stencil-xmpvo");
+    x_.backend->set_primitives(ext_->corners, ext_->size);
+    x_.backend->set_facing(&front_);  // touching volumes: coplanar ties by facing
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
@@ -35,7 +36,7 @@ class StencilXmpvo final : public Orderer {
     }
     {
       auto p = clock.phase("render");
-      backend_->begin_frame(view);
+      x_.backend->begin_frame(view);
       last_.assign(size_t(view.width) * view.height, 0);
       pairs_.clear();
     }
@@ -48,7 +49,8 @@ class StencilXmpvo final : public Orderer {
         pairs_.push_back((uint64_t(uint32_t(ext_->cell[size_t(prev - 1)])) << 32) | uint32_t(ext_->cell[size_t(face)]));
       }
     };
-    extractor_.run(*backend_, int32_t(b), view, opt_, clock, result_, &sink);
+    x_.extractor.run(*x_.backend, int32_t(b), view, x_.opt, clock, x_.result, &sink);
+    const LayerResult& result = x_.result;
     {
       auto p = clock.phase("relations");
       std::sort(pairs_.begin(), pairs_.end());
@@ -67,28 +69,26 @@ class StencilXmpvo final : public Orderer {
     }
     // Faces the layer extraction had to force out of a visibility cycle: a cycle it met and
     // broke, reported by the cells they bound (as stencil-layers reports its triangles).
-    for (int32_t f : result_.forced) out.cycles.add({ext_->cell[size_t(f)]});
+    for (int32_t f : result.forced) out.cycles.add({ext_->cell[size_t(f)]});
     core_.add_counters(out);
-    add_layer_counters(result_, out);
+    add_layer_counters(result, out);
     auto& k = out.counters;
     k["exterior_faces"] = double(b);
     k["pixel_pairs"] = double(pixel_pairs);
     k["relations"] = double(rel_.size());
-    k["unclassified_faces"] = double(result_.unclassified_visible);
-    k["unclassified_no_pixel"] = double(result_.unclassified_no_pixel);
-    k["bytes_pixels"] = double(last_.capacity() * 4 + extractor_.bytes() + backend_->bytes());
+    k["unclassified_faces"] = double(result.unclassified_visible);
+    k["unclassified_no_pixel"] = double(result.unclassified_no_pixel);
+    k["bytes_pixels"] = double(last_.capacity() * 4 + x_.extractor.bytes() + x_.backend->bytes());
     return out;
   }
 
   size_t bytes() const override {
-    return core_.bytes() + last_.capacity() * 4 + front_.capacity() +
-           pairs_.capacity() * 8 + rel_.capacity() * 8 + extra_.bytes() + extractor_.bytes() +
-           (backend_ ? backend_->bytes() : 0) + result_.layer.capacity() * 4 + result_.visible.capacity();
+    return core_.bytes() + last_.capacity() * 4 + front_.capacity() + pairs_.capacity() * 8 +
+           rel_.capacity() * 8 + extra_.bytes() + x_.bytes();
   }
 
  private:
-  std::string backend_name_;
-  ExtractOptions opt_;
+  Extraction x_;
   mpvo::MpvoCore core_;
   const ExteriorFaces* ext_ = nullptr;  // the scene's exterior faces
   std::vector<uint8_t> front_;
@@ -96,21 +96,15 @@ class StencilXmpvo final : public Orderer {
   std::vector<uint64_t> pairs_;
   std::vector<std::pair<int32_t, int32_t>> rel_;
   mpvo::ExtraRelations extra_;
-  std::unique_ptr<LayerBackend> backend_;
-  LayerExtractor extractor_;
-  LayerResult result_;
 };
 
 }  // namespace
 
 OrdererInfo stencil_xmpvo_orderer_info() {
-  return {"stencil-xmpvo", SceneKind::Cells,
-          "Krishnan et al.'s discretized XMPVO: exterior faces layered with the stencil "
-          "buffer, relations between faces met at a pixel in consecutive layers, MPVO DFS",
-          stencil::extraction_params(),
-          [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<StencilXmpvo>(p.get_choice("backend"), stencil::extract_options(p));
-          }};
+  return extraction_orderer_info<StencilXmpvo>(
+      "stencil-xmpvo", SceneKind::Cells,
+      "Krishnan et al.'s discretized XMPVO: exterior faces layered with the stencil buffer, "
+      "relations between faces met at a pixel in consecutive layers, MPVO DFS");
 }
 
 }  // namespace vob

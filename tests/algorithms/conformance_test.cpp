@@ -13,7 +13,6 @@
 
 #include <cctype>
 #include <map>
-#include <set>
 
 #include "datasets/datasets.h"
 #include "harness/bench/registry.h"
@@ -111,19 +110,6 @@ std::vector<Case> all_cases() {
   return out;
 }
 
-// Known claim violations, each a defect on record (docs/design-notes.md), held strictly:
-// the case must still fail, so a fix shows up here and the entry is removed with it.
-// stencil-xmpvo's software backend pairs exterior faces met in consecutive layers; where
-// two volumes touch face to face without shared nodes, the back face of one and the front
-// face of the other lie at equal depth and the layer order between them is a tie, so the
-// relation is missed (xmpvo and bsp-xmpvo order such faces with face_pairs.h's
-// coplanar_order; stencil-xmpvo does not yet).
-bool known_violation(const Case& c) {
-  static const std::set<std::string> touching = {"touching-edge", "touching-hex", "touching-overhang",
-                                                 "touching-rotated", "touching-shifted"};
-  return c.spec == "stencil-xmpvo:backend=software" && touching.count(c.dataset.name) > 0;
-}
-
 class Conformance : public ::testing::TestWithParam<Case> {};
 
 }  // namespace
@@ -144,8 +130,7 @@ TEST_P(Conformance, CompleteAndTrueToItsClaims) {
   const bool exact = claims.image_exact || claims.object_exact;
   const auto views = dataset_views(c.dataset, scene, kViews, {}, kSize, kSize, false, 1.0);
   ASSERT_FALSE(views.empty());
-  const bool known = known_violation(c);
-  int64_t cycles = 0, covered = 0, known_fragments = 0;
+  int64_t cycles = 0, covered = 0;
   for (const auto& [vi, cam] : views) {
     const std::string where = c.spec + " on " + c.dataset.label() + " view " + std::to_string(vi);
     FrameMeasurement m = measure_frame(*p, cam, 0, 1);
@@ -158,10 +143,7 @@ TEST_P(Conformance, CompleteAndTrueToItsClaims) {
       const OracleResult r = check_ordering(scene, cam, m.ordering.order);
       ASSERT_FALSE(r.input_fault()) << where << ": the test scene itself is invalid";
       covered += r.covered_pixels;
-      if (known)
-        known_fragments += r.violating_fragments;
-      else
-        EXPECT_EQ(r.violating_fragments, 0) << where << " S=1: " << r.to_json().dump();
+      EXPECT_EQ(r.violating_fragments, 0) << where << " S=1: " << r.to_json().dump();
     }
     if (acyclic && claims.object_exact) {
       OracleOptions opt;
@@ -170,17 +152,12 @@ TEST_P(Conformance, CompleteAndTrueToItsClaims) {
       EXPECT_EQ(r.violating_fragments, 0) << where << " S=4: " << r.to_json().dump();
     }
   }
-  if (known)
-    EXPECT_GT(known_fragments, 0) << c.spec << " on " << c.dataset.label()
-                                  << ": a known violation is gone; remove it from known_violation()";
   EXPECT_GT(p->orderer->bytes(), 0u) << c.spec;
   if (acyclic && exact) {
     // An exactness check over views that see nothing would pass vacuously.
     EXPECT_GT(covered, 0) << c.spec << " on " << c.dataset.label() << ": the views must see the scene";
-    // The known violations come with cycles the tie manufactures (forced faces): same defect.
-    if (!known)
-      EXPECT_EQ(cycles, 0) << c.spec << " on " << c.dataset.label()
-                           << ": an exact orderer found a cycle in an acyclic scene";
+    EXPECT_EQ(cycles, 0) << c.spec << " on " << c.dataset.label()
+                         << ": an exact orderer found a cycle in an acyclic scene";
   }
   if (!acyclic && claims.detects_cycles && (exact || face_connected(scene))) {
     EXPECT_GT(cycles, 0) << c.spec << " on " << c.dataset.label() << " reports no cycle";
