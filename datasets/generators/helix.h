@@ -65,8 +65,8 @@ int helix_min_cells(int turns);
 
 struct HelixSpec {
   int cells = 20000, turns = 3;
-  int faces = 0;         // > 0: target exterior faces b (helix_resolution_for_faces)
   Vec3 offset{0, 0, 0};  // added to every coordinate (the `offset` hard case)
+  int faces = 0;         // > 0: target exterior faces b (helix_resolution_for_faces)
 };
 CellMesh make_helix_mesh(const HelixSpec& s);
 Scene make_helix(Params& p);  // cells=20000 turns=3 faces=0 (near-isotropic)
