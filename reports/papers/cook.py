@@ -190,7 +190,8 @@ def table4(records, paper, doc):
         rows.append((row, recs[0]["n"], t))
         ours.row(row, recs[0]["n"], t["sxmpvo"], t["mpvonc"], t["vtk-centroid"], m.ratio(t["sxmpvo"], t["mpvonc"]),
                  m.ratio(t["sxmpvo"], t["vtk-centroid"]))
-    helices = [r for r in rows if r[0].startswith("helix") and r[2]["sxmpvo"] is not None and r[2]["mpvonc"] is not None]
+    helices = sorted((r for r in rows if r[0].startswith("helix") and r[2]["sxmpvo"] is not None
+                      and r[2]["mpvonc"] is not None), key=lambda r: r[1])  # suites may list sizes out of order
     fs = m.fit_line([r[1] for r in helices], [r[2]["sxmpvo"] for r in helices])
     fn = m.fit_line([r[1] for r in helices], [r[2]["mpvonc"] for r in helices])
     ours.notes = size_note(records, "helix 1.0M-4.5M")
@@ -218,8 +219,8 @@ def table4(records, paper, doc):
     if helices:
         fig, ax = plt.subplots(figsize=(6.4, 4.4))
         xs = [r[1] for r in helices]
-        for key, name in (("sxmpvo", "SXMPVO"), ("mpvonc", "MPVONC"), ("vtk-centroid", "vtk-centroid")):
-            ax.plot(xs, [r[2][key] for r in helices], "o-", label=name)
+        for key, legend in (("sxmpvo", "SXMPVO"), ("mpvonc", "MPVONC"), ("vtk-centroid", "vtk-centroid")):
+            ax.plot(xs, [r[2][key] for r in helices], "o-", label=legend)
         for f in (fs, fn):
             if f:
                 ax.plot([0, max(xs)], [f["intercept"], f["intercept"] + f["slope"] * max(xs)], ":", color="grey")
