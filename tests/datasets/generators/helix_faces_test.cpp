@@ -33,7 +33,9 @@ TEST(HelixFaces, TheCountedExteriorFacesAreTheMeshes) {
                                             : helix_resolution(cells, 3);
     EXPECT_EQ(int64_t(s.mesh().num_cells()), r.cells());
     EXPECT_EQ(int64_t(f.boundary.size()), helix_exterior_faces(r));
-    if (kv.size() > 1) EXPECT_NEAR(double(f.boundary.size()), std::stod(kv[1].second), 0.05 * std::stod(kv[1].second));
+    if (kv.size() > 1) {
+      EXPECT_NEAR(double(f.boundary.size()), std::stod(kv[1].second), 0.05 * std::stod(kv[1].second));
+    }
   }
 }
 
