@@ -28,6 +28,8 @@
 // generator picks sectors, radial cells and steps whose n and b are both nearest the two
 // targets (within 1% where the shape allows, else InputError above 5%), cells square on the
 // tube's surface (arc between sectors ~ step length), the radial split taking the rest.
+// Thin cells in a bend can fail the exact convexity check: Table 1's counts at 3 turns pass
+// (vobench validate), but e.g. cells=1485000 faces=59500 turns=2 is refused at load.
 #pragma once
 #include "harness/bench/params.h"
 #include "harness/scene/scene.h"
