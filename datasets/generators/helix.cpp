@@ -129,6 +129,11 @@ HelixResolution cross_section(int sectors) {
   r.outer_layers = std::max(1, static_cast<int>(std::lround((kShape.outer_radius - kShape.hole_radius) / h)));
   return r;
 }
+
+double centre_line_length(int turns) {
+  const double b = kShape.pitch / (2 * kPi);
+  return 2 * kPi * turns * std::sqrt(kShape.coil_radius * kShape.coil_radius + b * b);
+}
 }  // namespace
 
 Vec3 helix_centre(double t) {
@@ -147,8 +152,7 @@ HelixResolution helix_resolution(int cells, int turns) {
                      std::to_string(cells) + " is below the smallest helix with " +
                          std::to_string(turns) + " turns (" +
                          std::to_string(helix_min_cells(turns)) + " cells)");
-  const double b = kShape.pitch / (2 * kPi);
-  const double length = 2 * kPi * turns * std::sqrt(kShape.coil_radius * kShape.coil_radius + b * b);
+  const double length = centre_line_length(turns);
   // The sector count whose isotropic helix (steps as long as the cell size) is nearest
   // `cells`; then steps absorb the remainder, with fewer sectors when that would leave
   // fewer than kMinStepsPerTurn steps per turn.
@@ -169,8 +173,53 @@ HelixResolution helix_resolution(int cells, int turns) {
   return r;
 }
 
+int64_t helix_exterior_faces(const HelixResolution& r) {
+  // Per step 2 * sectors triangles on each of the inner tube's surface, the bore and the
+  // outside; each end is one cross-section of both tubes (per_step / 3 triangles).
+  return int64_t(6) * r.sectors * r.steps + 2 * (r.per_step() / 3);
+}
+
+HelixResolution helix_resolution_for_faces(int cells, int faces, int turns) {
+  const double n = cells, b = faces, length = centre_line_length(turns);
+  const int min_steps = kMinStepsPerTurn * turns;
+  HelixResolution best;
+  double best_error = 1e300, best_aspect = 1e300;
+  // b ~ 6 sectors steps: sectors beyond b / (6 min_steps) leave too few steps.
+  const int max_sectors = std::max(3, static_cast<int>(b / (6.0 * min_steps)) + 1);
+  for (int ns = 3; ns <= max_sectors; ++ns)
+    // m = 2 rings - 1 + 2 layers (odd): triangles of one cross-section per sector.
+    for (int m = 3; 3.0 * ns * m * min_steps <= 1.05 * n; m += 2) {
+      HelixResolution r;
+      r.sectors = ns;
+      const int radial = (m + 1) / 2;  // rings + layers, split by the radii they span
+      r.outer_layers = std::clamp(static_cast<int>(std::lround(
+                                      radial * (kShape.outer_radius - kShape.hole_radius) /
+                                      (kShape.outer_radius - kShape.hole_radius + kShape.inner_radius))),
+                                  1, radial - 1);
+      r.inner_rings = radial - r.outer_layers;
+      r.steps = std::max(min_steps, static_cast<int>(std::lround(n / r.per_step())));
+      const double error = std::max(std::fabs(r.cells() / n - 1), std::fabs(helix_exterior_faces(r) / b - 1));
+      const double aspect = std::fabs(std::log(cell_size(ns) / (length / r.steps)));
+      // Within 1% of both targets the squarest surface cells win; above, the nearer counts.
+      const bool close = error <= 0.01, best_close = best_error <= 0.01;
+      if (close != best_close ? close : close ? aspect < best_aspect : error < best_error) {
+        best = r;
+        best_error = error;
+        best_aspect = aspect;
+      }
+    }
+  if (best_error > 0.05)
+    throw InputError("helix", "parameter faces",
+                     std::to_string(faces) + " exterior faces with " + std::to_string(cells) +
+                         " cells: no helix of " + std::to_string(turns) +
+                         " turns comes within 5% of both (nearest: " + std::to_string(best.cells()) +
+                         " cells, " + std::to_string(helix_exterior_faces(best)) + " faces)");
+  return best;
+}
+
 CellMesh make_helix_mesh(const HelixSpec& s) {
-  const HelixResolution r = helix_resolution(s.cells, s.turns);
+  const HelixResolution r =
+      s.faces > 0 ? helix_resolution_for_faces(s.cells, s.faces, s.turns) : helix_resolution(s.cells, s.turns);
   const Section inner = inner_section(r), outer = outer_section(r);
   CellMesh m;
   const int64_t cells = r.cells();
@@ -189,6 +238,8 @@ Scene make_helix(Params& p) {
   HelixSpec s;
   s.turns = p.get_int("turns", 3, 1, 20);
   s.cells = p.get_int("cells", 20000, helix_min_cells(s.turns), 50000000);
+  s.faces = p.get_int("faces", 0, 0, 50000000);
+  if (s.faces > 0) helix_resolution_for_faces(s.cells, s.faces, s.turns);  // InputError now
   if (p.dry_run()) return {};  // parameters checked, nothing generated
   return Scene::from_mesh("helix", make_helix_mesh(s), p.to_json());
 }

@@ -21,6 +21,15 @@
 // same angles in both, swept along the centre line in `steps` steps with a
 // rotation-minimising frame; every swept triangle is a prism cut into three tetrahedra with
 // the conforming min-id rule (prism_split.h).
+//
+// Resolution. By default cells are near-isotropic: the exterior faces b grow as n^(2/3)
+// (70,226 at 450k). Cook et al. Table 1 gives n and b of each helix but not how it was cut
+// (b/n is 1/15.5 at 450k, 1/39 at 3.57M: cells thin across the tube). With `faces` the
+// generator picks sectors, radial cells and steps whose n and b are both nearest the two
+// targets (within 1% where the shape allows, else InputError above 5%), cells square on the
+// tube's surface (arc between sectors ~ step length), the radial split taking the rest.
+// Thin cells in a bend can fail the exact convexity check: Table 1's counts at 3 turns pass
+// (vobench validate), but e.g. cells=1485000 faces=59500 turns=2 is refused at load.
 #pragma once
 #include "harness/bench/params.h"
 #include "harness/scene/scene.h"
@@ -49,13 +58,19 @@ struct HelixResolution {
 // The resolution whose cell count is nearest `cells` with near-isotropic cells and at
 // least 6 steps per turn. InputError when `cells` is below the smallest helix.
 HelixResolution helix_resolution(int cells, int turns);
+// The resolution whose cells and exterior faces are both nearest (cells, faces): among
+// those within 1% of both, the one whose surface cells are squarest; InputError when none
+// is within 5%.
+HelixResolution helix_resolution_for_faces(int cells, int faces, int turns);
+int64_t helix_exterior_faces(const HelixResolution& r);  // three tube surfaces and two ends
 int helix_min_cells(int turns);
 
 struct HelixSpec {
   int cells = 20000, turns = 3;
   Vec3 offset{0, 0, 0};  // added to every coordinate (the `offset` hard case)
+  int faces = 0;         // > 0: target exterior faces b (helix_resolution_for_faces)
 };
 CellMesh make_helix_mesh(const HelixSpec& s);
-Scene make_helix(Params& p);  // cells=20000 turns=3
+Scene make_helix(Params& p);  // cells=20000 turns=3 faces=0 (near-isotropic)
 
 }  // namespace vob

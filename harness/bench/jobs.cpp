@@ -5,6 +5,7 @@
 
 #include "datasets/datasets.h"
 #include "harness/bench/registry.h"
+#include "harness/view/fit.h"
 #include "harness/view/view_set.h"
 
 namespace vob {
@@ -55,8 +56,9 @@ std::vector<const ProbeSpec*> sceneless_probes(const SuiteSpec& suite) {
   return out;
 }
 
-std::vector<std::pair<int, Camera>> suite_views(const SuiteSpec& suite, const DatasetSpec& ds,
-                                                const Scene& scene, int w, int h) {
+namespace {
+std::vector<std::pair<int, Camera>> unfitted_views(const SuiteSpec& suite, const DatasetSpec& ds,
+                                                   const Scene& scene, int w, int h) {
   if (suite.orbit) {
     ViewOptions vo;
     vo.width = w;
@@ -76,6 +78,15 @@ std::vector<std::pair<int, Camera>> suite_views(const SuiteSpec& suite, const Da
     out.emplace_back(int(i), direction_view(scene.bounds(), suite.view_directions[i], w, h, suite.ortho, suite.zoom));
   return out;
 }
+}  // namespace
+
+std::vector<std::pair<int, Camera>> suite_views(const SuiteSpec& suite, const DatasetSpec& ds,
+                                                const Scene& scene, int w, int h) {
+  auto views = unfitted_views(suite, ds, scene, w, h);
+  if (suite.fit)
+    for (auto& [i, cam] : views) cam = fit_window_to_box(cam, scene.bounds(), int64_t(w) * h);
+  return views;
+}
 
 std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, const Scene& scene,
                               const RunTags& tags) {
@@ -88,11 +99,13 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
         for (const auto& [vi, cam] : suite_views(suite, plan.dataset, scene, w, h)) {
           Job j;
           j.spec = spec;
-          j.w = w, j.h = h, j.view_index = vi, j.camera = cam;
+          // A fitted window has the camera's size; the key keeps the suite's W x H.
+          j.w = cam.width, j.h = cam.height, j.view_index = vi, j.camera = cam;
           j.key = scope + "|" + spec + "|" + label + view_set + std::to_string(vi) + "/" +
                   std::to_string(suite.views) + "|" + size_text(w, h) + "|s" +
                   std::to_string(suite.supersample) + (suite.ortho ? "|ortho" : "") +
-                  (suite.zoom != 1.0 ? "|zoom" + std::to_string(suite.zoom) : "") + tags.key_suffix();
+                  (suite.zoom != 1.0 ? "|zoom" + std::to_string(suite.zoom) : "") +
+                  (suite.fit ? "|fit" : "") + tags.key_suffix();
           jobs.push_back(std::move(j));
         }
   for (const ProbeSpec* p : plan.probes) {

@@ -47,7 +47,8 @@ Job sceneless_job(const SuiteSpec& suite, const ProbeSpec& probe, const RunTags&
 
 // The suite's views of a dataset at w x h: its view_directions, the frames of its orbit
 // (all, spread or listed indices), or the dataset's own cameras
-// (hard cases about a view), or the Fibonacci view set (all, spread or listed indices).
+// (hard cases about a view), or the Fibonacci view set (all, spread or listed indices);
+// with `fit`, each window fitted to the bounding box at w*h pixels (view/fit.h).
 std::vector<std::pair<int, Camera>> suite_views(const SuiteSpec& suite, const DatasetSpec& ds,
                                                 const Scene& scene, int w, int h);
 

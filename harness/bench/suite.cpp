@@ -276,6 +276,7 @@ void read_views(const SuiteReader& r, const nlohmann::json& j, SuiteSpec& s) {
   if (s.orbit && !s.view_directions.empty()) r.fail("orbit", "does not apply with view_directions");
   if (j.contains("ortho")) s.ortho = r.boolean(j["ortho"], "ortho");
   if (j.contains("zoom")) s.zoom = r.number(j["zoom"], "zoom", 0.0, kMaxZoom);
+  if (j.contains("fit")) s.fit = r.boolean(j["fit"], "fit");
   if (j.contains("sizes")) {
     const auto& sizes = r.array(j["sizes"], "sizes");
     s.sizes.clear();
@@ -292,7 +293,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   if (!input.is_object()) r.fail("suite", "must be a JSON object");
   const nlohmann::json j = apply_scale(input, "default", source);
   r.only_keys(j, "", {"name", "datasets", "algorithms", "probes", "views", "view_indices", "spread_views",
-                      "view_directions", "orbit", "ortho", "zoom", "sizes", "repeats", "warmup", "threads", "oracle",
+                      "view_directions", "orbit", "ortho", "zoom", "fit", "sizes", "repeats", "warmup", "threads", "oracle",
                       "supersample", "image_error", "image_views", "images_of_violations", "exterior_area",
                       "comment"});
   SuiteSpec s;

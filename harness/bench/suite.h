@@ -8,7 +8,7 @@
 //    "probes": [{"name": "xmpvo-stability"}],
 //    "views": 14, "view_indices": [0, 3] | "spread_views": 3 | "view_directions": [...],
 //    "orbit": false,
-//    "ortho": false, "zoom": 1, "sizes": ["512x512"], "repeats": 3, "warmup": 1,
+//    "ortho": false, "zoom": 1, "fit": false, "sizes": ["512x512"], "repeats": 3, "warmup": 1,
 //    "threads": 1, "oracle": true, "supersample": 1, "image_error": true,
 //    "image_views": [0], "images_of_violations": false, "exterior_area": true}
 #pragma once
@@ -61,6 +61,7 @@ struct SuiteSpec {
   bool orbit = false;             // views are the frames of a `views`-frame orbit (view_set.h)
   bool ortho = false;
   double zoom = 1.0;
+  bool fit = false;               // each view's window fitted to the box at W*H pixels (fit.h)
   std::vector<std::pair<int, int>> sizes{{512, 512}};
   int repeats = 3, warmup = 1;
   int threads = 0;                // TBB parallelism; 0: all cores
