@@ -50,31 +50,23 @@ template <class T>
 size_t vec_bytes(const std::vector<T>& v) { return v.capacity() * sizeof(T); }
 }  // namespace
 
+// The from_* factories differ only in which primitives the scene holds.
+Scene::Scene(std::string name, nlohmann::json params, SceneKind kind)
+    : name_(std::move(name)), params_(std::move(params)), kind_(kind), cache_(std::make_shared<Cache>()) {}
+
 Scene Scene::from_mesh(std::string name, CellMesh mesh, nlohmann::json params) {
-  Scene s;
-  s.name_ = std::move(name);
-  s.params_ = std::move(params);
-  s.kind_ = SceneKind::Cells;
+  Scene s(std::move(name), std::move(params), SceneKind::Cells);
   s.mesh_ = std::make_shared<const CellMesh>(std::move(mesh));
-  s.cache_ = std::make_shared<Cache>();
   return s;
 }
 Scene Scene::from_soup(std::string name, TriangleSoup soup, nlohmann::json params) {
-  Scene s;
-  s.name_ = std::move(name);
-  s.params_ = std::move(params);
-  s.kind_ = SceneKind::Triangles;
+  Scene s(std::move(name), std::move(params), SceneKind::Triangles);
   s.soup_ = std::make_shared<const TriangleSoup>(std::move(soup));
-  s.cache_ = std::make_shared<Cache>();
   return s;
 }
 Scene Scene::from_grid(std::string name, VoxelGrid grid, nlohmann::json params) {
-  Scene s;
-  s.name_ = std::move(name);
-  s.params_ = std::move(params);
-  s.kind_ = SceneKind::Voxels;
+  Scene s(std::move(name), std::move(params), SceneKind::Voxels);
   s.grid_ = std::make_shared<const VoxelGrid>(std::move(grid));
-  s.cache_ = std::make_shared<Cache>();
   return s;
 }
 
