@@ -139,16 +139,7 @@ CellMesh blade_ring(int sectors) {
   return m;
 }
 
-Camera ring_axis_view(bool ortho) {
-  Camera c;
-  c.eye = {0, 0, 8};
-  c.target = {0, 0, 0.5};
-  c.up = {0, 1, 0};
-  c.ortho = ortho;
-  c.ortho_height = 5;
-  c.width = c.height = 64;
-  return c;
-}
+Camera ring_axis_view(bool ortho) { return test_camera({0, 0, 8}, {0, 0, 0.5}, 64, 64, ortho, 5); }
 
 double view_key(const Camera& cam, Vec3 p) {
   return cam.ortho ? dot(p - cam.eye, cam.forward()) : dot(p - cam.eye, p - cam.eye);
