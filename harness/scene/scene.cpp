@@ -92,22 +92,25 @@ size_t Scene::num_primitives() const {
   return 0;
 }
 
-Aabb Scene::bounds() const {
-  switch (kind_) {
-    case SceneKind::Cells: return mesh().bounds();
-    case SceneKind::Triangles: return soup().bounds();
-    case SceneKind::Voxels: return grid().bounds();
+namespace {
+// f applied to the scene's primitives, whichever kind they are (R{} for no kind).
+template <class R, class F>
+R on_primitives(const Scene& s, F&& f) {
+  switch (s.kind()) {
+    case SceneKind::Cells: return f(s.mesh());
+    case SceneKind::Triangles: return f(s.soup());
+    case SceneKind::Voxels: return f(s.grid());
   }
-  return {};
+  return R{};
+}
+}  // namespace
+
+Aabb Scene::bounds() const {
+  return on_primitives<Aabb>(*this, [](const auto& p) { return p.bounds(); });
 }
 
 size_t Scene::bytes() const {
-  switch (kind_) {
-    case SceneKind::Cells: return mesh().bytes();
-    case SceneKind::Triangles: return soup().bytes();
-    case SceneKind::Voxels: return grid().bytes();
-  }
-  return 0;
+  return on_primitives<size_t>(*this, [](const auto& p) { return p.bytes(); });
 }
 
 const MeshFaces& Scene::faces() const {
