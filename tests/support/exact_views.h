@@ -17,9 +17,9 @@ namespace vob::testing {
 
 // One orderer prepared once on a fresh copy of the scene, then ordering view after view
 // (as a benchmark run does).
-struct PreparedOrderer {
+struct ReusedOrderer {
   std::unique_ptr<Orderer> o;
-  PreparedOrderer(const Scene& s, const std::string& spec) : o(make_orderer(spec)) {
+  ReusedOrderer(const Scene& s, const std::string& spec) : o(make_orderer(spec)) {
     PhaseClock c;
     o->prepare(s.fresh(), c);
   }
@@ -41,9 +41,9 @@ struct ExactViews {
 // of views in which the control violates.
 inline int expect_exact_views(const std::string& spec, const Scene& s, const ExactViews& opt,
                               const std::function<void(const Ordering&, int)>& check) {
-  PreparedOrderer p(s, spec);
-  std::unique_ptr<PreparedOrderer> c =
-      opt.control.empty() ? nullptr : std::make_unique<PreparedOrderer>(s, opt.control);
+  ReusedOrderer p(s, spec);
+  std::unique_ptr<ReusedOrderer> c =
+      opt.control.empty() ? nullptr : std::make_unique<ReusedOrderer>(s, opt.control);
   OracleOptions oracle;
   oracle.supersample = opt.supersample;
   int control_failures = 0;

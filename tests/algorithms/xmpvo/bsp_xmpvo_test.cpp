@@ -19,8 +19,8 @@ using namespace vob::testing;
 namespace {
 
 // bsp-xmpvo unless told otherwise.
-struct Prepared : PreparedOrderer {
-  explicit Prepared(const Scene& s, const std::string& spec = "bsp-xmpvo") : PreparedOrderer(s, spec) {}
+struct Prepared : ReusedOrderer {
+  explicit Prepared(const Scene& s, const std::string& spec = "bsp-xmpvo") : ReusedOrderer(s, spec) {}
 };
 
 // Every view of a 14-view set: complete, no cycle, zero violations at S (and at the pixel
