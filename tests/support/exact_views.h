@@ -13,7 +13,7 @@
 #include "harness/view/view_set.h"
 #include "tests/support/test_meshes.h"
 
-namespace vob::testing {
+namespace vob::test {
 
 // One orderer prepared once on a fresh copy of the scene, then ordering view after view
 // (as a benchmark run does).
@@ -62,4 +62,4 @@ inline int expect_exact_views(const std::string& spec, const Scene& s, const Exa
   return control_failures;
 }
 
-}  // namespace vob::testing
+}  // namespace vob::test

@@ -60,6 +60,12 @@ CellMesh kuhn_block(int n, double h, double jitter, uint32_t seed) {
   return m;
 }
 
+Scene kuhn_block_scene(int n) {
+  CellMesh m = kuhn_block(n);
+  validate_cell_mesh(m, "tet block");
+  return Scene::from_mesh("tet block", std::move(m));
+}
+
 CellMesh hex_block(int n, double h) {
   CellMesh m;
   m.points = kuhn_grid(n, n, n, {}, h, 0, 1).points;
