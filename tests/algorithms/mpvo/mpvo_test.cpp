@@ -16,8 +16,6 @@ using namespace vob::testing;
 
 namespace {
 
-using vob::test::run_orderer;
-
 // The plain MPVO DFS after create_partial_order: from the sinks, then from what they left.
 Ordering dfs_from_sinks(mpvo::MpvoCore& core) {
   Ordering o;

@@ -43,7 +43,7 @@ bool is_permutation(std::vector<int32_t> v, size_t n) {
 
 // Orthographic camera looking down -z over x in [0, 10], y in [-0.5, 0.5]: 8 pixels per
 // unit, 80 x 8 pixels. Nearer = larger z.
-Camera strip_view() { return vob::testing::test_camera({5, 0, 10}, {5, 0, 0}, 80, 8, true, 1); }
+Camera strip_view() { return test_camera({5, 0, 10}, {5, 0, 0}, 80, 8, true, 1); }
 
 // A tall triangle at depth z whose cross-section with the strip y in [-0.5, 0.5] is about
 // [a, b] (its apex is far above).
