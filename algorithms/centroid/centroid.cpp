@@ -1,6 +1,6 @@
 #include "algorithms/centroid/centroid.h"
 
-#include "harness/sort/radix_sort.h"
+#include "algorithms/centroid/key_order.h"
 
 namespace vob {
 namespace {
@@ -17,26 +17,13 @@ class CentroidOrderer final : public Orderer {
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
-    const size_t n = centroids_->size();
-    {
-      auto p = clock.phase("keys");
-      sort_.resize(n);
-      const Vec3 f = view.forward();
-      const bool by_view = view_key_ || view.ortho;  // orthographic: eye distance is view depth
-      for (size_t i = 0; i < n; ++i) {
-        const Vec3 d = (*centroids_)[i] - view.eye;
-        // Descending distance = ascending negated key.
-        sort_.keys[i] = static_cast<float>(-(by_view ? dot(d, f) : length(d)));
-        sort_.ids[i] = static_cast<int32_t>(i);
-      }
-    }
-    Ordering out;
-    {
-      auto p = clock.phase("radix sort");
-      sort_.sort();
-      out.order = sort_.ids;
-    }
-    return out;
+    const Vec3 f = view.forward();
+    const bool by_view = view_key_ || view.ortho;  // orthographic: eye distance is view depth
+    const std::vector<Vec3>& c = *centroids_;
+    return order_by_descending_key(c.size(), [&](size_t i) {
+      const Vec3 d = c[i] - view.eye;
+      return by_view ? dot(d, f) : length(d);
+    }, sort_, clock);
   }
 
   size_t bytes() const override {

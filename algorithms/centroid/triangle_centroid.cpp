@@ -1,6 +1,6 @@
 #include "algorithms/centroid/triangle_centroid.h"
 
-#include "harness/sort/radix_sort.h"
+#include "algorithms/centroid/key_order.h"
 
 namespace vob {
 namespace {
@@ -18,22 +18,8 @@ class TriangleCentroid final : public Orderer {
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
-    const size_t n = centroids_.size();
-    {
-      auto p = clock.phase("keys");
-      sort_.resize(n);
-      for (size_t i = 0; i < n; ++i) {
-        sort_.keys[i] = static_cast<float>(-view.depth(centroids_[i]));
-        sort_.ids[i] = static_cast<int32_t>(i);
-      }
-    }
-    Ordering o;
-    {
-      auto p = clock.phase("radix sort");
-      sort_.sort();
-      o.order = sort_.ids;
-    }
-    return o;
+    return order_by_descending_key(centroids_.size(), [&](size_t i) { return view.depth(centroids_[i]); },
+                                   sort_, clock);
   }
 
   size_t bytes() const override {

@@ -46,80 +46,75 @@ int32_t hex_block(CellMesh& m, int nx, int ny, int nz, Vec3 origin, Vec3 spacing
   return first;
 }
 
+using BlockFn = int32_t (*)(CellMesh&, int, int, int, Vec3, Vec3, double, double);
+
+// Every scene stands on the same lower block: n x n x h unit cells from the origin.
 struct Base {
   int n, h;  // cells per side, layers (h = n/2, at least 1)
+  CellMesh m;
+  Base(Params& p, BlockFn block = tet_block) : n(p.get_int("n", 6, 1, 40)), h(std::max(1, n / 2)) {
+    block(m, n, n, h, {0, 0, 0}, {1, 1, 1}, 0.2, n);
+  }
+  // An upper block like the lower one, its corner at (x, y, h); returns its first point.
+  int32_t upper(double x, double y, BlockFn block = tet_block) {
+    return block(m, n, n, h, {x, y, double(h)}, {1, 1, 1}, 0.5, n);
+  }
 };
-Base base(Params& p) {
-  const int n = p.get_int("n", 6, 1, 40);
-  return {n, std::max(1, n / 2)};
-}
 
-Scene finish(const char* name, CellMesh m, Params& p) {
-  return Scene::from_mesh(name, std::move(m), p.to_json());
+Scene finish(const char* name, Base& b, Params& p) {
+  return Scene::from_mesh(name, std::move(b.m), p.to_json());
 }
 
 }  // namespace
 
 Scene make_touching_conforming(Params& p) {
-  const Base b = base(p);
-  CellMesh m;
-  tet_block(m, b.n, b.n, b.h, {0, 0, 0}, {1, 1, 1}, 0.2, b.n);
-  tet_block(m, b.n, b.n, b.h, {0, 0, double(b.h)}, {1, 1, 1}, 0.5, b.n);
-  return finish("touching-conforming", std::move(m), p);
+  Base b(p);
+  b.upper(0, 0);
+  return finish("touching-conforming", b, p);
 }
 
 Scene make_touching_shifted(Params& p) {
-  const Base b = base(p);
-  CellMesh m;
-  tet_block(m, b.n, b.n, b.h, {0, 0, 0}, {1, 1, 1}, 0.2, b.n);
-  tet_block(m, b.n, b.n, b.h, {0.5, 0.5, double(b.h)}, {1, 1, 1}, 0.5, b.n);
-  return finish("touching-shifted", std::move(m), p);
+  Base b(p);
+  b.upper(0.5, 0.5);
+  return finish("touching-shifted", b, p);
 }
 
 Scene make_touching_rotated(Params& p) {
-  const Base b = base(p);
+  Base b(p);
   const double angle = p.get_double("angle", 11, -180, 180);
-  CellMesh m;
-  tet_block(m, b.n, b.n, b.h, {0, 0, 0}, {1, 1, 1}, 0.2, b.n);
-  const int32_t first = tet_block(m, b.n, b.n, b.h, {0, 0, double(b.h)}, {1, 1, 1}, 0.5, b.n);
+  const int32_t first = b.upper(0, 0);
   // A rotation about a vertical axis keeps every z, so the interface stays exactly planar
   // and the cells keep their orientation.
   const double a = angle * std::acos(-1.0) / 180, c = std::cos(a), s = std::sin(a), mid = 0.5 * b.n;
-  for (size_t i = static_cast<size_t>(first); i < m.points.size(); ++i) {
-    Vec3& q = m.points[i];
+  for (size_t i = static_cast<size_t>(first); i < b.m.points.size(); ++i) {
+    Vec3& q = b.m.points[i];
     const double x = q.x - mid, y = q.y - mid;
     q.x = mid + c * x - s * y;
     q.y = mid + s * x + c * y;
   }
-  return finish("touching-rotated", std::move(m), p);
+  return finish("touching-rotated", b, p);
 }
 
 Scene make_touching_overhang(Params& p) {
-  const Base b = base(p);
-  CellMesh m;
-  tet_block(m, b.n, b.n, b.h, {0, 0, 0}, {1, 1, 1}, 0.2, b.n);
+  Base b(p);
   // n x n half-unit cells: side n/2, from x = 3n/4 to 5n/4 (beyond the lower block's n).
-  tet_block(m, b.n, b.n, b.h, {0.75 * b.n, 0.25 * b.n, double(b.h)}, {0.5, 0.5, 0.5}, 0.5, b.n);
-  return finish("touching-overhang", std::move(m), p);
+  tet_block(b.m, b.n, b.n, b.h, {0.75 * b.n, 0.25 * b.n, double(b.h)}, {0.5, 0.5, 0.5}, 0.5, b.n);
+  return finish("touching-overhang", b, p);
 }
 
 Scene make_touching_edge(Params& p) {
-  const Base b = base(p);
-  CellMesh m;
+  Base b(p);
   // A: [0,n] x [0,n] x [0,h]; B: [n, 1.5n] x [0,n] x [0,h] at half-unit cells;
   // C: [0,n] x [0.5, n+0.5] x [h, 2h]. A|B and B|C are separated by x = n, A|C by z = h.
-  tet_block(m, b.n, b.n, b.h, {0, 0, 0}, {1, 1, 1}, 0.2, b.n);
-  tet_block(m, b.n, 2 * b.n, 2 * b.h, {double(b.n), 0, 0}, {0.5, 0.5, 0.5}, 0.4, b.n);
-  tet_block(m, b.n, b.n, b.h, {0, 0.5, double(b.h)}, {1, 1, 1}, 0.6, b.n);
-  return finish("touching-edge", std::move(m), p);
+  tet_block(b.m, b.n, 2 * b.n, 2 * b.h, {double(b.n), 0, 0}, {0.5, 0.5, 0.5}, 0.4, b.n);
+  tet_block(b.m, b.n, b.n, b.h, {0, 0.5, double(b.h)}, {1, 1, 1}, 0.6, b.n);
+  return finish("touching-edge", b, p);
 }
 
 Scene make_touching_hex(Params& p) {
-  const Base b = base(p);
-  CellMesh m;
-  hex_block(m, b.n, b.n, b.h, {0, 0, 0}, {1, 1, 1}, 0.2, b.n);
-  hex_block(m, b.n, b.n, b.h, {0.5, 0.5, double(b.h)}, {1, 1, 1}, 0.5, b.n);
-  return finish("touching-hex", std::move(m), p);
+  Base b(p, hex_block);
+  b.upper(0.5, 0.5, hex_block);
+  return finish("touching-hex", b, p);
 }
 
 }  // namespace vob

@@ -2,19 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "harness/scene/input_error.h"
 
 namespace vob {
 
 namespace {
-std::string text(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
 double max_abs(Vec3 p) { return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}); }
 }  // namespace
 
@@ -25,8 +18,8 @@ void check_coordinates(const std::vector<Vec3>& points, const std::string& sourc
     if (!is_finite(p)) throw InputError(source, "point " + std::to_string(i), "coordinate is not finite");
     if (max_abs(p) > kMaxAbsCoordinate)
       throw InputError(source, "point " + std::to_string(i),
-                       "coordinate " + text(max_abs(p)) + " is beyond +-" + text(kMaxAbsCoordinate) +
-                           " (squared distances would overflow)");
+                       "coordinate " + short_number(max_abs(p)) + " is beyond +-" +
+                           short_number(kMaxAbsCoordinate) + " (squared distances would overflow)");
     box.add(p);
   }
   check_extent(box, source);
@@ -38,11 +31,11 @@ void check_extent(const Aabb& box, const std::string& source) {
   const double side = std::max({d.x, d.y, d.z});
   const double scale = std::max(max_abs(box.lo), max_abs(box.hi));
   if (!(side >= kMinExtent))
-    throw InputError(source, "extent", "bounding box is " + text(side) + " wide, below " +
-                                           text(kMinExtent) + " (degenerate)");
+    throw InputError(source, "extent", "bounding box is " + short_number(side) + " wide, below " +
+                                           short_number(kMinExtent) + " (degenerate)");
   if (side < kMinRelativeExtent * scale)
-    throw InputError(source, "extent", "bounding box is " + text(side) + " wide at coordinates of " +
-                                           text(scale) + ", below double resolution (degenerate)");
+    throw InputError(source, "extent", "bounding box is " + short_number(side) + " wide at coordinates of " +
+                                           short_number(scale) + ", below double resolution (degenerate)");
 }
 
 }  // namespace vob

@@ -1,6 +1,15 @@
 #include "harness/scene/input_error.h"
 
+#include <sstream>
+
 namespace vob {
+
+std::string short_number(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
 
 std::string printable_message(const std::string& text) {
   static const char* hex = "0123456789ABCDEF";

@@ -17,6 +17,8 @@ inline constexpr size_t kMaxInputErrorChars = 900;
 // to kMaxInputErrorPath characters before they are cut.
 inline constexpr size_t kMaxInputErrorPath = 300;
 std::string printable_message(const std::string& text);
+// A number quoted in a message, to three significant digits.
+std::string short_number(double v);
 
 class InputError : public std::runtime_error {
  public:

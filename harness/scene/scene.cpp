@@ -50,31 +50,23 @@ template <class T>
 size_t vec_bytes(const std::vector<T>& v) { return v.capacity() * sizeof(T); }
 }  // namespace
 
+// The from_* factories differ only in which primitives the scene holds.
+Scene::Scene(std::string name, nlohmann::json params, SceneKind kind)
+    : name_(std::move(name)), params_(std::move(params)), kind_(kind), cache_(std::make_shared<Cache>()) {}
+
 Scene Scene::from_mesh(std::string name, CellMesh mesh, nlohmann::json params) {
-  Scene s;
-  s.name_ = std::move(name);
-  s.params_ = std::move(params);
-  s.kind_ = SceneKind::Cells;
+  Scene s(std::move(name), std::move(params), SceneKind::Cells);
   s.mesh_ = std::make_shared<const CellMesh>(std::move(mesh));
-  s.cache_ = std::make_shared<Cache>();
   return s;
 }
 Scene Scene::from_soup(std::string name, TriangleSoup soup, nlohmann::json params) {
-  Scene s;
-  s.name_ = std::move(name);
-  s.params_ = std::move(params);
-  s.kind_ = SceneKind::Triangles;
+  Scene s(std::move(name), std::move(params), SceneKind::Triangles);
   s.soup_ = std::make_shared<const TriangleSoup>(std::move(soup));
-  s.cache_ = std::make_shared<Cache>();
   return s;
 }
 Scene Scene::from_grid(std::string name, VoxelGrid grid, nlohmann::json params) {
-  Scene s;
-  s.name_ = std::move(name);
-  s.params_ = std::move(params);
-  s.kind_ = SceneKind::Voxels;
+  Scene s(std::move(name), std::move(params), SceneKind::Voxels);
   s.grid_ = std::make_shared<const VoxelGrid>(std::move(grid));
-  s.cache_ = std::make_shared<Cache>();
   return s;
 }
 
@@ -100,22 +92,25 @@ size_t Scene::num_primitives() const {
   return 0;
 }
 
-Aabb Scene::bounds() const {
-  switch (kind_) {
-    case SceneKind::Cells: return mesh().bounds();
-    case SceneKind::Triangles: return soup().bounds();
-    case SceneKind::Voxels: return grid().bounds();
+namespace {
+// f applied to the scene's primitives, whichever kind they are (R{} for no kind).
+template <class R, class F>
+R on_primitives(const Scene& s, F&& f) {
+  switch (s.kind()) {
+    case SceneKind::Cells: return f(s.mesh());
+    case SceneKind::Triangles: return f(s.soup());
+    case SceneKind::Voxels: return f(s.grid());
   }
-  return {};
+  return R{};
+}
+}  // namespace
+
+Aabb Scene::bounds() const {
+  return on_primitives<Aabb>(*this, [](const auto& p) { return p.bounds(); });
 }
 
 size_t Scene::bytes() const {
-  switch (kind_) {
-    case SceneKind::Cells: return mesh().bytes();
-    case SceneKind::Triangles: return soup().bytes();
-    case SceneKind::Voxels: return grid().bytes();
-  }
-  return 0;
+  return on_primitives<size_t>(*this, [](const auto& p) { return p.bytes(); });
 }
 
 const MeshFaces& Scene::faces() const {

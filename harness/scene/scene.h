@@ -60,6 +60,7 @@ class Scene {
 
  private:
   struct Cache;
+  Scene(std::string name, nlohmann::json params, SceneKind kind);
   std::string name_;
   nlohmann::json params_;
   SceneKind kind_ = SceneKind::Cells;

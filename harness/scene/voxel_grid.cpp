@@ -2,21 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "harness/scene/coordinates.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
-
-namespace {
-std::string short_number(double v) {
-  std::ostringstream s;
-  s.precision(3);
-  s << v;
-  return s.str();
-}
-}  // namespace
 
 Vec3 VoxelGrid::centre_of(int64_t id) const {
   const int64_t nx = dims[0], ny = dims[1];

@@ -26,6 +26,10 @@ TIMEOUT_S = 60
 MAX_LINE = 1000
 
 
+# The case modules import their shared helpers from fuzz_helpers.py next to this file.
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+
+
 def load_module(path):
     spec = importlib.util.spec_from_file_location(f"fuzz_cases_{path.stem}", path)
     module = importlib.util.module_from_spec(spec)

@@ -60,6 +60,12 @@ CellMesh kuhn_block(int n, double h, double jitter, uint32_t seed) {
   return m;
 }
 
+Scene kuhn_block_scene(int n) {
+  CellMesh m = kuhn_block(n);
+  validate_cell_mesh(m, "tet block");
+  return Scene::from_mesh("tet block", std::move(m));
+}
+
 CellMesh hex_block(int n, double h) {
   CellMesh m;
   m.points = kuhn_grid(n, n, n, {}, h, 0, 1).points;
@@ -139,16 +145,7 @@ CellMesh blade_ring(int sectors) {
   return m;
 }
 
-Camera ring_axis_view(bool ortho) {
-  Camera c;
-  c.eye = {0, 0, 8};
-  c.target = {0, 0, 0.5};
-  c.up = {0, 1, 0};
-  c.ortho = ortho;
-  c.ortho_height = 5;
-  c.width = c.height = 64;
-  return c;
-}
+Camera ring_axis_view(bool ortho) { return test_camera({0, 0, 8}, {0, 0, 0.5}, 64, 64, ortho, 5); }
 
 double view_key(const Camera& cam, Vec3 p) {
   return cam.ortho ? dot(p - cam.eye, cam.forward()) : dot(p - cam.eye, p - cam.eye);

@@ -20,6 +20,8 @@ CellMesh tet_block(int nx, int ny, int nz, Vec3 origin = {}, double h = 1.0);
 // The n^3 tet_block with a scalar per point (test_scalar) and, with jitter > 0, interior
 // points moved by up to jitter * h per axis (deterministic for a seed).
 CellMesh kuhn_block(int n, double h = 1.0, double jitter = 0, uint32_t seed = 1);
+// kuhn_block(n), validated, as the scene "tet block".
+Scene kuhn_block_scene(int n);
 // An n^3 block of axis-aligned hexahedra with scalars. Cell i + n*(j + n*k).
 CellMesh hex_block(int n, double h = 1.0);
 double test_scalar(Vec3 p);

@@ -42,17 +42,24 @@ inline Scene small_mesh(const std::string& name) {
 }
 
 // One orderer (a spec such as "xmpvo:predicates=exact") prepared on a fresh copy of the
-// scene, one view ordered, the order checked by the oracle at `supersample`.
+// scene and one view ordered; `clock`, when given, receives the phases of the order.
+inline Ordering run_orderer(const std::string& spec, const Scene& scene, const Camera& view,
+                            PhaseClock* clock = nullptr) {
+  auto o = make_orderer(spec);
+  PhaseClock prep, own_clock;
+  const Scene own = scene.fresh();
+  o->prepare(own, prep);
+  return o->order(view, clock ? *clock : own_clock);
+}
+
+// run_orderer(), the order checked by the oracle at `supersample`.
 struct Outcome {
   Ordering ordering;
   OracleResult oracle;
 };
 inline Outcome run_checked(const std::string& spec, const Scene& scene, const Camera& view,
                            int supersample = 1) {
-  auto o = make_orderer(spec);
-  PhaseClock prep, clock;
-  o->prepare(scene.fresh(), prep);
-  Outcome r{o->order(view, clock), {}};
+  Outcome r{run_orderer(spec, scene, view), {}};
   OracleOptions opt;
   opt.supersample = supersample;
   r.oracle = check_ordering(scene, view, r.ordering.order, opt);

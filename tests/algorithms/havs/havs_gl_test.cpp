@@ -18,6 +18,7 @@
 #include "harness/gl/osmesa_context.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
+#include "tests/algorithms/havs/havs_views.h"
 #include "tests/support/test_util.h"
 
 namespace vob {
@@ -25,13 +26,9 @@ namespace {
 
 using test::small_mesh;
 
-constexpr int kViews = 14, kSize = 128;
+constexpr int kViews = test::kHavsViews, kSize = 128;
 
-Camera view_of(const Scene& s, int i) {
-  ViewOptions o;
-  o.width = o.height = kSize;
-  return fibonacci_view(s.bounds(), kViews, i, o);
-}
+Camera view_of(const Scene& s, int i) { return test::havs_view(s, i, kSize); }
 
 class HavsGl : public ::testing::TestWithParam<std::string> {};
 
@@ -47,9 +44,7 @@ TEST_P(HavsGl, SerializedMatchesSoftware) {
   int64_t covered = 0, differing = 0;
   for (int v = 0; v < kViews; v += 3) {
     const Camera cam = view_of(scene, v);
-    havs::SortBuffers sb;
-    std::vector<int32_t> order;
-    havs::sort_faces(fd, cam, sb, order);
+    const std::vector<int32_t> order = test::havs_face_order(fd, cam);
     for (int k : {1, 2, 6}) {
       Image sw, hw;
       const havs::RenderStats rs = havs::render_kbuffer(fd, cam, order, k, sw);

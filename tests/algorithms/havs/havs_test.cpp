@@ -12,6 +12,7 @@
 #include "harness/bench/runner.h"
 #include "harness/oracle/sequences.h"
 #include "harness/view/view_set.h"
+#include "tests/algorithms/havs/havs_views.h"
 #include "tests/support/test_util.h"
 
 namespace vob {
@@ -19,7 +20,7 @@ namespace {
 
 using test::small_mesh;
 
-constexpr int kViews = 14, kSize = 96;
+constexpr int kViews = test::kHavsViews, kSize = 96;
 
 // Aligns two front-to-back segment lists: segments at least 8 tol long must match in order
 // within tol; shorter ones (grazing rays, float rounding of depths) may be missing on
@@ -46,11 +47,7 @@ bool same_segments(const std::vector<std::pair<double, double>>& a,
   return true;
 }
 
-Camera view_of(const Scene& s, int i) {
-  ViewOptions o;
-  o.width = o.height = kSize;
-  return fibonacci_view(s.bounds(), kViews, i, o);
-}
+Camera view_of(const Scene& s, int i) { return test::havs_view(s, i, kSize); }
 
 class HavsMesh : public ::testing::TestWithParam<std::string> {};
 
@@ -61,9 +58,7 @@ TEST_P(HavsMesh, ExactWhenKAtLeastMaxKNeeded) {
   int max_seen = 0;
   for (int v = 0; v < kViews; ++v) {
     const Camera cam = view_of(scene, v);
-    havs::SortBuffers sb;
-    std::vector<int32_t> order;
-    havs::sort_faces(fd, cam, sb, order);
+    const std::vector<int32_t> order = test::havs_face_order(fd, cam);
     const int need = havs::analyze(fd, cam, order, 1).max_k_needed;
     ASSERT_GE(need, 1);
     max_seen = std::max(max_seen, need);
@@ -97,9 +92,7 @@ TEST_P(HavsMesh, PixelsWithinKAreExactForEveryK) {
   int64_t violating_total = 0;
   for (int v = 0; v < kViews; v += 3) {
     const Camera cam = view_of(scene, v);
-    havs::SortBuffers sb;
-    std::vector<int32_t> order;
-    havs::sort_faces(fd, cam, sb, order);
+    const std::vector<int32_t> order = test::havs_face_order(fd, cam);
     for (int k = 1; k <= 3; ++k) {
       const havs::Analysis a = havs::analyze(fd, cam, order, k);
       for (size_t p = 0; p < a.k_needed.size(); ++p)
@@ -117,9 +110,7 @@ TEST_P(HavsMesh, StreamingImageEqualsAnalysisImage) {
   const Scene scene = small_mesh(GetParam());
   const havs::FaceData fd = havs::build_face_data(scene);
   const Camera cam = view_of(scene, 5);
-  havs::SortBuffers sb;
-  std::vector<int32_t> order;
-  havs::sort_faces(fd, cam, sb, order);
+  const std::vector<int32_t> order = test::havs_face_order(fd, cam);
   for (int k : {1, 2, 6}) {
     Image img;
     const havs::RenderStats rs = havs::render_kbuffer(fd, cam, order, k, img);
@@ -150,9 +141,7 @@ TEST(Havs, FaceSortIsFrontToBackByCentroidDistance) {
   const Scene scene = small_mesh("helix");
   const havs::FaceData fd = havs::build_face_data(scene);
   const Camera cam = view_of(scene, 1);
-  havs::SortBuffers sb;
-  std::vector<int32_t> order;
-  havs::sort_faces(fd, cam, sb, order);
+  const std::vector<int32_t> order = test::havs_face_order(fd, cam);
   ASSERT_EQ(order.size(), scene.faces().num_faces());
   for (size_t i = 1; i < order.size(); ++i)
     ASSERT_LE(float(length(fd.centroids->points[order[i - 1]] - cam.eye)),

@@ -9,18 +9,20 @@
 #include "harness/geometry/predicates.h"
 #include "harness/view/view_set.h"
 #include "tests/support/test_meshes.h"
+#include "tests/support/test_util.h"
 
 using namespace vob;
 using namespace vob::testing;
 
 namespace {
 
-Ordering run(const std::string& spec, const Scene& scene, const Camera& view) {
-  auto o = make_orderer(spec);
-  PhaseClock prep, clock;
-  const Scene own = scene.fresh();
-  o->prepare(own, prep);
-  return o->order(view, clock);
+// The plain MPVO DFS after create_partial_order: from the sinks, then from what they left.
+Ordering dfs_from_sinks(mpvo::MpvoCore& core) {
+  Ordering o;
+  core.begin_dfs(o);
+  core.dfs_sinks(o);
+  core.dfs_unvisited(o);
+  return o;
 }
 
 // Two tets far apart: no shared face, so no arrows; cells 0 and 1 are both sinks.
@@ -52,10 +54,7 @@ TEST(MpvoCore, ExtraRelationsAreEligibleNeighboursAndCyclesAreBroken) {
   core.create_partial_order(view);
   EXPECT_EQ(core.arrows(), 0);
   {
-    Ordering o;
-    core.begin_dfs(o);
-    core.dfs_sinks(o);
-    core.dfs_unvisited(o);
+    const Ordering o = dfs_from_sinks(core);
     EXPECT_EQ(o.order, (std::vector<int32_t>{0, 1}));
   }
   {
@@ -107,10 +106,7 @@ TEST(MpvoCore, EyeOnFacePlanesGetsExactZeroSigns) {
     zeros += exact == 0;
   }
   EXPECT_GT(zeros, 0);
-  Ordering o;
-  core.begin_dfs(o);
-  core.dfs_sinks(o);
-  core.dfs_unvisited(o);
+  const Ordering o = dfs_from_sinks(core);
   EXPECT_TRUE(is_permutation_of(o.order, m.num_cells()));
   EXPECT_EQ(face_arrow_violations(s, view, o.order), 0);
 }
@@ -181,10 +177,7 @@ TEST(MpvoCore, DeepSearchDoesNotUseTheCallStack) {
   view.eye = {0.5, 0.4, -3};
   view.target = {0.5, 0.5, 10};
   core.create_partial_order(view);
-  Ordering o;
-  core.begin_dfs(o);
-  core.dfs_sinks(o);
-  core.dfs_unvisited(o);
+  const Ordering o = dfs_from_sinks(core);
   ASSERT_TRUE(is_permutation_of(o.order, s.num_primitives()));
   EXPECT_EQ(face_arrow_violations(s, view, o.order), 0);
   // Back to front: the far end of the column first.
@@ -199,7 +192,7 @@ TEST(Mpvo, ConvexBlockRespectsEveryFaceOver14Views) {
     opt.ortho = ortho;
     for (const Camera& view : fibonacci_views(s.bounds(), 14, opt))
       for (const char* spec : {"mpvo", "mpvonc"}) {
-        const Ordering o = run(spec, s, view);
+        const Ordering o = run_orderer(spec, s, view);
         ASSERT_TRUE(is_permutation_of(o.order, s.num_primitives()));
         EXPECT_EQ(face_arrow_violations(s, view, o.order), 0) << spec;
         EXPECT_EQ(o.cycles.cycles, 0) << spec;
@@ -216,7 +209,7 @@ TEST(Mpvo, ConvexBlockIsExactAlongPixelRays) {
   opt.width = opt.height = 48;
   for (const Camera& view : fibonacci_views(s.bounds(), 14, opt))
     for (const char* spec : {"mpvo", "mpvonc"}) {
-      const RayCheck r = ray_check(s, view, run(spec, s, view).order);
+      const RayCheck r = ray_check(s, view, run_orderer(spec, s, view).order);
       EXPECT_GT(r.pairs_checked, 0);
       EXPECT_TRUE(r.violations.empty()) << spec << ": " << r.violations.size() << " pairs";
     }
@@ -233,11 +226,11 @@ TEST(Mpvo, MissesTheRelationAcrossAGap) {
   opt.width = opt.height = 48;
   int64_t cross_violations = 0, mpvonc_cross = 0;
   for (const Camera& view : fibonacci_views(s.bounds(), 14, opt)) {
-    const Ordering o = run("mpvo", s, view);
+    const Ordering o = run_orderer("mpvo", s, view);
     EXPECT_EQ(face_arrow_violations(s, view, o.order), 0);  // within blocks MPVO is right
     for (const auto& [early, late] : ray_check(s, view, o.order).violations)
       cross_violations += (early < a_cells) != (late < a_cells);
-    for (const auto& [early, late] : ray_check(s, view, run("mpvonc", s, view).order).violations)
+    for (const auto& [early, late] : ray_check(s, view, run_orderer("mpvonc", s, view).order).violations)
       mpvonc_cross += (early < a_cells) != (late < a_cells);
   }
   EXPECT_GT(cross_violations, 0);
@@ -247,11 +240,11 @@ TEST(Mpvo, MissesTheRelationAcrossAGap) {
 
 TEST(Mpvonc, CountsExteriorCellsAndReportsTheRingCycle) {
   Scene ring = Scene::from_mesh("ring", blade_ring(8));
-  const Ordering o = run("mpvonc", ring, ring_axis_view(false));
+  const Ordering o = run_orderer("mpvonc", ring, ring_axis_view(false));
   EXPECT_TRUE(is_permutation_of(o.order, 8));
   EXPECT_EQ(o.counters.at("exterior_cells"), 8);
   EXPECT_GE(o.cycles.cycles, 1);
-  const Ordering p = run("mpvo", ring, ring_axis_view(false));
+  const Ordering p = run_orderer("mpvo", ring, ring_axis_view(false));
   EXPECT_EQ(p.counters.at("sink_cells"), 0);  // every wedge has one in front of it
   EXPECT_EQ(p.counters.at("cycle_roots"), 1);
   EXPECT_EQ(p.cycles.primitives.size(), 8u);  // the whole ring

@@ -16,6 +16,7 @@
 #include "harness/scene/input_error.h"
 #include "harness/raster/fragments.h"
 #include "harness/view/view_set.h"
+#include "tests/support/test_meshes.h"
 #include "tests/support/test_util.h"
 
 using namespace vob;
@@ -24,10 +25,8 @@ using namespace vob::test;
 namespace {
 
 Ordering run(const std::string& spec, const Scene& scene, const Camera& view) {
-  auto o = make_orderer(spec);
-  PhaseClock prep, clock;
-  o->prepare(scene.fresh(), prep);
-  Ordering out = o->order(view, clock);
+  PhaseClock clock;
+  Ordering out = run_orderer(spec, scene, view, &clock);
   std::vector<std::string> names;
   for (const auto& [n, s] : clock.phases()) names.push_back(n);
   for (const char* phase : {"render", "read", "scan"})
@@ -44,17 +43,7 @@ bool is_permutation(std::vector<int32_t> v, size_t n) {
 
 // Orthographic camera looking down -z over x in [0, 10], y in [-0.5, 0.5]: 8 pixels per
 // unit, 80 x 8 pixels. Nearer = larger z.
-Camera strip_view() {
-  Camera c;
-  c.eye = {5, 0, 10};
-  c.target = {5, 0, 0};
-  c.up = {0, 1, 0};
-  c.ortho = true;
-  c.ortho_height = 1;
-  c.width = 80;
-  c.height = 8;
-  return c;
-}
+Camera strip_view() { return test_camera({5, 0, 10}, {5, 0, 0}, 80, 8, true, 1); }
 
 // A tall triangle at depth z whose cross-section with the strip y in [-0.5, 0.5] is about
 // [a, b] (its apex is far above).

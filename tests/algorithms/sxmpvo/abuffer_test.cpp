@@ -27,6 +27,17 @@ std::vector<std::pair<int32_t, int32_t>> relations(const PnLists& pn, size_t cel
   return r;
 }
 
+// What pair_pix_list writes to and reuses, for `cells` cells; pair() pairs one pixel's list.
+struct Pairing {
+  PnLists pn;
+  PairStats st;
+  std::vector<PixEntry> scratch;
+  explicit Pairing(size_t cells) { pn.reset(cells); }
+  void pair(const ABuffer& buf, int64_t pixel, double tie_eps = 1e-9) {
+    pair_pix_list(buf, pixel, tie_eps, scratch, pn, st);
+  }
+};
+
 }  // namespace
 
 TEST(ABuffer, KeepsDecreasingDepthAndCountsHeadInsertions) {
@@ -81,15 +92,12 @@ TEST(PairPixList, Figure6PixelD) {
                                              {2, back(e)},  {1, front(e)}};
   for (const auto& [t, item] : list) buf.insert(0, t, item);  // nearest first: never at head
   buf.finish();
-  PnLists pn;
-  pn.reset(5);
-  PairStats st;
-  std::vector<PixEntry> scratch;
-  pair_pix_list(buf, 0, 1e-9, scratch, pn, st);
-  EXPECT_EQ(st.pairs, 3);
-  EXPECT_EQ(st.tie_reorders, 0);
-  EXPECT_EQ(st.unpaired, 0);
-  EXPECT_EQ(relations(pn, 5), (std::vector<std::pair<int32_t, int32_t>>{{c, a}, {d, c}, {e, d}}));
+  Pairing p(5);
+  p.pair(buf, 0);
+  EXPECT_EQ(p.st.pairs, 3);
+  EXPECT_EQ(p.st.tie_reorders, 0);
+  EXPECT_EQ(p.st.unpaired, 0);
+  EXPECT_EQ(relations(p.pn, 5), (std::vector<std::pair<int32_t, int32_t>>{{c, a}, {d, c}, {e, d}}));
 }
 
 // Touching faces: the exit face of the near cell 1 and the entry face of the far cell 0
@@ -112,21 +120,17 @@ TEST(PairPixList, TiesAreReorderedToRestoreAlternation) {
   buf.insert(1, 7, front(3));
   buf.insert(1, 9, back(3));
   buf.finish();
-  PnLists pn;
-  pn.reset(4);
-  PairStats st;
-  std::vector<PixEntry> scratch;
-  pair_pix_list(buf, 0, 1e-9, scratch, pn, st);
-  EXPECT_EQ(relations(pn, 4), (std::vector<std::pair<int32_t, int32_t>>{{1, 0}}));
-  pn.reset(4);
-  pair_pix_list(buf, 1, 1e-9, scratch, pn, st);
-  EXPECT_EQ(relations(pn, 4), (std::vector<std::pair<int32_t, int32_t>>{{1, 2}, {2, 3}}));
-  EXPECT_EQ(st.tie_reorders, 2);
-  EXPECT_EQ(st.unpaired, 0);
+  Pairing p(4);
+  p.pair(buf, 0);
+  EXPECT_EQ(relations(p.pn, 4), (std::vector<std::pair<int32_t, int32_t>>{{1, 0}}));
+  p.pn.reset(4);
+  p.pair(buf, 1);
+  EXPECT_EQ(relations(p.pn, 4), (std::vector<std::pair<int32_t, int32_t>>{{1, 2}, {2, 3}}));
+  EXPECT_EQ(p.st.tie_reorders, 2);
+  EXPECT_EQ(p.st.unpaired, 0);
   // Without a tolerance the rounding case is no tie: alternation breaks and is counted.
-  pn.reset(4);
-  PairStats strict;
-  pair_pix_list(buf, 1, 0.0, scratch, pn, strict);
-  EXPECT_EQ(strict.tie_reorders, 0);
-  EXPECT_GT(strict.unpaired, 0);
+  Pairing strict(4);
+  strict.pair(buf, 1, 0.0);
+  EXPECT_EQ(strict.st.tie_reorders, 0);
+  EXPECT_GT(strict.st.unpaired, 0);
 }

@@ -8,6 +8,7 @@
 #include "harness/bench/registry.h"
 #include "harness/oracle/oracle.h"
 #include "harness/view/view_set.h"
+#include "tests/support/exact_views.h"
 #include "tests/support/test_meshes.h"
 #include "tests/support/test_util.h"
 
@@ -19,24 +20,15 @@ namespace {
 // Every view of a 14-view set at w x h: SXMPVO exact, a permutation, counters present.
 // Returns the number of views in which `control` (a heuristic) violates.
 int expect_exact_over_views(const Scene& s, int w, int h, const std::string& control) {
-  int control_failures = 0;
-  for (int v = 0; v < 14; ++v) {
-    const Camera view = fibonacci_view(s.bounds(), 14, v, ViewOptions{w, h});
-    const Outcome r = run_checked("sxmpvo", s, view);
-    EXPECT_TRUE(is_permutation_of(r.ordering.order, s.mesh().num_cells()));
-    EXPECT_EQ(r.oracle.violating_fragments, 0) << s.name() << " view " << v << ": "
-                                               << r.oracle.to_json().dump();
-    EXPECT_EQ(r.ordering.cycles.cycles, 0) << s.name() << " view " << v;
-    auto& k = r.ordering.counters;
+  return expect_exact_views("sxmpvo", s, {w, h, false, 1, control}, [&](const Ordering& r, int v) {
+    const auto& k = r.counters;
     for (const char* key : {"pn_relations", "head_insertion_rate", "abuffer_entries",
                             "exterior_faces", "bytes_abuffer", "bytes_pn", "bytes_mpvo"})
       EXPECT_TRUE(k.count(key)) << key;
     EXPECT_EQ(k.at("exterior_faces"), static_cast<double>(s.faces().boundary.size()));
     EXPECT_GT(k.at("abuffer_entries"), 0);
     EXPECT_EQ(k.at("unpaired_entries"), 0) << s.name() << " view " << v;
-    if (!control.empty() && !run_checked(control, s, view).oracle.ok()) ++control_failures;
-  }
-  return control_failures;
+  });
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "harness/oracle/oracle.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
+#include "tests/support/exact_views.h"
 #include "tests/support/test_meshes.h"
 #include "tests/support/test_util.h"
 
@@ -17,45 +18,23 @@ using namespace vob::testing;
 
 namespace {
 
-struct Prepared {
-  std::unique_ptr<Orderer> o;
-  explicit Prepared(const Scene& s, const std::string& spec = "bsp-xmpvo") : o(make_orderer(spec)) {
-    PhaseClock c;
-    o->prepare(s.fresh(), c);
-  }
-  Ordering order(const Camera& v) {
-    PhaseClock c;
-    return o->order(v, c);
-  }
+// bsp-xmpvo unless told otherwise.
+struct Prepared : ReusedOrderer {
+  explicit Prepared(const Scene& s, const std::string& spec = "bsp-xmpvo") : ReusedOrderer(s, spec) {}
 };
 
 // Every view of a 14-view set: complete, no cycle, zero violations at S (and at the pixel
 // centres); returns the number of views where `control` violates.
 int expect_exact(const Scene& s, int w, int h, bool ortho, int supersample, const std::string& control,
                  const std::string& spec = "bsp-xmpvo") {
-  Prepared p(s, spec);
-  std::unique_ptr<Prepared> c = control.empty() ? nullptr : std::make_unique<Prepared>(s, control);
-  int control_failures = 0;
-  OracleOptions opt;
-  opt.supersample = supersample;
-  for (int v = 0; v < 14; ++v) {
-    ViewOptions vo{w, h};
-    vo.ortho = ortho;
-    const Camera view = fibonacci_view(s.bounds(), 14, v, vo);
-    const Ordering r = p.order(view);
-    EXPECT_TRUE(is_permutation_of(r.order, s.mesh().num_cells()));
-    const OracleResult o = check_ordering(s, view, r.order, opt);
-    EXPECT_EQ(o.violating_fragments, 0) << s.name() << " view " << v << ": " << o.to_json().dump();
-    EXPECT_EQ(r.cycles.cycles, 0) << s.name() << " view " << v;
+  return expect_exact_views(spec, s, {w, h, ortho, supersample, control}, [](const Ordering& r, int) {
     for (const char* key : {"bsp_nodes", "bsp_depth", "bsp_fragments", "fragment_growth", "beam_queries",
                             "nodes_visited", "candidates", "overlap_tests", "relations", "bytes_bsp"})
       EXPECT_TRUE(r.counters.count(key)) << key;
     EXPECT_EQ(r.counters.at("skipped_triangles"), 0);
     EXPECT_EQ(r.counters.at("depth_undecided"), 0);
     EXPECT_LE(r.counters.at("relations"), r.counters.at("overlap_tests"));
-    if (c && !check_ordering(s, view, c->order(view).order).ok()) ++control_failures;
-  }
-  return control_failures;
+  });
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "harness/oracle/oracle.h"
 #include "harness/scene/input_error.h"
 #include "harness/view/view_set.h"
+#include "tests/support/exact_views.h"
 #include "tests/support/test_meshes.h"
 #include "tests/support/test_util.h"
 
@@ -19,24 +20,13 @@ namespace {
 // 14 views: xmpvo exact, a permutation, no cycle. Returns how many views `control` fails.
 int expect_exact_over_views(const Scene& s, int w, int h, bool ortho, int supersample,
                             const std::string& control) {
-  int control_failures = 0;
-  for (int v = 0; v < 14; ++v) {
-    ViewOptions opt{w, h};
-    opt.ortho = ortho;
-    const Camera view = fibonacci_view(s.bounds(), 14, v, opt);
-    const Outcome r = run_checked("xmpvo", s, view, supersample);
-    EXPECT_TRUE(is_permutation_of(r.ordering.order, s.mesh().num_cells()));
-    EXPECT_EQ(r.oracle.violating_fragments, 0) << s.name() << " view " << v << ": "
-                                               << r.oracle.to_json().dump();
-    EXPECT_EQ(r.ordering.cycles.cycles, 0) << s.name() << " view " << v;
-    const auto& k = r.ordering.counters;
+  return expect_exact_views("xmpvo", s, {w, h, ortho, supersample, control}, [](const Ordering& r, int) {
+    const auto& k = r.counters;
     EXPECT_EQ(k.at("front_facing") + k.at("back_facing") + k.at("edge_on_faces"),
               k.at("exterior_faces"));
     EXPECT_EQ(k.at("skipped_faces"), 0);
     EXPECT_EQ(k.at("depth_undecided"), 0);
-    if (!control.empty() && !run_checked(control, s, view, supersample).oracle.ok()) ++control_failures;
-  }
-  return control_failures;
+  });
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 """Fuzz cases for the .inr (INRIMAGE-4) reader: mutations of one valid 2x2x2 unsigned
 8-bit volume."""
 
+from fuzz_helpers import check_cases
+
 READER = "inr"
 
 
@@ -53,7 +55,4 @@ def cases(work):
         "garbage": bytes((i * 13 + 17) % 256 for i in range(700)),
         "empty": b"",
     })
-    return [{"name": n, "files": {f"{n}.inr": d},
-             "argv": ["check", "--algorithm", "distance-sort", "--input", "{dir}/" + f"{n}.inr",
-                      "--views", "2", "--size", "32x32"],
-             "names": f"{n}.inr"} for n, d in files.items()]
+    return check_cases(files, "inr", "distance-sort")

@@ -1,5 +1,7 @@
 """Fuzz cases for the .off reader: mutations of one valid closed surface (a tetrahedron)."""
 
+from fuzz_helpers import check_cases
+
 READER = "off"
 
 PTS = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0, 0, 1)]
@@ -37,7 +39,4 @@ def cases(work):
         "control-bytes": off(header="OFF\x01\x02\x03"),
         "long-token": off(header="O" * 5000),
     })
-    return [{"name": n, "files": {f"{n}.off": d},
-             "argv": ["check", "--algorithm", "triangle-centroid", "--input", "{dir}/" + f"{n}.off",
-                      "--views", "2", "--size", "32x32"],
-             "names": f"{n}.off"} for n, d in files.items()]
+    return check_cases(files, "off", "triangle-centroid")

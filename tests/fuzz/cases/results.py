@@ -3,9 +3,10 @@
 nesting, lines that are not records, missing or mistyped fields, binary garbage. Each must be
 refused with one line naming the file and the line.
 """
-import copy
 import json
 import random
+
+from fuzz_helpers import DELETE, mutate
 
 READER = "results"
 
@@ -20,7 +21,6 @@ RECORD = {
     "oracle": {"covered_pixels": 40, "violating_pixels": 0, "max_k": 0},
     "context": {"date": "2026-01-01"},
 }
-DELETE = object()
 
 # (case name, field path, new value or DELETE, what the line must name besides the file)
 FIELD_MUTATIONS = [
@@ -35,18 +35,6 @@ FIELD_MUTATIONS = [
     ("covered-null", ["oracle", "covered_pixels"], None), ("images-incomplete", ["images"], {"order": "a.png"}),
     ("havs-violations-string", ["counters", "havs_violating_pixels"], "many"),
 ]
-
-
-def mutate(record, path, value):
-    r = copy.deepcopy(record)
-    node = r
-    for key in path[:-1]:
-        node = node[key]
-    if value is DELETE:
-        del node[path[-1]]
-    else:
-        node[path[-1]] = value
-    return r
 
 
 def report_case(name, second_line, names="results.jsonl: line 2"):

@@ -2,9 +2,10 @@
 must be found before any dataset is generated (the first dataset is big enough that a
 progress line would appear first) and named by the suite file and the entry.
 """
-import copy
 import json
 import random
+
+from fuzz_helpers import DELETE, mutate
 
 READER = "suite"
 
@@ -18,7 +19,6 @@ VALID = {
 }
 
 # (case name, path into the suite, new value or DELETE, substring of the error line)
-DELETE = object()
 MUTATIONS = [
     ("views-zero", ["views"], 0, "suite.json: views"),
     ("views-negative", ["views"], -1, "suite.json: views"),
@@ -75,18 +75,6 @@ MUTATIONS = [
     ("algorithm-number", ["algorithms", 1], 5, "suite.json: algorithms[1]"),
     ("algorithms-string", ["algorithms"], "mpvo", "suite.json: algorithms"),
 ]
-
-
-def mutate(suite, path, value):
-    s = copy.deepcopy(suite)
-    node = s
-    for key in path[:-1]:
-        node = node[key]
-    if value is DELETE:
-        del node[path[-1]]
-    else:
-        node[path[-1]] = value
-    return s
 
 
 def run_case(name, text, names):

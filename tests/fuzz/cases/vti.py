@@ -1,6 +1,8 @@
 """Fuzz cases for the .vti reader: mutations of one valid ASCII image (2x2x2 points with
 point scalars)."""
 
+from fuzz_helpers import check_cases
+
 READER = "vti"
 
 
@@ -44,7 +46,4 @@ def cases(work):
         "garbage": bytes((i * 53 + 3) % 256 for i in range(2000)),
         "empty": b"",
     })
-    return [{"name": n, "files": {f"{n}.vti": d},
-             "argv": ["check", "--algorithm", "distance-sort", "--input", "{dir}/" + f"{n}.vti",
-                      "--views", "2", "--size", "32x32"],
-             "names": f"{n}.vti"} for n, d in files.items()]
+    return check_cases(files, "vti", "distance-sort")

@@ -1,6 +1,8 @@
 """Fuzz cases for the .vtu reader: mutations of one valid ASCII unstructured grid (a cube
 hexahedron with point scalars). Every case must be refused with one line naming the file."""
 
+from fuzz_helpers import check_cases
+
 READER = "vtu"
 
 CUBE = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
@@ -87,7 +89,4 @@ def cases(work):
         "appended-missing": vtu(inner="").replace(b'format="ascii">0 1 2 3 4 5 6 7</DataArray>\n</PointData>',
                                                   b'format="appended" offset="0"/>\n</PointData>'),
     })
-    return [{"name": name, "files": {f"{name}.vtu": data},
-             "argv": ["check", "--algorithm", "mpvo", "--input", "{dir}/" + f"{name}.vtu",
-                      "--views", "2", "--size", "32x32"],
-             "names": f"{name}.vtu"} for name, data in files.items()]
+    return check_cases(files, "vtu", "mpvo")

@@ -35,6 +35,17 @@ void write(const fs::path& p, const std::string& text) {
 }
 
 const char* kSmallGap = "--dataset gap --set nx=4 --set ny=4 --set nz=6";
+
+// `vobench order ARGS -o FILE` (FILE in the scratch folder): the JSON written, or null (and
+// a failure) when the command did not exit 0.
+nlohmann::json order_json(const std::string& args, const std::string& file) {
+  const fs::path out = scratch(file);
+  const Outcome r = vobench("order " + args + " -o " + out.string());
+  EXPECT_EQ(r.code, 0) << r.out;
+  if (r.code != 0) return nullptr;
+  std::ifstream in(out);
+  return nlohmann::json::parse(in);
+}
 }  // namespace
 
 TEST(Cli, ListNamesTheFirstOrderersAndDatasets) {
@@ -74,12 +85,9 @@ TEST(Cli, ListJsonHasEveryOrdererWithClaimsAndDeclaredParameters) {
 
 // The record's "parameters" lists every declared parameter with its effective value.
 TEST(Cli, OrderJsonParametersAreTheResolvedSpec) {
-  const fs::path out = scratch("order_params.json");
-  const Outcome r = vobench(std::string("order --algorithm vtk-centroid:chunk=7 ") + kSmallGap +
-                            " --views 4 --view-index 1 --size 32x32 -o " + out.string());
-  ASSERT_EQ(r.code, 0) << r.out;
-  std::ifstream f(out);
-  const auto j = nlohmann::json::parse(f);
+  const nlohmann::json j = order_json(std::string("--algorithm vtk-centroid:chunk=7 ") + kSmallGap +
+                                          " --views 4 --view-index 1 --size 32x32", "order_params.json");
+  ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j.at("parameters"), (nlohmann::json{{"chunk", 7}}));
 }
 
@@ -109,12 +117,10 @@ TEST(Cli, CheckExitsOneOnAViolation) {
 }
 
 TEST(Cli, OrderWritesAVerifiableOrderJson) {
-  const fs::path out = scratch("order.json");
-  const Outcome r = vobench(std::string("order --algorithm mpvonc ") + kSmallGap +
-                        " --eye 9,1,2 --target 0,0,0 --up 0,0,1 --fov 35 --size 80x60 -o " + out.string());
-  ASSERT_EQ(r.code, 0) << r.out;
-  std::ifstream in(out);
-  const auto j = nlohmann::json::parse(in);
+  const nlohmann::json j = order_json(std::string("--algorithm mpvonc ") + kSmallGap +
+                                          " --eye 9,1,2 --target 0,0,0 --up 0,0,1 --fov 35 --size 80x60",
+                                      "order.json");
+  ASSERT_FALSE(j.is_null());
   EXPECT_EQ(j["primitive_kind"], "cells");
   EXPECT_EQ(j["order"].size(), j["primitives"].get<size_t>());
   EXPECT_EQ(j["camera"]["fov"], 35.0);

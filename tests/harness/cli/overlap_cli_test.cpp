@@ -123,20 +123,21 @@ TEST(CliOverlap, ValidateFullOptionRefusesBeforeOrdering) {
   EXPECT_EQ(r.code, 2);
 }
 
-// A one-view mpvo suite over the interpenetrating gmsh boxes.
-fs::path gmsh_suite(const std::string& name) {
-  const fs::path suite = scratch(name);
+// `vobench run OPTIONS SUITE -o RESULTS` of a one-view mpvo suite over the interpenetrating
+// gmsh boxes; `results` (named after `tag`) is removed first and its path returned in it.
+Outcome run_gmsh_suite(const std::string& tag, const std::string& options, fs::path& results) {
+  const fs::path suite = scratch("suite" + tag + ".json");
   std::ofstream(suite) << R"({"name": "t", "datasets": [{"input": ")" << kGmsh << R"("}],
                    "algorithms": ["mpvo"], "views": 1, "sizes": ["48x48"],
                    "repeats": 1, "warmup": 0})";
-  return suite;
+  results = scratch("results" + tag + ".jsonl");
+  fs::remove(results);
+  return vobench("run " + options + suite.string() + " -o " + results.string());
 }
 
 TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
-  const fs::path suite = gmsh_suite("suite.json");
-  const fs::path results = scratch("results.jsonl");
-  fs::remove(results);
-  const Outcome r = vobench("run " + suite.string() + " -o " + results.string());
+  fs::path results;
+  const Outcome r = run_gmsh_suite("", "", results);
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   std::ifstream in(results);
   std::string line;
@@ -151,10 +152,8 @@ TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
 }
 
 TEST(CliOverlap, RunWithValidateFullRefusesTheDatasetBeforeMeasuring) {
-  const fs::path suite = gmsh_suite("suite-full.json");
-  const fs::path results = scratch("results-full.jsonl");
-  fs::remove(results);
-  const Outcome r = vobench("run --validate full " + suite.string() + " -o " + results.string());
+  fs::path results;
+  const Outcome r = run_gmsh_suite("-full", "--validate full ", results);
   EXPECT_EQ(r.code, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("interpenetrate"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("two_boxes"), std::string::npos) << r.err;

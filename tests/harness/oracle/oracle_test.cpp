@@ -18,12 +18,6 @@ int64_t histogram_total(const OracleResult& r) {
   return std::accumulate(r.k_histogram.begin(), r.k_histogram.end(), int64_t(0));
 }
 
-Scene block_scene(int n) {
-  CellMesh m = test::kuhn_block(n);
-  validate_cell_mesh(m, "tet block");
-  return Scene::from_mesh("tet block", std::move(m));
-}
-
 }  // namespace
 
 TEST(KCounter, FenwickAgreesWithQuadratic) {
@@ -55,7 +49,7 @@ TEST(KCounter, FenwickAgreesWithQuadratic) {
 
 TEST(Oracle, ExactOrderOfATetBlockPasses) {
   const int n = 4;
-  const Scene s = block_scene(n);
+  const Scene s = test::kuhn_block_scene(n);
   int views = 0;
   for (bool ortho : {false, true}) {
     ViewOptions vo;
@@ -86,7 +80,7 @@ TEST(Oracle, ExactOrderOfATetBlockPasses) {
 
 TEST(Oracle, ReversedOrderIsFlagged) {
   const int n = 4;
-  const Scene s = block_scene(n);
+  const Scene s = test::kuhn_block_scene(n);
   for (bool ortho : {false, true}) {
     ViewOptions vo;
     vo.width = vo.height = 64;
@@ -115,7 +109,7 @@ TEST(Oracle, ReversedOrderIsFlagged) {
 
 TEST(Oracle, OneSwapGivesKOne) {
   const int n = 3;
-  const Scene s = block_scene(n);
+  const Scene s = test::kuhn_block_scene(n);
   ViewOptions vo;
   vo.width = vo.height = 48;
   const Camera cam = fibonacci_view(s.bounds(), 14, 5, vo);
@@ -186,7 +180,7 @@ TEST(Oracle, VoxelsInDistanceOrderPass) {
 }
 
 TEST(Oracle, BadOrdersThrow) {
-  const Scene s = block_scene(2);
+  const Scene s = test::kuhn_block_scene(2);
   const Camera cam = fibonacci_view(s.bounds(), 14, 0);
   EXPECT_THROW(check_ordering(s, cam, {0, 1, int32_t(s.num_primitives())}), InputError);
   EXPECT_THROW(check_ordering(s, cam, {-1}), InputError);

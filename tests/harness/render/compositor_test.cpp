@@ -22,19 +22,9 @@
 
 using namespace vob;
 
-namespace {
-
-Scene block_scene(int n) {
-  CellMesh m = test::kuhn_block(n);
-  validate_cell_mesh(m, "tet block");
-  return Scene::from_mesh("tet block", std::move(m));
-}
-
-}  // namespace
-
 TEST(Compositor, ExactOrderEqualsExactRender) {
   const int n = 4;
-  const Scene s = block_scene(n);
+  const Scene s = test::kuhn_block_scene(n);
   ViewOptions vo;
   vo.width = 80;
   vo.height = 60;
@@ -130,7 +120,7 @@ TEST(Compositor, PngIsWrittenAndReadable) {
   EXPECT_EQ(px(2, 1, 2), 255);
   EXPECT_EQ(px(2, 1, 0), 0);
   // And a rendered image.
-  const Scene s = block_scene(2);
+  const Scene s = test::kuhn_block_scene(2);
   const Camera cam = fibonacci_view(s.bounds(), 14, 1, {.width = 32, .height = 24});
   write_png(render_exact(s, cam), path);
   reader->Modified();
