@@ -55,6 +55,14 @@ def command(name, records):
     return f"`vobench reproduce {name}" + {"full": " --full", "tiny": " --tiny"}.get(scale, "") + "`"
 
 
+def setup(records):
+    """(orderer records, the first of them, its image size text, its zoom)."""
+    ords = orderer_records(records)
+    first = ords[0] if ords else {}
+    size, zoom = (size_text(first), zoom_of(first)) if first else ("512x512", 2.0)
+    return ords, first, size, zoom
+
+
 def size_text(r):
     return f"{r['w']}x{r['h']}"
 
@@ -107,9 +115,7 @@ def splat_frames(probe):
 
 
 def table1(records, paper, doc):
-    ords = orderer_records(records)
-    first = ords[0] if ords else {}
-    size, zoom = (size_text(first), zoom_of(first)) if first else ("512x512", 2.0)
+    ords, first, size, zoom = setup(records)
     doc.title = "Botha and Post, Table 1: ordering and splatting-frame speed"
     doc.intro = (command("botha-table1", records) + ": generated orders (btf, wbtf, pbtf, ip-pbtf with implicit "
                  "interleaving) against the radix distance sort, timed alone and (btf, pbtf, ip-pbtf) as whole "
@@ -193,9 +199,7 @@ def table1(records, paper, doc):
 # --- botha-interleaving ----------------------------------------------------------------------
 
 def interleaving(records, paper, doc):
-    ords = orderer_records(records)
-    first = ords[0] if ords else {}
-    size, zoom = (size_text(first), zoom_of(first)) if first else ("512x512", 2.0)
+    ords, first, size, zoom = setup(records)
     doc.title = "Botha and Post: explicit against implicit interleaving"
     doc.intro = (command("botha-interleaving", records) + ": ip-pbtf:interleave=explicit against "
                  "ip-pbtf:interleave=implicit, with pbtf.")
@@ -328,9 +332,7 @@ def tie_reason(split_axes, occupied, view, frag):
 
 
 def violations(records, paper, doc):
-    ords = orderer_records(records)
-    first = ords[0] if ords else {}
-    size, zoom = (size_text(first), zoom_of(first)) if first else ("512x512", 2.0)
+    ords, first, size, zoom = setup(records)
     doc.title = "Botha and Post: violation counts the paper could only show"
     doc.intro = (command("botha-violations", records) + f" (same as `vobench check --algorithm A --dataset D "
                  f"--views {first.get('views', 14)} --zoom {zoom:g} --size {size}`): the splat oracle's violating "

@@ -82,11 +82,17 @@ def machine(paper, key):
     return paper["machines"][key]
 
 
-def finish_axes(ax):
+def finish_figure(doc, fig, ax, xlabel, ylabel, title, file_name, caption):
+    """Labels, title, axes from zero, grid and legend; then the figure is saved beside the document."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
     ax.set_ylim(bottom=0)
     ax.set_xlim(left=0)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
+    fig.tight_layout()
+    doc.figure(fig, file_name, caption)
 
 
 # --- Table 1 ----------------------------------------------------------------------------------
@@ -206,12 +212,8 @@ def table4(records, paper, doc):
         for f in (fs, fn):
             if f:
                 ax.plot([0, max(xs)], [f["intercept"], f["intercept"] + f["slope"] * max(xs)], ":", color="grey")
-        ax.set_xlabel("cells n (helix)")
-        ax.set_ylabel(f"seconds per frame ({w}x{h})")
-        ax.set_title("SXMPVO vs MPVONC by mesh size (fits dotted)")
-        finish_axes(ax)
-        fig.tight_layout()
-        doc.figure(fig, "cook-table4.png", "time against n over the helices, with linear fits")
+        finish_figure(doc, fig, ax, "cells n (helix)", f"seconds per frame ({w}x{h})", "SXMPVO vs MPVONC by mesh size (fits dotted)",
+                      "cook-table4.png", "time against n over the helices, with linear fits")
 
 
 # --- Tables 2 and 5 ---------------------------------------------------------------------------
@@ -256,12 +258,8 @@ def table2_5(records, paper, doc):
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     for row, times in series:
         ax.plot([w * h for w, h in sizes], times, "o-", label=row)
-    ax.set_xlabel("image size (pixels)")
-    ax.set_ylabel("SXMPVO seconds per frame")
-    ax.set_title("SXMPVO time against image size")
-    finish_axes(ax)
-    fig.tight_layout()
-    doc.figure(fig, "cook-table2-5.png", "SXMPVO time against image size")
+    finish_figure(doc, fig, ax, "image size (pixels)", "SXMPVO seconds per frame", "SXMPVO time against image size",
+                  "cook-table2-5.png", "SXMPVO time against image size")
 
 
 # --- Table 6 ----------------------------------------------------------------------------------
@@ -334,12 +332,8 @@ def fig11(records, paper, doc):
                     label="fit: %.3g us/pixel entry, r$^2$=%.3f" % (f["slope"] * 1e6, f["r2"]))
         for p in pts[::4]:
             ax.annotate("%d gaps" % p[0], (p[1], p[2]), fontsize=7)
-        ax.set_xlabel("projected exterior-face area a (pixels)")
-        ax.set_ylabel(f"seconds per frame ({w}x{h})")
-        ax.set_title("Time against exterior-face area (gap series)")
-        finish_axes(ax)
-        fig.tight_layout()
-        doc.figure(fig, "cook-fig11.png", "SXMPVO and MPVONC time against a, with the linear fit")
+        finish_figure(doc, fig, ax, "projected exterior-face area a (pixels)", f"seconds per frame ({w}x{h})", "Time against exterior-face area (gap series)",
+                      "cook-fig11.png", "SXMPVO and MPVONC time against a, with the linear fit")
 
 
 # --- Fig. 8 -----------------------------------------------------------------------------------
