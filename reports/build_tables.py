@@ -19,6 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from vobtables import Doc, load_records  # noqa: E402
 from vobtables.summary import write_summary  # noqa: E402
+from vobtables.conditions import conditions  # noqa: E402
 
 
 def load_paper(paper):
@@ -58,6 +59,7 @@ def main():
         if build is None:
             sys.exit(f"tables: reports/papers/{paper}.py has no table for '{name}'")
         doc = Doc(name, name, context=rs[0].get("context"), out_dir=args.dir)
+        doc.conditions = conditions(rs, numbers)
         build(rs, numbers, doc)
         print(f"tables: wrote {doc.write()}", file=sys.stderr)
         built.append((paper, doc))

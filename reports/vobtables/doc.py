@@ -51,6 +51,7 @@ class Doc:
     def __init__(self, name, title, intro="", context=None, out_dir="."):
         self.name, self.title, self.intro, self.context = name, title, intro, context
         self.out_dir = out_dir
+        self.conditions = ""  # machines, threads, repeats and warm-up, stand-ins (vobtables.conditions)
         self.tables, self.claims, self.figures = [], [], []
 
     def table(self, title, columns, notes=""):
@@ -82,7 +83,7 @@ class Doc:
 
     def to_json(self):
         return {"reproduction": self.name, "title": self.title, "intro": self.intro,
-                "context": self.context,
+                "conditions": self.conditions, "context": self.context,
                 "tables": [{"title": t.title, "columns": t.columns,
                             "rows": [dict(zip(t.columns, r)) for r in t.rows], "notes": t.notes}
                            for t in self.tables],
@@ -92,6 +93,8 @@ class Doc:
         out = [f"# {self.title}", ""]
         if self.intro:
             out += [self.intro, ""]
+        if self.conditions:
+            out += ["**Conditions.** " + self.conditions, ""]
         for t in self.tables:
             out += [f"## {t.title}", "", "| " + " | ".join(t.columns) + " |",
                     "|" + "---|" * len(t.columns)]
@@ -122,6 +125,8 @@ class Doc:
                f"<h1>{e(self.title)}</h1>"]
         if self.intro:
             out.append(f"<p>{e(self.intro)}</p>")
+        if self.conditions:
+            out.append(f"<p><b>Conditions.</b> {e(self.conditions)}</p>")
         for t in self.tables:
             out.append(f"<h2>{e(t.title)}</h2><table><tr>" + "".join(f"<th>{e(c)}</th>" for c in t.columns) + "</tr>")
             for r in t.rows:
