@@ -21,6 +21,11 @@ SORTS = [("shell", "shellsort"), ("heap", "heapsort (std::make_heap + sort_heap)
          ("radix", "LSD radix sort (4 x 8 bits)")]
 
 
+# The colours of havs::k_needed_image (algorithms/havs/havs_frame.cpp), as in the paper's Fig. 6.
+KMAP_KEY = [("k <= 2", (0.1, 0.8, 0.1)), ("2 < k <= 6", (1.0, 0.8, 0.1)), ("k > 6", (1.0, 0.1, 0.1)),
+            ("no fragment", (0.0, 0.0, 0.0))]
+
+
 def command(records):
     """The command that made these records, with its scale."""
     r = records[0] if records else {}
@@ -169,7 +174,7 @@ def table2(records, paper, doc):
         kmap = image(r, "kmap")
         if kmap:
             doc.image(kmap, f"{r.get('row')}: k needed, view {m.get(r, 'result.worst_view')} "
-                            "(the view with most k > 2 pixels)")
+                            "(the view with most k > 2 pixels)", key=KMAP_KEY)
     # Table 2: pixels needing k > 6 are few: at most 1,683 of 7,223,435 fragments (torso) in the paper.
     shares = {k: P.value(v["k_gt_6"]) / P.value(v["fragments"]) for k, v in rows.items()}
     worst_p = max(shares, key=shares.get)

@@ -153,6 +153,16 @@ def fig2(records, paper, doc):
               holds=None if not count else best > over)
 
 
+def layer_colour(layer):
+    """The colour of a layer in the probe's images (layer_colour in
+    algorithms/stencil/layer_images_probe.cpp): hues around the wheel, layer 0 red."""
+    h = (layer * 0.13) % 1.0 * 6.0
+    i, f = int(h), h - int(h)
+    q = 1 - f
+    r, g, b = [(1, f, 0), (q, 1, 0), (0, 1, f), (0, q, 1), (f, 0, 1), (1, 0, q)][i % 6]
+    return tuple(0.15 + 0.85 * c for c in (r, g, b))
+
+
 # --- Fig. 3 -------------------------------------------------------------------------------
 
 def fig3(records, paper, doc):
@@ -180,8 +190,10 @@ def fig3(records, paper, doc):
                f"violating pixels; {int(res['unclassified_visible'])} unclassified triangles.")
     captions = {"a-layers": "(a) triangles coloured by layer, from the view",
                 "b-other-side": "(b) the same colours from the other side"}
+    key = [(f"layer {l}", layer_colour(l)) for l in range(layers)] + [("unclassified", (1.0, 1.0, 1.0))]
     for name in sorted(images):
-        doc.image(images[name], captions.get(name, name.replace("layer-", "layer ")))
+        doc.image(images[name], captions.get(name, name.replace("layer-", "layer ")),
+                  key=key if name in captions else None)
     doc.claim(f"the 2D footprint of the layers gets smaller and smaller: every layer's footprint is at most the "
               f"previous one's ({decreasing} of {max(layers - 1, 0)} steps)",
               ours=decreasing, paper="the 2D footprint of the layers get smaller and smaller (Fig. 3)",

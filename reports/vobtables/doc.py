@@ -29,6 +29,42 @@ def fmt(v):
     return str(v)
 
 
+def column_formats(rows, ncols):
+    """One format per column, so a column's numbers share their precision: fixed decimals
+    giving 3 significant digits to the column's smallest non-zero float (at most 6), or 3
+    significant digits per cell when the floats span more than 4 decades."""
+    out = []
+    for i in range(ncols):
+        fl = [abs(r[i]) for r in rows if isinstance(r[i], float) and math.isfinite(r[i])]
+        frac = [v for v in fl if v != math.floor(v)]
+        nz = [v for v in fl if v > 0]
+        if not frac or not nz:
+            out.append(None)
+        elif max(nz) / min(nz) > 1e4:
+            out.append("g")
+        else:
+            out.append(max(0, min(6, 2 - math.floor(math.log10(min(nz))))))
+    return out
+
+
+def cell(v, f):
+    """A cell in its column's format (see column_formats)."""
+    if f is None or not isinstance(v, float) or not math.isfinite(v):
+        return fmt(v)
+    return f"{v:.3g}" if f == "g" else f"{v:.{f}f}"
+
+
+def _wrap(text, width):
+    words, lines, cur = text.split(), [], ""
+    for wd in words:
+        if cur and len(cur) + 1 + len(wd) > width:
+            lines.append(cur)
+            cur = wd
+        else:
+            cur = f"{cur} {wd}".strip()
+    return lines + ([cur] if cur else [])
+
+
 def _clean(v):
     """JSON-safe: NaN and infinities become null."""
     if isinstance(v, float) and not math.isfinite(v):
@@ -75,9 +111,32 @@ class Doc:
         plt.close(fig)
         self.figures.append({"file": file_name, "caption": caption})
 
-    def image(self, file_name, caption=""):
-        """An image a probe or the runner wrote (path relative to the output folder)."""
-        self.figures.append({"file": file_name, "caption": caption})
+    def image(self, file_name, caption="", key=None):
+        """An image a probe or the runner wrote (path relative to the output folder), shown as
+        a figure with the caption as its title inside the image and, with `key` (a list of
+        (label, (r, g, b)) in [0, 1]), a colour key. Without the file, the caption alone."""
+        src = os.path.join(self.out_dir, file_name)
+        if not os.path.exists(src):
+            self.figures.append({"file": file_name, "caption": caption})
+            return
+        import matplotlib.image as mpimg
+        from matplotlib.patches import Patch
+        pic = mpimg.imread(src)
+        h, w = pic.shape[:2]
+        scale = 5.0 / max(w, h)
+        fig, ax = plt.subplots(figsize=(max(w * scale, 3.0) + (2.2 if key else 0), h * scale + 0.7))
+        ax.imshow(pic, interpolation="nearest")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_xlabel(f"{w} x {h} pixels", fontsize=8)
+        ax.set_title("\n".join(_wrap(caption, 60)), fontsize=8)
+        if key:
+            ax.legend(handles=[Patch(facecolor=c, edgecolor="k", label=lab) for lab, c in key], fontsize=7,
+                      loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, title="colour key",
+                      title_fontsize=7)
+        fig.tight_layout()
+        stem = os.path.splitext(file_name)[0].replace(os.sep, "-")
+        self.figure(fig, os.path.join("labelled", stem + ".png"), caption)
 
     # --- writing ---------------------------------------------------------------------------
 
@@ -98,7 +157,8 @@ class Doc:
         for t in self.tables:
             out += [f"## {t.title}", "", "| " + " | ".join(t.columns) + " |",
                     "|" + "---|" * len(t.columns)]
-            out += ["| " + " | ".join(fmt(c) for c in r) + " |" for r in t.rows]
+            fs = column_formats(t.rows, len(t.columns))
+            out += ["| " + " | ".join(cell(c, f) for c, f in zip(r, fs)) + " |" for r in t.rows]
             if t.notes:
                 out += ["", t.notes]
             out.append("")
@@ -129,8 +189,9 @@ class Doc:
             out.append(f"<p><b>Conditions.</b> {e(self.conditions)}</p>")
         for t in self.tables:
             out.append(f"<h2>{e(t.title)}</h2><table><tr>" + "".join(f"<th>{e(c)}</th>" for c in t.columns) + "</tr>")
+            fs = column_formats(t.rows, len(t.columns))
             for r in t.rows:
-                out.append("<tr>" + "".join(f"<td>{e(fmt(c))}</td>" for c in r) + "</tr>")
+                out.append("<tr>" + "".join(f"<td>{e(cell(c, f))}</td>" for c, f in zip(r, fs)) + "</tr>")
             out.append("</table>")
             if t.notes:
                 out.append(f"<p>{e(t.notes)}</p>")
