@@ -127,6 +127,21 @@ def table3(records, paper, doc):
                      ["data set", "n", "I", "II", "III", "IV", "total", "oracle (views violating)"],
                      size_note(records, "helix 1.0M, 2.37M, 3.57M and 4.5M (the 4.5M helix needs about 4 GB)"))
     paper_table(doc, paper["table3"], f"Paper, Table 3 ({machine(paper, 'onyx')})", "Image sizes of Table 1.")
+    shares = doc.table("Share of each phase in the total (%): ours, then the paper's (computed from Table 3)",
+                       ["data set", "I %", "II %", "III %", "IV %", "largest phase"],
+                       decimals={c: 1 for c in ("I %", "II %", "III %", "IV %")})
+    for row, recs in by_row(records):
+        ph = [m.mean(recs, m.phase(p)) for p in PHASES]
+        tot = sum(v for v in ph if v is not None) or None
+        pc = [None if v is None or not tot else 100 * v / tot for v in ph]
+        big = max(range(4), key=lambda i: pc[i] or 0)
+        shares.row(f"ours: {row}", *pc, ["I", "II", "III", "IV"][big])
+    p3 = paper["table3"]
+    for j, col in enumerate(p3["columns"][1:], start=1):
+        vals = [P.value(r[j]) for r in p3["rows"][:4]]
+        tot = P.value(p3["rows"][4][j])
+        pc = [100 * v / tot for v in vals]
+        shares.row(f"paper (computed): {col}", *pc, ["I", "II", "III", "IV"][max(range(4), key=lambda i: pc[i])])
     counts = doc.table("Ours: PN relations and A-buffer",
                        ["data set", "a (entries)", "head insertion rate", "PN pairs", "PN relations",
                         "found at head", "moved to front", "tie reorders", "unpaired"])

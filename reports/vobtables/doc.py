@@ -73,8 +73,13 @@ def _clean(v):
 
 
 class Table:
-    def __init__(self, title, columns, notes=""):
+    def __init__(self, title, columns, notes="", decimals=None):
         self.title, self.columns, self.notes, self.rows = title, list(columns), notes, []
+        self.decimals = dict(decimals or {})  # column -> fixed decimals, instead of column_formats' choice
+
+    def formats(self):
+        auto = column_formats(self.rows, len(self.columns))
+        return [self.decimals.get(c, f) for c, f in zip(self.columns, auto)]
 
     def row(self, *cells):
         if len(cells) != len(self.columns):
@@ -90,8 +95,8 @@ class Doc:
         self.conditions = ""  # machines, threads, repeats and warm-up, stand-ins (vobtables.conditions)
         self.tables, self.claims, self.figures = [], [], []
 
-    def table(self, title, columns, notes=""):
-        t = Table(title, columns, notes)
+    def table(self, title, columns, notes="", decimals=None):
+        t = Table(title, columns, notes, decimals)
         self.tables.append(t)
         return t
 
@@ -157,7 +162,7 @@ class Doc:
         for t in self.tables:
             out += [f"## {t.title}", "", "| " + " | ".join(t.columns) + " |",
                     "|" + "---|" * len(t.columns)]
-            fs = column_formats(t.rows, len(t.columns))
+            fs = t.formats()
             out += ["| " + " | ".join(cell(c, f) for c, f in zip(r, fs)) + " |" for r in t.rows]
             if t.notes:
                 out += ["", t.notes]
@@ -189,7 +194,7 @@ class Doc:
             out.append(f"<p><b>Conditions.</b> {e(self.conditions)}</p>")
         for t in self.tables:
             out.append(f"<h2>{e(t.title)}</h2><table><tr>" + "".join(f"<th>{e(c)}</th>" for c in t.columns) + "</tr>")
-            fs = column_formats(t.rows, len(t.columns))
+            fs = t.formats()
             for r in t.rows:
                 out.append("<tr>" + "".join(f"<td>{e(cell(c, f))}</td>" for c, f in zip(r, fs)) + "</tr>")
             out.append("</table>")
