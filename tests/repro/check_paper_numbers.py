@@ -72,8 +72,7 @@ def main():
             print(f"note: {txt_path} missing: {paper}.json's numbers are checked against the tables only")
         text = open(txt_path).read() if os.path.exists(txt_path) else None
         text = None if text is None else re.sub(r"(?<=\d),(?=\d{3})", "", text)
-        mine = [d for d in docs.values() if any(
-            r == d["reproduction"] for r in docs) and paper_of(d) == paper]
+        mine = [d for d in docs.values() if PAPER_OF.get(d["reproduction"]) == paper]
         cells, prose = set(), []
         for d in mine:
             for t in d["tables"]:
@@ -121,11 +120,7 @@ def main():
     sys.exit(1 if errors or not docs else 0)
 
 
-def paper_of(doc):
-    return PAPER_OF.get(doc["reproduction"])
-
-
-PAPER_OF = {}
+PAPER_OF = {}  # reproduction -> paper, from the reproduction files
 
 
 if __name__ == "__main__":
