@@ -5,8 +5,8 @@ nothing.
 
 usage: build_tables.py DIR [--only NAME]
 
-Without --only, a folder holding records of several reproductions also gets summary.md,
-summary.json and summary.html: every claim of those tables with its verdict and the counts
+Without --only, a folder holding records of several reproductions also gets claims-summary.md,
+.json and .html: every claim of those tables with its verdict and the counts
 (`vobench reproduce all`).
 """
 import argparse

@@ -59,7 +59,7 @@ Command add_reproduce_command(CLI::App& app) {
         if (!rep.paper.empty()) reps.push_back(std::move(rep));
       }
       const int status = reproduce_all(reps, out, *force);
-      if (status == 0) std::cerr << "reproduce all: wrote " << out << "/summary.md\n";
+      if (status == 0) std::cerr << "reproduce all: wrote " << out << "/claims-summary.md\n";
       return exit_status(status);
     }
     const std::string path = find_reproduction(suites_dir, *name);

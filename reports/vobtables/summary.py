@@ -22,7 +22,7 @@ def counts(rows):
 
 
 def write_summary(docs, out_dir, scale):
-    """docs: [(paper, Doc)] in build order; writes summary.md, summary.json, summary.html."""
+    """docs: [(paper, Doc)] in build order; writes claims-summary.md, .json and .html (summary.json is the generic report's)."""
     rows = []
     for paper, doc in docs:
         for c in doc.claims:
@@ -64,10 +64,10 @@ def write_summary(docs, out_dir, scale):
           f"<td>{e(fmt(r['ours']))}</td><td>{e(fmt(r['paper value']))}</td><td>{e(r['criterion'])}</td>"
           f"<td class='{cls[r['verdict']]}'>{r['verdict']}</td></tr>" for r in rows]
     h.append("</table></body></html>")
-    for name, text in (("summary.md", "\n".join(md) + "\n"), ("summary.json", json.dumps(data, indent=1) + "\n"),
-                       ("summary.html", "\n".join(h) + "\n")):
+    for name, text in (("claims-summary.md", "\n".join(md) + "\n"), ("claims-summary.json", json.dumps(data, indent=1) + "\n"),
+                       ("claims-summary.html", "\n".join(h) + "\n")):
         path = os.path.join(out_dir, name)
         with open(path + ".tmp", "w") as f:
             f.write(text)
         os.replace(path + ".tmp", path)
-    return os.path.join(out_dir, "summary.md")
+    return os.path.join(out_dir, "claims-summary.md")

@@ -2,7 +2,7 @@
 """The claims summary from the records alone, without running any reproduction again: the
 records of every reproduction with a paper, as the repro.NAME tests left them in WORK/NAME,
 go into one folder OUT (what `vobench reproduce all --tiny` writes); `vobench report OUT`
-must rebuild every table and summary.md/json/html, whose claims are exactly the claims of
+must rebuild every table and claims-summary.md/json/html, whose claims are exactly the claims of
 the reproductions' documents, with verdicts and counts that agree.
 
 usage: check_summary.py VOBENCH WORK OUT
@@ -44,10 +44,10 @@ def main():
     p = subprocess.run([vobench, "report", out], capture_output=True, text=True)
     if p.returncode != 0:
         fail(f"vobench report {out} exited {p.returncode}:\n{p.stderr[-3000:]}")
-    s = json.load(open(os.path.join(out, "summary.json")))
+    s = json.load(open(os.path.join(out, "claims-summary.json")))
     for ext in ("md", "html"):
-        if not os.path.isfile(os.path.join(out, f"summary.{ext}")):
-            fail(f"summary.{ext} missing")
+        if not os.path.isfile(os.path.join(out, f"claims-summary.{ext}")):
+            fail(f"claims-summary.{ext} missing")
     want = []
     for n in names:
         doc = json.load(open(os.path.join(out, f"{n}.json")))
@@ -66,9 +66,9 @@ def main():
          "not measured": sum(c["holds"] is None for c in s["claims"])}
     if s["counts"] != n:
         fail(f"counts {s['counts']} do not match the claims {n}")
-    md = open(os.path.join(out, "summary.md")).read()
+    md = open(os.path.join(out, "claims-summary.md")).read()
     if f"| all | {n['holds']} | {n['does not hold']} | {n['not measured']} |" not in md:
-        fail("summary.md lacks the counts row")
+        fail("claims-summary.md lacks the counts row")
     print(f"summary: {len(names)} reproductions, {len(got)} claims: {n}")
 
 
