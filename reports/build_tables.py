@@ -4,6 +4,10 @@
 nothing.
 
 usage: build_tables.py DIR [--only NAME]
+
+Without --only, a folder holding records of several reproductions also gets claims-summary.md,
+.json and .html: every claim of those tables with its verdict and the counts
+(`vobench reproduce all`).
 """
 import argparse
 import importlib.util
@@ -14,6 +18,8 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 from vobtables import Doc, load_records  # noqa: E402
+from vobtables.summary import write_summary  # noqa: E402
+from vobtables.conditions import conditions  # noqa: E402
 
 
 def load_paper(paper):
@@ -44,7 +50,7 @@ def main():
         name = r.get("reproduction")
         if name and r.get("paper"):
             by_repro.setdefault((name, r["paper"]), []).append(r)
-    built = 0
+    built = []
     for (name, paper), rs in sorted(by_repro.items()):
         if args.only and name != args.only:
             continue
@@ -53,9 +59,13 @@ def main():
         if build is None:
             sys.exit(f"tables: reports/papers/{paper}.py has no table for '{name}'")
         doc = Doc(name, name, context=rs[0].get("context"), out_dir=args.dir)
+        doc.conditions = conditions(rs, numbers)
         build(rs, numbers, doc)
         print(f"tables: wrote {doc.write()}", file=sys.stderr)
-        built += 1
+        built.append((paper, doc))
+    if not args.only and len(built) > 1:
+        scale = next((r.get("scale") for rs in by_repro.values() for r in rs if r.get("scale")), "default")
+        print(f"tables: wrote {write_summary(built, args.dir, scale)}", file=sys.stderr)
     if args.only and not built:
         sys.exit(f"tables: {path}: no records of reproduction '{args.only}' with a paper")
 

@@ -14,30 +14,13 @@ import os
 import statistics
 import sys
 
-import matplotlib
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vobtables import load_records  # noqa: E402
+
+import matplotlib  # noqa: E402
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-
-def load(paths):
-    recs = []
-    for p in paths:
-        with open(p) as f:
-            for n, raw in enumerate(f, 1):
-                line = raw.strip()
-                if not line:
-                    continue
-                try:
-                    recs.append(json.loads(line))
-                except json.JSONDecodeError as e:
-                    # A last line without its newline was left by a writer killed mid-write;
-                    # the next `vobench run` on the file removes it (harness/bench/results.h).
-                    if not raw.endswith("\n"):
-                        print(f"report: note: {p}: line {n}: incomplete last line skipped", file=sys.stderr)
-                        continue
-                    sys.exit(f"report: {p}: line {n}: not JSON ({e})")
-    return recs
 
 
 def scene_key(r):
@@ -208,7 +191,7 @@ def main():
     ap.add_argument("--include", action="append", default=[], help="Markdown files to put first")
     ap.add_argument("--name", help="also write NAME.md and NAME.json (the rows) for reproduce")
     a = ap.parse_args()
-    recs = load(a.results)
+    recs = [r for p in a.results for r in load_records(p, who="report")]
     if not recs:
         sys.exit("report: no records")
     # Probe records (docs/pipeline.md) feed the paper tables, not this report.

@@ -1,5 +1,7 @@
 // vobench reproduce NAME: run a reproduction file (datasets/suites/**/NAME.json) into
-// reports/out/NAME (or -o DIR) and build its tables (docs/pipeline.md).
+// reports/out/NAME (or -o DIR) and build its tables (docs/pipeline.md). `vobench reproduce
+// all`: every reproduction with a paper into one folder (reports/out/all[-SCALE]), then the
+// summary of every claim.
 #include <csignal>
 #include <filesystem>
 #include <iostream>
@@ -33,7 +35,8 @@ Command add_reproduce_command(CLI::App& app) {
   auto force = std::make_shared<bool>(false);
   auto full = std::make_shared<bool>(false);
   auto tiny = std::make_shared<bool>(false);
-  cmd->add_option("name", *name, "reproduction")->required();
+  cmd->add_option("name", *name, "reproduction, or 'all' (every reproduction with a paper, and the claims summary)")
+      ->required();
   cmd->add_option("-o,--output", *out_dir, "output folder (default reports/out/NAME, NAME-tiny or NAME-full)");
   cmd->add_flag("--force", *force,
                 "start afresh: drop the records (and images) of an earlier run in the output folder; "
@@ -45,13 +48,23 @@ Command add_reproduce_command(CLI::App& app) {
     if (!out_dir->empty() && std::filesystem::exists(*out_dir, ec) && !std::filesystem::is_directory(*out_dir, ec))
       throw InputError("--output", "'" + *out_dir + "'", "exists and is not a folder");
     const std::string suites_dir = std::string(VOB_SOURCE_DIR) + "/datasets/suites";
-    const std::string path = find_reproduction(suites_dir, *name);
-    if (path.empty()) unknown_reproduction(*name, suites_dir);
     const std::string scale = *tiny ? "tiny" : *full ? "full" : "default";
-    const Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
     std::string out = *out_dir;
     if (out.empty())
       out = std::string(VOB_SOURCE_DIR) + "/reports/out/" + *name + (scale == "default" ? "" : "-" + scale);
+    if (*name == "all" && find_reproduction(suites_dir, "all").empty()) {
+      std::vector<Reproduction> reps;  // every file validated before any work
+      for (const auto& e : list_reproductions(suites_dir)) {
+        Reproduction rep = load_reproduction(e.path, scale, suites_dir);
+        if (!rep.paper.empty()) reps.push_back(std::move(rep));
+      }
+      const int status = reproduce_all(reps, out, *force);
+      if (status == 0) std::cerr << "reproduce all: wrote " << out << "/claims-summary.md\n";
+      return exit_status(status);
+    }
+    const std::string path = find_reproduction(suites_dir, *name);
+    if (path.empty()) unknown_reproduction(*name, suites_dir);
+    const Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
     const int status = reproduce(rep, out, *force);
     if (status == 0) std::cerr << "reproduce " << *name << ": wrote " << out << "/" << *name << ".md\n";
     return exit_status(status);

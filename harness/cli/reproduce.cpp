@@ -1,6 +1,7 @@
 #include "harness/cli/reproduce.h"
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -75,6 +76,25 @@ int reproduce(const Reproduction& rep, const std::string& out_dir, bool force) {
   if (status != 0) return status;
   if (!rep.paper.empty()) return run_python_script("build_tables.py", {out_dir, "--only", rep.name});
   return run_report({results_of(out_dir)}, out_dir, rep.title, rep.name);
+}
+
+int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force) {
+  for (const Reproduction& rep : reps)
+    if (!force) check_scale_of_folder(rep, results_of(out_dir));
+  int first_failure = 0;
+  bool drop = force;
+  for (const Reproduction& rep : reps) {
+    std::cerr << "reproduce all: " << rep.name << "\n";
+    const int status = reproduce(rep, out_dir, drop);
+    drop = false;
+    if (status == StopSignals::exit_code(SIGINT) || status == StopSignals::exit_code(SIGTERM)) return status;
+    if (status != 0) {
+      std::cerr << "reproduce all: " << rep.name << " failed (exit " << status << "); going on\n";
+      if (first_failure == 0) first_failure = status;
+    }
+  }
+  const int summary = run_python_script("build_tables.py", {out_dir});  // every table and the summary
+  return first_failure != 0 ? first_failure : summary;
 }
 
 int report_folder(const std::string& dir, const std::string& suites_dir) {

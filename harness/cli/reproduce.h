@@ -20,6 +20,14 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
 // this reproduction's records at another scale. Returns the exit status.
 int reproduce(const Reproduction& rep, const std::string& out_dir, bool force);
 
+// `vobench reproduce all`: every reproduction with a paper, validated first, run in name
+// order into the one folder out_dir/results.jsonl (record keys carry the reproduction), each
+// with its tables; then build_tables.py out_dir, which also writes the claims summary
+// (claims-summary.md / .json / .html). `force` drops the folder's records once, before the first.
+// A reproduction that fails is reported and the others still run; a stop signal ends the
+// run. Returns the exit status (the first failure's, or 128 + signal).
+int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force);
+
 // Every table of every reproduction whose records are in DIR/results.jsonl, and the
 // generic report of its orderer records (NAME.md too when they belong to one reproduction
 // without a paper). Returns the exit status.

@@ -29,6 +29,42 @@ def fmt(v):
     return str(v)
 
 
+def column_formats(rows, ncols):
+    """One format per column, so a column's numbers share their precision: fixed decimals
+    giving 3 significant digits to the column's smallest non-zero float (at most 6), or 3
+    significant digits per cell when the floats span more than 4 decades."""
+    out = []
+    for i in range(ncols):
+        fl = [abs(r[i]) for r in rows if isinstance(r[i], float) and math.isfinite(r[i])]
+        frac = [v for v in fl if v != math.floor(v)]
+        nz = [v for v in fl if v > 0]
+        if not frac or not nz:
+            out.append(None)
+        elif max(nz) / min(nz) > 1e4:
+            out.append("g")
+        else:
+            out.append(max(0, min(6, 2 - math.floor(math.log10(min(nz))))))
+    return out
+
+
+def cell(v, f):
+    """A cell in its column's format (see column_formats)."""
+    if f is None or not isinstance(v, float) or not math.isfinite(v):
+        return fmt(v)
+    return f"{v:.3g}" if f == "g" else f"{v:.{f}f}"
+
+
+def _wrap(text, width):
+    words, lines, cur = text.split(), [], ""
+    for wd in words:
+        if cur and len(cur) + 1 + len(wd) > width:
+            lines.append(cur)
+            cur = wd
+        else:
+            cur = f"{cur} {wd}".strip()
+    return lines + ([cur] if cur else [])
+
+
 def _clean(v):
     """JSON-safe: NaN and infinities become null."""
     if isinstance(v, float) and not math.isfinite(v):
@@ -37,8 +73,13 @@ def _clean(v):
 
 
 class Table:
-    def __init__(self, title, columns, notes=""):
+    def __init__(self, title, columns, notes="", decimals=None):
         self.title, self.columns, self.notes, self.rows = title, list(columns), notes, []
+        self.decimals = dict(decimals or {})  # column -> fixed decimals, instead of column_formats' choice
+
+    def formats(self):
+        auto = column_formats(self.rows, len(self.columns))
+        return [self.decimals.get(c, f) for c, f in zip(self.columns, auto)]
 
     def row(self, *cells):
         if len(cells) != len(self.columns):
@@ -51,10 +92,11 @@ class Doc:
     def __init__(self, name, title, intro="", context=None, out_dir="."):
         self.name, self.title, self.intro, self.context = name, title, intro, context
         self.out_dir = out_dir
+        self.conditions = ""  # machines, threads, repeats and warm-up, stand-ins (vobtables.conditions)
         self.tables, self.claims, self.figures = [], [], []
 
-    def table(self, title, columns, notes=""):
-        t = Table(title, columns, notes)
+    def table(self, title, columns, notes="", decimals=None):
+        t = Table(title, columns, notes, decimals)
         self.tables.append(t)
         return t
 
@@ -74,15 +116,38 @@ class Doc:
         plt.close(fig)
         self.figures.append({"file": file_name, "caption": caption})
 
-    def image(self, file_name, caption=""):
-        """An image a probe or the runner wrote (path relative to the output folder)."""
-        self.figures.append({"file": file_name, "caption": caption})
+    def image(self, file_name, caption="", key=None):
+        """An image a probe or the runner wrote (path relative to the output folder), shown as
+        a figure with the caption as its title inside the image and, with `key` (a list of
+        (label, (r, g, b)) in [0, 1]), a colour key. Without the file, the caption alone."""
+        src = os.path.join(self.out_dir, file_name)
+        if not os.path.exists(src):
+            self.figures.append({"file": file_name, "caption": caption})
+            return
+        import matplotlib.image as mpimg
+        from matplotlib.patches import Patch
+        pic = mpimg.imread(src)
+        h, w = pic.shape[:2]
+        scale = 5.0 / max(w, h)
+        fig, ax = plt.subplots(figsize=(max(w * scale, 3.0) + (2.2 if key else 0), h * scale + 0.7))
+        ax.imshow(pic, interpolation="nearest")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_xlabel(f"{w} x {h} pixels", fontsize=8)
+        ax.set_title("\n".join(_wrap(caption, 60)), fontsize=8)
+        if key:
+            ax.legend(handles=[Patch(facecolor=c, edgecolor="k", label=lab) for lab, c in key], fontsize=7,
+                      loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, title="colour key",
+                      title_fontsize=7)
+        fig.tight_layout()
+        stem = os.path.splitext(file_name)[0].replace(os.sep, "-")
+        self.figure(fig, os.path.join("labelled", stem + ".png"), caption)
 
     # --- writing ---------------------------------------------------------------------------
 
     def to_json(self):
         return {"reproduction": self.name, "title": self.title, "intro": self.intro,
-                "context": self.context,
+                "conditions": self.conditions, "context": self.context,
                 "tables": [{"title": t.title, "columns": t.columns,
                             "rows": [dict(zip(t.columns, r)) for r in t.rows], "notes": t.notes}
                            for t in self.tables],
@@ -92,10 +157,13 @@ class Doc:
         out = [f"# {self.title}", ""]
         if self.intro:
             out += [self.intro, ""]
+        if self.conditions:
+            out += ["**Conditions.** " + self.conditions, ""]
         for t in self.tables:
             out += [f"## {t.title}", "", "| " + " | ".join(t.columns) + " |",
                     "|" + "---|" * len(t.columns)]
-            out += ["| " + " | ".join(fmt(c) for c in r) + " |" for r in t.rows]
+            fs = t.formats()
+            out += ["| " + " | ".join(cell(c, f) for c, f in zip(r, fs)) + " |" for r in t.rows]
             if t.notes:
                 out += ["", t.notes]
             out.append("")
@@ -122,10 +190,13 @@ class Doc:
                f"<h1>{e(self.title)}</h1>"]
         if self.intro:
             out.append(f"<p>{e(self.intro)}</p>")
+        if self.conditions:
+            out.append(f"<p><b>Conditions.</b> {e(self.conditions)}</p>")
         for t in self.tables:
             out.append(f"<h2>{e(t.title)}</h2><table><tr>" + "".join(f"<th>{e(c)}</th>" for c in t.columns) + "</tr>")
+            fs = t.formats()
             for r in t.rows:
-                out.append("<tr>" + "".join(f"<td>{e(fmt(c))}</td>" for c in r) + "</tr>")
+                out.append("<tr>" + "".join(f"<td>{e(cell(c, f))}</td>" for c, f in zip(r, fs)) + "</tr>")
             out.append("</table>")
             if t.notes:
                 out.append(f"<p>{e(t.notes)}</p>")

@@ -3,7 +3,8 @@ import json
 import sys
 
 
-def load_records(path):
+def load_records(path, who="tables"):
+    """Every record of one results file; `who` names the caller in messages."""
     recs = []
     with open(path) as f:
         for n, raw in enumerate(f, 1):
@@ -15,7 +16,7 @@ def load_records(path):
             except json.JSONDecodeError as e:
                 # A torn last line (a writer killed mid-write); `vobench run` repairs it.
                 if not raw.endswith("\n"):
-                    print(f"tables: note: {path}: line {n}: incomplete last line skipped", file=sys.stderr)
+                    print(f"{who}: note: {path}: line {n}: incomplete last line skipped", file=sys.stderr)
                     continue
-                sys.exit(f"tables: {path}: line {n}: not JSON ({e})")
+                sys.exit(f"{who}: {path}: line {n}: not JSON ({e})")
     return recs
