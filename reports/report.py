@@ -9,7 +9,6 @@ import argparse
 import collections
 import html
 import json
-import math
 import os
 import statistics
 import sys
