@@ -125,6 +125,19 @@ def table1(records, paper, doc):
     paper_table(doc, paper["table1"], "Paper, Table 1",
                 "Typed in from the paper's Table 1 (image sizes per data set).")
     prow = paper["table1"]["rows"]
+    # Our stand-ins for the paper's helices: helix with `cells` and `faces` set to the paper's n
+    # and b (the suite asks for them); the generator's actual n and b must be within 5%.
+    for name, pn, _, pb, *_ in (r for r in prow if r[0].startswith("helix")):
+        recs = [r for r in records if r.get("dataset_spec", {}).get("name") == "helix" and
+                r["dataset_spec"].get("set", {}).get("cells") == pn and r["dataset_spec"]["set"].get("faces") == pb]
+        dn = db = None
+        if recs:
+            dn, db = recs[0]["n"] / pn - 1, recs[0]["b"] / pb - 1
+        doc.claim(f"our helix for {name} has the paper's n and b (relative differences; "
+                  + ("not run at this scale" if not recs else f"ours n = {recs[0]['n']:,}, b = {recs[0]['b']:,}") + ")",
+                  ours=None if not recs else f"n {dn:+.2%}, b {db:+.2%}", paper=f"n = {pn}, b = {pb}",
+                  criterion="abs(n / paper n - 1) <= 5% and abs(b / paper b - 1) <= 5%",
+                  holds=None if not recs else (abs(dn) <= 0.05 and abs(db) <= 0.05))
     doc.claim("typically b is below n/log2 n, so sorting the exterior faces is O(n) (share of data sets)",
               ours=sum(below) / len(below), paper=sum(r[3] < r[2] for r in prow) / len(prow),
               criterion="ours >= 0.5", holds=sum(below) / len(below) >= 0.5)

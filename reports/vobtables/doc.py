@@ -88,6 +88,11 @@ class Table:
         return self
 
 
+def _md(text):
+    """A Markdown table cell: a literal '|' would end the cell."""
+    return str(text).replace("|", "\\|")
+
+
 class Doc:
     def __init__(self, name, title, intro="", context=None, out_dir="."):
         self.name, self.title, self.intro, self.context = name, title, intro, context
@@ -160,10 +165,10 @@ class Doc:
         if self.conditions:
             out += ["**Conditions.** " + self.conditions, ""]
         for t in self.tables:
-            out += [f"## {t.title}", "", "| " + " | ".join(t.columns) + " |",
+            out += [f"## {t.title}", "", "| " + " | ".join(_md(c) for c in t.columns) + " |",
                     "|" + "---|" * len(t.columns)]
             fs = t.formats()
-            out += ["| " + " | ".join(cell(c, f) for c, f in zip(r, fs)) + " |" for r in t.rows]
+            out += ["| " + " | ".join(_md(cell(c, f)) for c, f in zip(r, fs)) + " |" for r in t.rows]
             if t.notes:
                 out += ["", t.notes]
             out.append("")
@@ -171,7 +176,8 @@ class Doc:
             out += ["## Claims", "", "| claim | holds | ours | paper | criterion |", "|---|---|---|---|---|"]
             for c in self.claims:
                 verdict = "not measured" if c["holds"] is None else ("holds" if c["holds"] else "does not hold")
-                out.append(f"| {c['claim']} | {verdict} | {fmt(c['ours'])} | {fmt(c['paper'])} | {c['criterion']} |")
+                out.append(f"| {_md(c['claim'])} | {verdict} | {_md(fmt(c['ours']))} | {_md(fmt(c['paper']))} | "
+                           f"{_md(c['criterion'])} |")
             out.append("")
         for f in self.figures:
             out += [f"![{f['caption']}]({f['file']})", ""]
