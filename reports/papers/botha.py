@@ -425,6 +425,7 @@ def violations(records, paper, doc):
             ax.set_title(row, fontsize=9)
         axes[0][0].set_ylabel("violating pixels (0 drawn at 0.5)")
         axes[0][0].legend(fontsize=8)
+        fig.suptitle("Botha and Post: oracle violating pixels per view and ordering (perspective close-ups)", fontsize=10)
         fig.tight_layout()
         doc.figure(fig, "botha-violations.png", "violating pixels per view of btf, wbtf, pbtf and ip-pbtf")
 

@@ -307,6 +307,9 @@ def k_tradeoff(records, paper, doc):
             ax.set_ylim(bottom=0)
             ax.set_xlim(left=0)
             ax.legend(fontsize=7)
+        ks = sorted({k for h in curves.values() for k, _, _ in h})
+        fig.suptitle("HAVS: time per frame against ordering error, k = " + ", ".join(map(str, ks)) +
+                     " beside the other orderers", fontsize=10)
         fig.tight_layout()
         doc.figure(fig, "havs-k-tradeoff.png", "per mesh: time per frame against the share of covered "
                    "pixels with an ordering error; HAVS joined in order of k")
