@@ -7,6 +7,7 @@
 #include "harness/bench/suite.h"
 #include "harness/raster/cell_clip.h"
 #include "harness/scene/input_error.h"
+#include "harness/view/fit.h"
 
 namespace vob {
 namespace {
@@ -29,9 +30,11 @@ int64_t tiny_cells(const Scene& s, const Camera& cam) {
 }
 
 nlohmann::json run(Params& params, const ProbeContext& ctx) {
-  // Square images side x side; the camera is the suite's first view with that size (the
-  // view set's cameras depend on the size only through width and height).
+  // side x side pixels: a square image with the suite's first view (the view set's cameras
+  // depend on the size only through width and height), or with `fit` that view's window
+  // fitted to the bounding box at about side^2 pixels, as Cook et al.'s Table 6 sets it.
   const int side = params.get_int("side", 412, 1, kMaxImageSide);
+  const bool fit = params.get_bool("fit", false);
   if (params.dry_run()) return nlohmann::json::object();  // suite validation: parameters only
   if (ctx.scene->kind() != SceneKind::Cells)
     throw InputError(ctx.dataset_label, "sxmpvo-tiny-cells", "needs a cell dataset");
@@ -39,12 +42,16 @@ nlohmann::json run(Params& params, const ProbeContext& ctx) {
   const auto& [view_index, view] = ctx.views.front();
   Camera cam = view;
   cam.width = cam.height = side;
+  if (fit) cam = fit_window_to_box(cam, ctx.scene->bounds(), int64_t(side) * side);
   const int64_t tiny = tiny_cells(*ctx.scene, cam);
   if (ctx.progress)
-    ctx.progress("  " + ctx.dataset_label + " at " + std::to_string(side) + "x" + std::to_string(side) +
-                 ": " + std::to_string(tiny) + " tiny cells");
+    ctx.progress("  " + ctx.dataset_label + " at " + std::to_string(cam.width) + "x" +
+                 std::to_string(cam.height) + ": " + std::to_string(tiny) + " tiny cells");
   return {{"side", side},
-          {"pixels", int64_t(side) * side},
+          {"fit", fit},
+          {"w", cam.width},
+          {"h", cam.height},
+          {"pixels", int64_t(cam.width) * cam.height},
           {"view_index", view_index},
           {"cells", ctx.scene->mesh().num_cells()},
           {"tiny_cells", tiny}};
@@ -54,7 +61,7 @@ nlohmann::json run(Params& params, const ProbeContext& ctx) {
 
 ProbeInfo sxmpvo_tiny_cells_probe_info() {
   return {"sxmpvo-tiny-cells",
-          "cells with no ray segment at any pixel centre (Cook et al. Table 6), view 0 at side x side",
+          "cells with no ray segment at any pixel centre (Cook et al. Table 6), the first view at side x side (fit: fitted to the bounding box at side^2 pixels)",
           true, run};
 }
 

@@ -10,97 +10,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from vobtables import metrics as m  # noqa: E402
 from vobtables import paper as P  # noqa: E402
 from vobtables import images as img  # noqa: E402
-
-PHASES = ["I create partial order", "II sort exterior faces", "III scan faces and add dependencies", "IV DFS"]
-# Square images of about the paper's pixel counts (Tables 2, 5 and 6).
-SIZE_NAMES = {412: "170k", 592: "350k", 837: "700k", 1025: "1.05M", 1414: "2M"}
-MIB = 1024.0 * 1024.0
-
-
-# --- rows and helpers -----------------------------------------------------------------------
-
-def label(r):
-    """The C++ reproductions' row labels, from the dataset recipe."""
-    spec = r.get("dataset_spec") or {}
-    name, s = spec.get("name"), spec.get("set") or {}
-    if name == "helix":
-        return "helix %.3gM" % (float(s["cells"]) / 1e6)
-    if name == "gap":
-        paper_size = (int(s.get("nx", 50)), int(s.get("ny", 50)), int(s.get("nz", 100))) == (50, 50, 100)
-        return "gap %d" % int(s.get("gaps", 0)) + ("" if paper_size else " (%dk)" % round(r["n"] / 1000))
-    if name == "zoo":
-        scale = int(s.get("scale", 1))
-        return "zoo" if scale == 1 else "zoo x%d" % scale
-    return r.get("row") or r.get("dataset")
-
-
-def by_row(records):
-    return m.group(records, label)
-
-
-def scale_of(records):
-    return records[0].get("scale", "default") if records else "default"
-
-
-def command(name, records):
-    sc = scale_of(records)
-    return f"`vobench reproduce {name}" + {"full": " --full", "tiny": " --tiny"}.get(sc, "") + "`"
-
-
-def size_note(records, opt_in):
-    sc = scale_of(records)
-    if sc == "full":
-        return "Run with --full: the paper's sizes."
-    if sc == "tiny":
-        return "Tiny scale (--tiny, the CTest check): sizes far below the paper's; the numbers only show the table builds."
-    return "Default sizes; --full adds " + opt_in + "."
-
-
-def fitted(records):
-    """Records whose windows were fitted to the bounding box (suite "fit": the paper's rule)."""
-    return bool(records) and all("|fit" in r["key"] for r in records)
-
-
-def window_text(records):
-    """The image size of a set of records: W x H, or the fitted windows' pixel counts."""
-    if not fitted(records):
-        return "%dx%d" % (records[0]["w"], records[0]["h"])
-    px = sorted({r["w"] * r["h"] for r in records})
-    return ("windows fitted to the bounding box, %s pixels" %
-            ("%d" % px[0] if len(px) == 1 else "%d to %d" % (px[0], px[-1])))
-
-
-def views_violating(recs):
-    """Views whose order the oracle rejects (records without the oracle count as none)."""
-    return sum(m.values(recs, m.failing))
-
-
-def mb(v):
-    return None if v is None else v / MIB
-
-
-def paper_table(doc, p, title, notes=None):
-    t = doc.table(title, p["columns"], notes if notes is not None else p.get("note", ""))
-    for row in p["rows"]:
-        t.row(*row)
-    return t
-
-
-def machine(paper, key):
-    return paper["machines"][key]
-
-
-def finish_figure(doc, fig, ax, xlabel, ylabel, title, file_name, caption):
-    """Labels, title, axes from zero, grid and legend; then the figure is saved beside the document."""
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.set_title(title)
-    ax.set_ylim(bottom=0)
-    ax.set_xlim(left=0)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    doc.figure(fig, file_name, caption)
+from papers.cook_common import (PHASES, at_size, by_row, command, finish_figure, fitted, label, machine, mb,  # noqa: E402,F401
+                                paper_table, size_entry, size_name, size_note, views_violating, window_text)
 
 
 # --- Table 1 ----------------------------------------------------------------------------------
@@ -144,10 +55,11 @@ def table1(records, paper, doc):
 
 def table3(records, paper, doc):
     doc.title = "Cook et al. Table 3: SXMPVO's four phases"
-    w, h = records[0]["w"], records[0]["h"]
     nviews = len({r["view_index"] for r in records})
-    doc.intro = command("cook-table3", records) + f": sxmpvo on helices and real meshes, {nviews} views at {w}x{h}."
-    ours = doc.table(f"Ours: seconds per frame at {w}x{h} (mean of {nviews} views, median of {records[0]['repeats']} runs)",
+    win = window_text(records)
+    doc.intro = (command("cook-table3", records) + f": sxmpvo on helices with Table 1's n and b and on real meshes, "
+                 f"{nviews} views, {win} (Table 1's w*h per data set).")
+    ours = doc.table(f"Ours: seconds per frame, {win} (mean of {nviews} views, median of {records[0]['repeats']} runs)",
                      ["data set", "n", "I", "II", "III", "IV", "total", "oracle (views violating)"],
                      size_note(records, "helix 1.0M, 2.37M, 3.57M and 4.5M (the 4.5M helix needs about 4 GB)"))
     paper_table(doc, paper["table3"], f"Paper, Table 3 ({machine(paper, 'onyx')})", "Image sizes of Table 1.")
@@ -289,25 +201,21 @@ def min_view_ratio(records):
 
 # --- Tables 2 and 5 ---------------------------------------------------------------------------
 
-def size_name(w, h):
-    return SIZE_NAMES.get(w, f"{w}x{h}") if w == h else f"{w}x{h}"
-
-
 def table2_5(records, paper, doc):
     doc.title = "Cook et al. Tables 2 and 5: SXMPVO time against image size"
     doc.intro = command("cook-table2-5", records)
-    sizes = sorted({(r["w"], r["h"]) for r in records}, key=lambda s: s[0] * s[1])
+    sizes = sorted({size_entry(r) for r in records}, key=lambda s: s[0] * s[1])
     nviews = len({r["view_index"] for r in records})
     ours = doc.table(f"Ours: SXMPVO seconds per frame (mean of {nviews} views; phase III in brackets)",
                      ["data set", "n"] + [size_name(*s) for s in sizes] + ["oracle (views violating)"])
-    checked = sorted({(r["w"], r["h"]) for r in records if "oracle" in r}, key=lambda s: s[0] * s[1])
+    checked = sorted({size_entry(r) for r in records if "oracle" in r}, key=lambda s: s[0] * s[1])
     ours.notes = (size_note(records, "the 1.485M helix (default 450k)") + " The oracle checks every view up to "
                   + (size_name(*checked[-1]) if checked else "no size") + " pixels.")
     series, growing = [], []
     for row, recs in by_row(records):
         cells, times = [], []
         for w, h in sizes:
-            at = m.select(recs, w=w, h=h)
+            at = at_size(recs, (w, h))
             tot, ph3 = m.mean(at, m.frame_seconds), m.mean(at, m.phase(PHASES[2]))
             cells.append("-" if tot is None else "%.3f (%.3f)" % (tot, ph3))
             times.append(tot)
@@ -318,7 +226,8 @@ def table2_5(records, paper, doc):
     p2 = paper["table2"]
     paper_table(doc, p2, f"Paper, Table 2 (SXMPVO on the {machine(paper, 'onyx')}; BSP-XMPVO on a 333 MHz PowerPC)", "")
     paper_table(doc, paper["table5"], f"Paper, Table 5 ({machine(paper, 'p4')})",
-                "Window size matched to the data set's bounding box; ours are square.")
+                "Window size matched to the data set's bounding box; " +
+                ("ours too, at each column's pixel count." if fitted(records) else "ours are square."))
     doc.claim("SXMPVO time grows with image size (data sets slower at the largest size than at the smallest)",
               ours=sum(growing), paper="larger in every row of Tables 2 and 5",
               criterion=f"ours == {len(growing)} (every data set measured at every size)",
@@ -326,7 +235,7 @@ def table2_5(records, paper, doc):
     shares = []
     for row, recs in by_row(records):
         lo_s, hi_s = sizes[0], sizes[-1]
-        a_, b_ = m.select(recs, w=lo_s[0], h=lo_s[1]), m.select(recs, w=hi_s[0], h=hi_s[1])
+        a_, b_ = at_size(recs, lo_s), at_size(recs, hi_s)
         dt = None if not a_ or not b_ else m.mean(b_, m.frame_seconds) - m.mean(a_, m.frame_seconds)
         d3 = None if not a_ or not b_ else m.mean(b_, m.phase(PHASES[2])) - m.mean(a_, m.phase(PHASES[2]))
         if dt and d3 is not None and len(sizes) > 1:
@@ -357,8 +266,10 @@ def table6(records, paper, doc):
     t = doc.table(f"Ours: tiny cells (no pixel centre), view {view} of 14",
                   ["data set", "n"] + [size_name(s, s) for s in sides])
     t.notes = (size_note(records, "the 1.485M helix and 1.5M gap mesh") +
-               " Square images; the whole bounding sphere is in view, so the mesh covers a smaller share of the "
-               "image than the paper's windows fitted to the bounding box.")
+               (" Windows fitted to the bounding box at each column's pixel count, as the paper's."
+                if all(m.get(r, "result.fit") for r in records) else
+                " Square images; the whole bounding sphere is in view, so the mesh covers a smaller share of the "
+                "image than the paper's windows fitted to the bounding box."))
     helix_tiny, shrinking = [], []
     for row, recs in by_row(records):
         counts = [m.get((m.select(recs, **{"result.side": s}) or [{}])[0], "result.tiny_cells") for s in sides]
