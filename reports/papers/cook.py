@@ -10,7 +10,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from vobtables import metrics as m  # noqa: E402
 from vobtables import paper as P  # noqa: E402
 from vobtables import images as img  # noqa: E402
-from papers.cook_common import (PHASES, at_size, by_row, command, finish_figure, fitted, label, machine, mb,  # noqa: E402,F401
+from papers.cook_common import (PHASES, at_size, by_row, command, finish_figure, fitted, machine, mb,  # noqa: E402
                                 paper_table, size_entry, size_name, size_note, views_violating, window_text)
 
 

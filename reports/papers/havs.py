@@ -92,7 +92,8 @@ def table1(records, paper, doc):
     reps = len(m.get(rec0, "result.samples_s", []) or [])
     ours = {key: ms(m.get(sorts.get(key, {}), "result.median_s")) for key, _ in SORTS}
     radix, quick = ours["radix"], ours["quick"]
-    t = doc.table(f"Table 1: sorting {n:,} floats (with their int32 ids), median of {reps}" if n else
+    t = doc.table(f"Table 1: sorting {n:,} floats (with their int32 ids), median of {reps} after "
+                  f"{rec0.get('warmup')} warm-up sort(s)" if n else
                   "Table 1: sorting floats (with their int32 ids)",
                   ["algorithm", "ours (ms)", "M keys/s", "paper (ms)", "ours / radix", "paper / radix (computed)"],
                   paper["machine_note"] + " Single thread. Keys uniform in [-1000, 1000], seed "
@@ -354,7 +355,7 @@ def gl(records, paper, doc):
     gl_desc = (f"{m.get(ok[0], 'result.gl_version')}, {m.get(ok[0], 'result.gl_renderer')}" if ok else
                f"not available ({m.get(down[0], 'result.reason')})" if down else "not measured")
     doc.intro = (
-        command(records) + " (`--full`: 14 views, median of 3, paper-sized helix and zoo). The same "
+        command(records) + " (`--full`: 14 views, paper-sized helix and zoo). The same "
         "face order (CPU radix sort) goes through the software k-buffer (algorithms/havs/kbuffer.h, TBB over "
         "bands of rows) and through the GL 4.5 core shader k-buffer (algorithms/havs/gl/gl_kbuffer.h: image "
         "load/store, no fragment-shader interlock), drawn in one call (batched, the paper's way) and in "
@@ -362,7 +363,7 @@ def gl(records, paper, doc):
         f"GL: {gl_desc}.")
     reps = recs[0].get("repeats", 1) if recs else 1
     timing = (f"median of {reps} after a warm-up" if reps > 1 else
-              "one timed frame after a warm-up; median of 3 with --full")
+              "one timed frame after a warm-up (the tiny scale only)")
     ts = doc.table("Per mesh and k (sums over the views; time ratio of the sums)",
                    ["mesh (paper's)", "cells", "faces", "k", "sw ms/frame", "gl ms/frame", "gl / sw",
                     "gl serialized ms/frame", "covered pixels", "pixels with other coverage", "gl vs sw differing",
