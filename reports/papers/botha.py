@@ -235,17 +235,17 @@ def interleaving(records, paper, doc):
     for row, col, slower, fslower in claims:
         if col == "Aneurism 256^3":
             doc.claim(f"explicit interleaving of the inner loop gives about 57% slower rendering on {row} (ours: whole "
-                      f"frame, estimated; ordering alone {pct(slower)} slower)", ours=fslower,
+                      f"frame, estimated; ordering alone {pct(slower)} slower)", ours=pct(fslower, 1),
                       paper=paper_slow[col],
-                      criterion=f"{aneurism / 2:.3f} <= ours <= {aneurism * 2:.3f} (the paper's slowdown within a "
-                                "factor of 2; ours = (explicit - implicit ordering time) / implicit whole frame)",
+                      criterion=f"{pct(aneurism / 2, 1)} <= ours <= {pct(aneurism * 2, 1)} (the paper's slowdown within "
+                                "a factor of 2; ours = (explicit - implicit ordering time) / implicit whole frame)",
                       holds=None if fslower is None else aneurism / 2 <= fslower <= aneurism * 2)
         else:
             doc.claim(f"on a denser volume the difference is much smaller and implicit still faster: {row} (ours: "
-                      f"whole frame, estimated; ordering alone {pct(slower)} slower)", ours=fslower,
+                      f"whole frame, estimated; ordering alone {pct(slower)} slower)", ours=pct(fslower, 1),
                       paper="much smaller difference, implicit still faster",
-                      criterion="0 < ours < half the sparse (aneurism stand-in) volume's slowdown "
-                                f"({'-' if sparse_slower is None else f'{sparse_slower:.3f}'})",
+                      criterion="0% < ours < half the sparse (aneurism stand-in) volume's slowdown "
+                                f"({pct(sparse_slower, 1)})",
                       holds=None if fslower is None or sparse_slower is None else 0 < fslower < sparse_slower / 2)
     p = doc.table(f"Paper, {paper['interleaving']['section']}", ["data set", "explicit interleaving of the inner loop"],
                   f"Paper machine: {paper['machine']}.")
