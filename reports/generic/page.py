@@ -6,6 +6,8 @@ into `data-broken-images` on <body> (the browser test reads it)."""
 import html
 import re
 
+from vobtables.doc import BROKEN_IMAGES_SCRIPT
+
 E = html.escape
 
 CSS = """body{font-family:sans-serif;max-width:1150px;margin:1em auto;padding:0 1em;line-height:1.4}
@@ -17,15 +19,7 @@ figcaption{font-size:13px;color:#333}.row{display:flex;gap:8px;flex-wrap:wrap;ma
 nav.toc{background:#f7f7f7;border:1px solid #ddd;padding:.5em 1em;font-size:14px}nav.toc ul{margin:.2em 0}
 .scroll{overflow-x:auto}"""
 
-SCRIPT = """<script>
-window.addEventListener('load', function () {
-  var imgs = document.images, broken = 0;
-  for (var i = 0; i < imgs.length; i++)
-    if (!imgs[i].complete || imgs[i].naturalWidth === 0) broken++;
-  document.body.setAttribute('data-images', imgs.length);
-  document.body.setAttribute('data-broken-images', broken);
-});
-</script>"""
+SCRIPT = BROKEN_IMAGES_SCRIPT
 
 
 def anchor(text):

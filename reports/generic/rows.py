@@ -117,4 +117,10 @@ def summarise(recs):
             b = base.get((row["scene"], row["revision"], ref))
             row["vs_" + ref] = row["seconds"] / b["seconds"] if b and b["seconds"] > 0 else None
         row["verdict"] = verdict_text(row)
+    # One orderer's rows of several revisions side by side.
+    first_scene, first_algo = {}, {}
+    for r in rows:
+        first_scene.setdefault(r["scene"], len(first_scene))
+        first_algo.setdefault(r["algorithm"], len(first_algo))
+    rows.sort(key=lambda r: (first_scene[r["scene"]], first_algo[r["algorithm"]]))
     return rows

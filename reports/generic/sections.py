@@ -92,7 +92,8 @@ def scene_section(page, scene, rows, recs, figs, out_dir, revisions, note=False)
     page.figure(figs[0], "speed against error",
                 "Speed against error: mean violating pixels over checked views against median time per "
                 "frame; marker shape = exactness claim, colour = orderer; grey band = not checked.")
-    page.figure(figs[1], "phases", "Median time per frame split by phase, one colour per phase.")
+    page.figure(figs[1], "phases", "Median time per frame split by phase (top: time; bottom: share of each "
+                "orderer's time), one colour per phase.")
     gallery.add(page, [r for r in recs if scene_key(r) == scene], out_dir, revisions)
 
 
