@@ -180,7 +180,7 @@ def scaling(rows, out):
     for ax, ((family, variant, size), s) in zip(axes[:, 0], sorted(panels.items())):
         for a, pts in sorted(s.items()):
             ax.plot([p[0] for p in pts], [p[1] * f for p in pts], "o-", color=cols[a],
-                    label=f"{a}: slope {slope(pts):.2f}")
+                    label=f"{a}: slope {slope(pts):.2f} ({len(pts)} sizes)")
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("primitives n (log)")
