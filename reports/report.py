@@ -19,7 +19,7 @@ from generic.load import load, revision  # noqa: E402
 from generic.page import Page  # noqa: E402
 from generic.rows import summarise  # noqa: E402
 
-PAGE_SCENES = 6
+PAGE_SCENES = 6  # more scenes: an index page and one page per scene
 
 
 def scene_file(k):
@@ -73,6 +73,8 @@ def build(a):
     else:
         index = Page(a.title)
         front(index)
+        index.heading(2, "Overview")
+        sections.overview(index, scenes, rows)
         index.heading(2, "Scenes")
         index.para(f"{len(scenes)} scenes, one page each (table, figures, images):")
         sections.scene_index(index, scenes, rows, lambda s: scene_file(scenes.index(s)))

@@ -77,9 +77,11 @@ def add(page, recs, html_dir, revisions):
             items = ([exact] if k == 0 else []) + [
                 (link(image_path(r, "order"), html_dir), f"{r['algorithm']}: its order"),
                 (link(image_path(r, "diff"), html_dir), "colour difference")]
+            text = caption(r)
             if "violations" in (r.get("images") or {}):
                 items.append((link(image_path(r, "violations"), html_dir), "violating pixels marked"))
-            text = caption(r)
+            else:  # older records: the colour difference may look blank although pixels violate
+                text += "; no violation map in this record"
             page.image_row(items, caption=f"<b>{html.escape(r['algorithm'])}</b>, {title}: {html.escape(text)}",
                            md_caption=f"**{r['algorithm']}**, {title}: {text}")
     return len(shown)

@@ -98,15 +98,42 @@ def scene_section(page, scene, rows, recs, figs, out_dir, revisions, note=False)
 
 
 def scene_index(page, scenes, rows, href):
-    """One link per scene page, with its size, rows, and how many orderers fail or were not
-    checked."""
+    """One link per scene page (numbered as in the overview), with its size, rows, how many
+    orderers fail or were not checked, and the fastest orderer with no violation."""
     items = []
-    for s in scenes:
+    for k, s in enumerate(scenes):
         sr = [r for r in rows if r["scene"] == s]
         fail = sum(1 for r in sr if r["failing_views"])
         nc = sum(1 for r in sr if r["checked_views"] == 0)
-        fastest = min(sr, key=lambda r: r["seconds"])
-        items.append((s, href(s), f"(n = {sr[0]['n']:,}; {len(sr)} rows; {fail} failing in some view; "
-                                  f"{nc} not checked; fastest {fastest['algorithm']}, "
-                                  f"{human_seconds(fastest['seconds'])})"))
+        ok = [r for r in sr if r["checked_views"] and not r["failing_views"]]
+        best = min(ok, key=lambda r: r["seconds"]) if ok else None
+        items.append((f"S{k + 1}: {s}", href(s),
+                      f"(n = {sr[0]['n']:,}; {len(sr)} rows; {fail} failing in some view; {nc} not checked"
+                      + (f"; fastest with no violation: {best['algorithm']}, {human_seconds(best['seconds'])})"
+                         if best else ")")))
     page.link_list(items)
+
+
+def overview(page, scenes, rows):
+    """Orderer x scene: median time per frame, marked when it fails in some view (✗) or was
+    not checked (?), so one table answers which orderer to choose."""
+    revs = sorted({r["revision"] for r in rows})
+    keys = list(dict.fromkeys((r["algorithm"], r["revision"]) for r in rows))
+    cell = {(r["algorithm"], r["revision"], r["scene"]): r for r in rows}
+    out, classes = [], []
+    for algo, rev in keys:
+        line, cls = [algo + (f" @ {rev}" if len(revs) > 1 else "")], [None]
+        for s in scenes:
+            r = cell.get((algo, rev, s))
+            if r is None:
+                line.append("")
+                cls.append(None)
+                continue
+            mark = " ?" if r["checked_views"] == 0 else (" ✗" if r["failing_views"] else "")
+            line.append(human_seconds(r["seconds"]) + mark)
+            cls.append("nc" if mark == " ?" else ("bad" if mark else None))
+        out.append(line)
+        classes.append(cls)
+    page.table(["orderer"] + [f"S{k + 1}" for k in range(len(scenes))], out, classes)
+    page.para("Median time per frame per scene (S1, S2, ... as listed below); ✗ = violating pixels in some "
+              "checked view, ? = not checked, no mark = no violation in any checked view.")
