@@ -122,7 +122,7 @@ def phases(scene, rows, out):
                 names.append(p)
     unit, f = time_unit(max(sum(r["phases"].values()) for r in rows) or 1e-9)
     cols = palette(len(names))
-    height = max(2.0, 0.6 + 0.36 * len(rows))
+    height = max(1.4, 0.5 + 0.36 * len(rows))
     fig, (ax, share) = plt.subplots(2, 1, figsize=(10, 2 * height + 1.2),
                                     gridspec_kw={"hspace": 0.35})
     ylabels = [label(r, revs) for r in rows]

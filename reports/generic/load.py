@@ -33,17 +33,18 @@ def load(paths):
 
 def image_path(r, name):
     """Absolute path of a record's image `name`, or None. Paths are relative to the folder
-    holding results.jsonl; older records hold them absolute (accepted when the file is there,
-    else looked up by name in that folder's images/, so a moved folder still works)."""
+    holding results.jsonl; older records hold them absolute or relative to where `run` was
+    started (accepted when the file is there, else looked up by name in that folder's
+    images/, so a moved folder still works)."""
     p = (r.get("images") or {}).get(name)
     if not p:
         return None
-    if not os.path.isabs(p):
-        return os.path.normpath(os.path.join(r["_base"], p))
-    if os.path.exists(p):
-        return p
+    here = p if os.path.isabs(p) else os.path.normpath(os.path.join(r["_base"], p))
+    if os.path.exists(here):
+        return here
+    # Older records: absolute, or relative to the folder `run` was started in.
     moved = os.path.join(r["_base"], "images", os.path.basename(p))
-    return moved if os.path.exists(moved) else p
+    return moved if os.path.exists(moved) else here
 
 
 def revision(r):
