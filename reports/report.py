@@ -16,7 +16,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from generic import figures, sections  # noqa: E402
 from generic.load import load, revision  # noqa: E402
-from generic.page import Page  # noqa: E402
+from generic.page import Page, anchor  # noqa: E402
 from generic.rows import summarise  # noqa: E402
 
 PAGE_SCENES = 6  # more scenes: an index page and one page per scene
@@ -64,6 +64,10 @@ def build(a):
     # One Markdown document with everything (NAME.md is rebuilt byte for byte by `vobench report`).
     full = Page(a.title)
     front(full)
+    if len(scenes) > 1:
+        full.heading(2, "Overview")
+        sections.overview(full, scenes, rows)
+        sections.scene_index(full, scenes, rows, lambda s: "#" + anchor(s))
     for s in scenes:
         sections.scene_section(full, s, [r for r in rows if r["scene"] == s], recs, figs[s], out, revisions)
     scaling(full)
