@@ -13,21 +13,31 @@ def slug(s):
 
 
 def runs_header(page, recs):
-    """Every revision and run the records come from: rows are never merged across revisions."""
+    """Every revision and run the records come from: rows are never merged across revisions.
+    Context fields newer records carry (threads, load average, library versions) when present."""
     by_rev = collections.OrderedDict()
     for r in recs:
         c = r.get("context") or {}
-        e = by_rev.setdefault(c.get("git_sha") or "?", {"runs": set(), "dates": set(), "machines": set(),
-                                                         "builds": set(), "records": 0})
+        e = by_rev.setdefault(c.get("git_sha") or "?", collections.defaultdict(set))
         e["runs"].add(r.get("run_id") or c.get("date") or "?")
         e["dates"].add(c.get("date") or "?")
-        e["machines"].add(f"{c.get('cpu', '?')} ({c.get('num_cpus', '?')} threads)")
+        e["machines"].add(f"{c.get('cpu', '?')} ({c.get('num_cpus', '?')} CPUs"
+                          + (f", {c['mhz']:.0f} MHz" if isinstance(c.get("mhz"), (int, float)) else "") + ")")
         e["builds"].add(f"{c.get('compiler', '?')}, {c.get('build_type', '?')}")
-        e["records"] += 1
+        e["threads"].add(str(r.get("threads", c.get("threads", "?"))))
+        if isinstance(c.get("load_avg"), list) and c["load_avg"]:
+            e["load"].add(f"{c['load_avg'][0]:.2f}")
+        if isinstance(c.get("libraries"), dict):
+            e["libs"].add(", ".join(f"{k} {v}" for k, v in sorted(c["libraries"].items())))
+        e["records"].add(id(r))
     page.heading(2, "Revisions and runs")
     rows = [[rev, str(len(e["runs"])), ", ".join(sorted(e["dates"])), "; ".join(sorted(e["machines"])),
-             "; ".join(sorted(e["builds"])), str(e["records"])] for rev, e in by_rev.items()]
-    page.table(["revision (git)", "runs", "dates", "machine", "build", "records"], rows)
+             "; ".join(sorted(e["builds"])), ", ".join(sorted(e["threads"])),
+             ", ".join(sorted(e["load"])) or "–", str(len(e["records"]))] for rev, e in by_rev.items()]
+    page.table(["revision (git)", "runs", "dates", "machine", "build", "threads", "load at start", "records"], rows)
+    for rev, e in by_rev.items():
+        if e["libs"]:
+            page.para(f"Libraries ({rev}): " + "; ".join(sorted(e["libs"])) + ".")
     if len(by_rev) > 1:
         page.para(f"Records of {len(by_rev)} revisions: every table keeps one row per revision (column "
                   "'revision'); nothing is averaged across revisions.")
