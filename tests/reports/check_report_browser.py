@@ -8,6 +8,7 @@ written to WORK/report.png; and with one image deleted the check must report it 
 usage: check_report_browser.py VOBENCH CHROMIUM WORK"""
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -63,6 +64,9 @@ for page in pages:
     missing, n = browser.missing_files(page)
     if missing:
         fail(f"{page}: {len(missing)} of {n} images name no file: {missing[:3]}")
+    with open(page) as f:
+        if re.search(r"""(src|href)=['"]?(https?:)?//""", f.read()):
+            fail(f"{page}: refers to the network; a report must load offline")
     seen, broken = browser.broken_in_browser(CHROMIUM, page, profile)
     if seen != n or broken:
         fail(f"{page}: chromium loaded {seen - broken} of {n} images ({seen} seen, {broken} broken)")
