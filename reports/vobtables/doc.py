@@ -88,6 +88,22 @@ class Table:
         return self
 
 
+# Counts the images that did not load into <body data-broken-images> (tests/reports reads it).
+BROKEN_IMAGES_SCRIPT = """<script>
+window.addEventListener('load', function () {
+  var imgs = document.images, broken = 0;
+  for (var i = 0; i < imgs.length; i++)
+    if (!imgs[i].complete || imgs[i].naturalWidth === 0) broken++;
+  document.body.setAttribute('data-images', imgs.length);
+  document.body.setAttribute('data-broken-images', broken);
+});
+</script>"""
+
+
+def _anchor(k, text):
+    return f"s{k}-" + "".join(c if c.isalnum() else "-" for c in text.lower())[:40].strip("-")
+
+
 def _md(text):
     """A Markdown table cell: a literal '|' would end the cell."""
     return str(text).replace("|", "\\|")
@@ -186,39 +202,66 @@ class Doc:
         return "\n".join(out)
 
     def to_html(self):
+        """The page: a table of contents, tables, claims, then each figure at full column width
+        linked to its full-size file."""
         e = html.escape
+        sections = [(_anchor(k, t.title), t.title) for k, t in enumerate(self.tables)]
+        sections += [("claims", "Claims")] if self.claims else []
+        sections += [("figures", "Figures")] if self.figures else []
+        sections += [("machine", "Machine")] if self.context else []
         out = ["<!doctype html><html><head><meta charset='utf-8'>",
                f"<title>{e(self.title)}</title>",
-               "<style>body{font-family:sans-serif;max-width:70em;margin:2em auto}"
-               "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:2px 8px;"
-               "text-align:right}td:first-child{text-align:left}.no{color:#b00}.yes{color:#070}"
-               ".nm{color:#888}img{max-width:100%}</style></head><body>",
+               "<style>body{font-family:sans-serif;max-width:70em;margin:2em auto;padding:0 1em;line-height:1.4}"
+               "table{border-collapse:collapse;margin:1em 0;font-size:13px}td,th{border:1px solid #ccc;"
+               "padding:2px 8px;text-align:right}th{background:#f3f3f3}td:first-child{text-align:left}"
+               ".no{color:#b00}.yes{color:#070}.nm{color:#888}figure{margin:1.5em 0}"
+               "figure img{width:100%;border:1px solid #ddd}figcaption{font-size:13px}"
+               ".row{display:flex;flex-wrap:wrap;gap:12px}figure.pic{margin:0;max-width:100%}"
+               "figure.pic img{width:auto;max-width:100%}"
+               "nav{background:#f7f7f7;border:1px solid #ddd;padding:.5em 1em;font-size:14px}"
+               ".scroll{overflow-x:auto}</style></head><body>",
                f"<h1>{e(self.title)}</h1>"]
+        if len(sections) > 1:
+            out.append("<nav><b>Contents</b><ul>" + "".join(f"<li><a href='#{a}'>{e(t)}</a></li>"
+                                                            for a, t in sections) + "</ul></nav>")
         if self.intro:
             out.append(f"<p>{e(self.intro)}</p>")
         if self.conditions:
             out.append(f"<p><b>Conditions.</b> {e(self.conditions)}</p>")
-        for t in self.tables:
-            out.append(f"<h2>{e(t.title)}</h2><table><tr>" + "".join(f"<th>{e(c)}</th>" for c in t.columns) + "</tr>")
+        for k, t in enumerate(self.tables):
+            out.append(f"<h2 id='{_anchor(k, t.title)}'>{e(t.title)}</h2><div class='scroll'><table><tr>"
+                       + "".join(f"<th>{e(c)}</th>" for c in t.columns) + "</tr>")
             fs = t.formats()
             for r in t.rows:
                 out.append("<tr>" + "".join(f"<td>{e(cell(c, f))}</td>" for c, f in zip(r, fs)) + "</tr>")
-            out.append("</table>")
+            out.append("</table></div>")
             if t.notes:
                 out.append(f"<p>{e(t.notes)}</p>")
         if self.claims:
-            out.append("<h2>Claims</h2><table><tr><th>claim</th><th>holds</th><th>ours</th><th>paper</th><th>criterion</th></tr>")
+            out.append("<h2 id='claims'>Claims</h2><table><tr><th>claim</th><th>holds</th><th>ours</th>"
+                       "<th>paper</th><th>criterion</th></tr>")
             for c in self.claims:
                 cls, word = (("nm", "not measured") if c["holds"] is None
                              else (("yes", "holds") if c["holds"] else ("no", "does not hold")))
                 out.append(f"<tr><td>{e(c['claim'])}</td><td class='{cls}'>{word}</td><td>{e(fmt(c['ours']))}</td>"
                            f"<td>{e(fmt(c['paper']))}</td><td>{e(c['criterion'])}</td></tr>")
             out.append("</table>")
-        for f in self.figures:
-            out.append(f"<figure><img src='{e(f['file'])}'><figcaption>{e(f['caption'])}</figcaption></figure>")
+        if self.figures:
+            out.append("<h2 id='figures'>Figures</h2>")
+        for k, f in enumerate(self.figures):
+            # Plots at full column width; labelled images (doc.image) at their own size, side by side.
+            pic = f["file"].startswith("labelled")
+            if pic and (k == 0 or not self.figures[k - 1]["file"].startswith("labelled")):
+                out.append("<div class='row'>")
+            out.append(f"<figure{' class=pic' if pic else ''}><a href='{e(f['file'])}'><img src='{e(f['file'])}' "
+                       f"alt='{e(f['caption'])}'></a><figcaption>{e(f['caption'])} (click for full size)"
+                       "</figcaption></figure>")
+            if pic and (k + 1 == len(self.figures) or not self.figures[k + 1]["file"].startswith("labelled")):
+                out.append("</div>")
         if self.context:
-            out.append("<h2>Machine</h2><pre>" + e(json.dumps(self.context, indent=1, sort_keys=True)) + "</pre>")
-        out.append("</body></html>")
+            out.append("<h2 id='machine'>Machine</h2><pre>" + e(json.dumps(self.context, indent=1, sort_keys=True))
+                       + "</pre>")
+        out += [BROKEN_IMAGES_SCRIPT, "</body></html>"]
         return "\n".join(out)
 
     def write(self):

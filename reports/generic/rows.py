@@ -1,0 +1,126 @@
+"""Rows of the generic report: one per (scene, revision, orderer), medians over its views.
+
+One verdict per record: `oracle` (on the order, or with `"judged": "composited"` on what the
+orderer composites). A record without `oracle` (or null) was not checked: it counts as
+neither failing nor exact, and its error is None, never 0."""
+import collections
+import statistics
+
+from .load import revision, run_of
+
+# Records older than the one-verdict change: HAVS's own per-pixel count stood in for the
+# oracle's verdict on the cell order it returns (their `oracle` judged that derived order).
+OLD_OWN_VIOLATIONS = "havs_violating_pixels"
+
+
+def scene_key(r):
+    return f"{r['dataset']} @ {r['w']}x{r['h']}"
+
+
+def checked(r):
+    return isinstance(r.get("oracle"), dict)
+
+
+def judged(r):
+    """'order', 'composited', or None (not checked)."""
+    if not checked(r):
+        return None
+    o = r["oracle"]
+    if "judged" in o:
+        return o["judged"]
+    return "composited" if OLD_OWN_VIOLATIONS in r.get("counters", {}) else "order"
+
+
+def violating_pixels(r):
+    """The verdict's violating pixels; None when not checked. Overlapping cells (the
+    oracle's input_fault): no visibility order exists, so the violations are the input's."""
+    if not checked(r):
+        return None
+    if "input_fault" in r:
+        return 0
+    o = r["oracle"]
+    if "judged" not in o and OLD_OWN_VIOLATIONS in r.get("counters", {}):
+        return int(r["counters"][OLD_OWN_VIOLATIONS])
+    return int(o.get("violating_pixels", 0))
+
+
+def error_fraction(r):
+    v = violating_pixels(r)
+    cov = r["oracle"].get("covered_pixels") if checked(r) else None
+    if v is None or not cov:
+        return None
+    return v / cov
+
+
+def claim(r):
+    c = r.get("claims", {})
+    return "object" if c.get("object_exact") else ("image" if c.get("image_exact") else "heuristic")
+
+
+def verdict_text(row):
+    """'2/14 failing', '0/14 failing', 'not checked', or both for a partly checked row."""
+    if row["checked_views"] == 0:
+        return "not checked"
+    text = f"{row['failing_views']}/{row['checked_views']} failing"
+    if row["checked_views"] < row["views"]:
+        text += f", {row['views'] - row['checked_views']} not checked"
+    if row["judged"] == "composited":
+        text += " (composited)"
+    if row["input_faults"]:
+        text += f" (+{row['input_faults']} input faults)"
+    return text
+
+
+def summarise(recs):
+    groups = collections.OrderedDict()
+    for r in recs:
+        groups.setdefault((scene_key(r), revision(r), r["algorithm"]), []).append(r)
+    rows = []
+    for (scene, rev, algo), rs in groups.items():
+        times = [r["total"]["median"] for r in rs]
+        chk = [r for r in rs if checked(r)]
+        errs = [e for e in (error_fraction(r) for r in chk) if e is not None]
+        rmse = [r["image_error"]["rmse"] for r in rs if "image_error" in r]
+        phases = collections.OrderedDict()
+        for r in rs:
+            for name, v in r["phases"].items():
+                phases.setdefault(name, []).append(v["median"])
+        views = collections.Counter(r.get("view_index") for r in rs)
+        rows.append({
+            "scene": scene, "dataset": rs[0]["dataset"], "dataset_spec": rs[0].get("dataset_spec"),
+            "w": rs[0]["w"], "h": rs[0]["h"], "revision": rev,
+            "runs": sorted({run_of(r) for r in rs}), "algorithm": algo, "n": rs[0]["n"],
+            "b": rs[0].get("b"), "views": len(rs),
+            "repeated_views": sum(1 for c in views.values() if c > 1),
+            "seconds": statistics.median(times),
+            "prepare_s": rs[0]["prepare"]["seconds"],
+            "checked_views": len(chk),
+            "judged": judged(chk[0]) if chk else None,
+            "err": statistics.mean(errs) if errs else None,
+            "failing_views": sum(1 for r in chk if violating_pixels(r) > 0),
+            "input_faults": sum(1 for r in rs if "input_fault" in r),
+            "violating_pixels": sum(violating_pixels(r) for r in chk) if chk else None,
+            "max_k": max((r["oracle"].get("max_k", 0) for r in chk), default=None),
+            "rmse": statistics.mean(rmse) if rmse else None,
+            # A compositing orderer's derived cell order, judged too: shown labelled, never as the verdict.
+            "cell_order_px": (sum(r["oracle_cell_order"].get("violating_pixels", 0) for r in rs
+                                  if isinstance(r.get("oracle_cell_order"), dict))
+                              if any(isinstance(r.get("oracle_cell_order"), dict) for r in rs) else None),
+            "cycles": max(r["cycles"]["count"] for r in rs),
+            "exact": claim(rs[0]),
+            "phases": {k: statistics.median(v) for k, v in phases.items()},
+            "bytes": rs[0]["bytes"]["orderer"] + rs[0]["bytes"]["derived"],
+        })
+    base = {(r["scene"], r["revision"], r["algorithm"]): r for r in rows}
+    for row in rows:
+        for ref in ("mpvonc", "vtk-centroid"):
+            b = base.get((row["scene"], row["revision"], ref))
+            row["vs_" + ref] = row["seconds"] / b["seconds"] if b and b["seconds"] > 0 else None
+        row["verdict"] = verdict_text(row)
+    # One orderer's rows of several revisions side by side.
+    first_scene, first_algo = {}, {}
+    for r in rows:
+        first_scene.setdefault(r["scene"], len(first_scene))
+        first_algo.setdefault(r["algorithm"], len(first_algo))
+    rows.sort(key=lambda r: (first_scene[r["scene"]], first_algo[r["algorithm"]]))
+    return rows

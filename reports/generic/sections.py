@@ -1,0 +1,149 @@
+"""The parts of a generic report page: the runs header, a scene's table and figures, the
+scene index."""
+import collections
+import os
+
+from . import figures, gallery
+from .rows import scene_key
+from .units import human_bytes, human_seconds, sig
+
+
+def slug(s):
+    return "".join(c if c.isalnum() else "_" for c in s)
+
+
+def runs_header(page, recs):
+    """Every revision and run the records come from: rows are never merged across revisions.
+    Context fields newer records carry (threads, load average, library versions) when present."""
+    by_rev = collections.OrderedDict()
+    for r in recs:
+        c = r.get("context") or {}
+        e = by_rev.setdefault(c.get("git_sha") or "?", collections.defaultdict(set))
+        e["runs"].add(r.get("run_id") or c.get("date") or "?")
+        e["dates"].add(c.get("date") or "?")
+        e["machines"].add(f"{c.get('cpu', '?')} ({c.get('num_cpus', '?')} CPUs"
+                          + (f", {c['mhz']:.0f} MHz" if isinstance(c.get("mhz"), (int, float)) else "") + ")")
+        e["builds"].add(f"{c.get('compiler', '?')}, {c.get('build_type', '?')}")
+        e["threads"].add(str(r.get("threads", c.get("threads", "?"))))
+        if isinstance(c.get("load_avg"), list) and c["load_avg"]:
+            e["load"].add(f"{c['load_avg'][0]:.2f}")
+        if isinstance(c.get("libraries"), dict):
+            e["libs"].add(", ".join(f"{k} {v}" for k, v in sorted(c["libraries"].items())))
+        e["records"].add(id(r))
+    page.heading(2, "Revisions and runs")
+    rows = [[rev, str(len(e["runs"])), ", ".join(sorted(e["dates"])), "; ".join(sorted(e["machines"])),
+             "; ".join(sorted(e["builds"])), ", ".join(sorted(e["threads"])),
+             ", ".join(sorted(e["load"])) or "–", str(len(e["records"]))] for rev, e in by_rev.items()]
+    page.table(["revision (git)", "runs", "dates", "machine", "build", "threads", "load at start", "records"], rows)
+    for rev, e in by_rev.items():
+        if e["libs"]:
+            page.para(f"Libraries ({rev}): " + "; ".join(sorted(e["libs"])) + ".")
+    if len(by_rev) > 1:
+        page.para(f"Records of {len(by_rev)} revisions: every table keeps one row per revision (column "
+                  "'revision'); nothing is averaged across revisions.")
+
+
+VERDICT_NOTE = ("claim: object = object-space exact, image = image-space exact, heuristic = no claim. "
+                "verdict: views with at least one violating pixel / views the oracle checked "
+                "(composited = judged on what the orderer composites); not checked = measured without "
+                "the oracle (no error is known, so none is plotted). Times are medians over views of each "
+                "view's median over repeats; memory is the orderer's and its derived structures'.")
+
+
+def scene_table(page, rows, revisions):
+    multi = len(revisions) > 1
+    derived = any(r["cell_order_px"] is not None for r in rows)
+    head = (["orderer", "claim"] + (["revision"] if multi else []) +
+            ["views", "time/frame", "vs mpvonc", "vs vtk-centroid", "prepare", "verdict",
+             "violating px (% covered)"] + (["derived cell order px"] if derived else []) +
+            ["max k", "image RMSE", "cycles", "memory"])
+    out, classes = [], []
+    for r in rows:
+        views = str(r["views"]) + (f" ({len(r['runs'])} runs)" if len(r["runs"]) > 1 else "")
+        if r["repeated_views"]:
+            views += f" ({r['repeated_views']} measured more than once)"
+        nc = r["checked_views"] == 0
+        err = "not checked" if r["err"] is None and nc else sig(None if r["err"] is None else 100 * r["err"])
+        cells = ([r["algorithm"], r["exact"]] + ([r["revision"]] if multi else []) +
+                 [views, human_seconds(r["seconds"]), sig(r["vs_mpvonc"]), sig(r["vs_vtk-centroid"]),
+                  human_seconds(r["prepare_s"]), r["verdict"], err] +
+                 ([sig(r["cell_order_px"]) if r["cell_order_px"] is not None else "–"] if derived else []) +
+                 [sig(r["max_k"]) if r["max_k"] is not None else "–", sig(r["rmse"]), sig(r["cycles"]),
+                  human_bytes(r["bytes"])])
+        cls = [None] * len(cells)
+        vi = head.index("verdict")
+        cls[vi] = "nc" if nc else ("bad" if r["failing_views"] else None)
+        cls[vi + 1] = "nc" if nc else None
+        out.append(cells)
+        classes.append(cls)
+    page.table(head, out, classes)
+    if derived:
+        page.para("derived cell order px: the oracle's count on the cell order a compositing orderer "
+                  "returns (labelled 'derived cell order'); its verdict is the 'verdict' column.")
+
+
+def make_figures(scene, rows, out_dir):
+    f1 = f"figures/speed_error_{slug(scene)}.png"
+    f2 = f"figures/phases_{slug(scene)}.png"
+    figures.speed_error(scene, rows, os.path.join(out_dir, f1))
+    figures.phases(scene, rows, os.path.join(out_dir, f2))
+    return f1, f2
+
+
+def scene_section(page, scene, rows, recs, figs, out_dir, revisions, note=False):
+    r0 = rows[0]
+    page.heading(2, scene)
+    page.para(f"{r0['dataset']}: n = {r0['n']:,} primitives"
+              + (f", b = {r0['b']:,} boundary faces" if r0.get("b") else "")
+              + f", {r0['w']}x{r0['h']} pixels, {len(rows)} rows.")
+    scene_table(page, rows, revisions)
+    if note:
+        page.para(VERDICT_NOTE)
+    page.figure(figs[0], "speed against error",
+                "Speed against error: mean violating pixels over checked views against median time per "
+                "frame; marker shape = exactness claim, colour = orderer; grey band = not checked.")
+    page.figure(figs[1], "phases", "Median time per frame split by phase (top: time; bottom: share of each "
+                "orderer's time), one colour per phase.")
+    gallery.add(page, [r for r in recs if scene_key(r) == scene], out_dir, revisions)
+
+
+def scene_index(page, scenes, rows, href):
+    """One link per scene page (numbered as in the overview), with its size, rows, how many
+    orderers fail or were not checked, and the fastest orderer with no violation."""
+    items = []
+    for k, s in enumerate(scenes):
+        sr = [r for r in rows if r["scene"] == s]
+        fail = sum(1 for r in sr if r["failing_views"])
+        nc = sum(1 for r in sr if r["checked_views"] == 0)
+        ok = [r for r in sr if r["checked_views"] and not r["failing_views"]]
+        best = min(ok, key=lambda r: r["seconds"]) if ok else None
+        items.append((f"S{k + 1}: {s}", href(s),
+                      f"(n = {sr[0]['n']:,}; {len(sr)} rows; {fail} failing in some view; {nc} not checked"
+                      + (f"; fastest with no violation: {best['algorithm']}, {human_seconds(best['seconds'])})"
+                         if best else ")")))
+    page.link_list(items)
+
+
+def overview(page, scenes, rows):
+    """Orderer x scene: median time per frame, marked when it fails in some view (✗) or was
+    not checked (?), so one table answers which orderer to choose."""
+    revs = sorted({r["revision"] for r in rows})
+    keys = list(dict.fromkeys((r["algorithm"], r["revision"]) for r in rows))
+    cell = {(r["algorithm"], r["revision"], r["scene"]): r for r in rows}
+    out, classes = [], []
+    for algo, rev in keys:
+        line, cls = [algo + (f" @ {rev}" if len(revs) > 1 else "")], [None]
+        for s in scenes:
+            r = cell.get((algo, rev, s))
+            if r is None:
+                line.append("")
+                cls.append(None)
+                continue
+            mark = " ?" if r["checked_views"] == 0 else (" ✗" if r["failing_views"] else "")
+            line.append(human_seconds(r["seconds"]) + mark)
+            cls.append("nc" if mark == " ?" else ("bad" if mark else None))
+        out.append(line)
+        classes.append(cls)
+    page.table(["orderer"] + [f"S{k + 1}" for k in range(len(scenes))], out, classes)
+    page.para("Median time per frame per scene (S1, S2, ... as listed below); ✗ = violating pixels in some "
+              "checked view, ? = not checked, no mark = no violation in any checked view.")
