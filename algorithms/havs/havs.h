@@ -16,8 +16,12 @@
 //            race, Fig. 5); serialized draws runs of faces with disjoint pixel rectangles
 //            separated by glMemoryBarrier (race free)
 // Ordering::order is a complete back-to-front permutation of cells derived from the face
-// sort (each cell at the position of its last-arriving face, havs_frame.h); the harness'
-// oracle judges that permutation. HAVS's own error is in Ordering::counters:
+// sort (each cell at the position of its last-arriving face, havs_frame.h), for the
+// harness' completeness check; the oracle's count on it is only the "derived cell order"
+// (records' oracle_cell_order). HAVS composites itself (Claims::composites): its verdict,
+// the records' `oracle` and `vobench check`'s, is composited_verdict() (havs.cpp: the
+// analysis below, untimed, S = 1 only; backend=gl gets the software k-buffer's verdict on
+// the same face order). With analyze, the same analysis also fills Ordering::counters:
 //   havs_fragments, havs_max_list (Table 2 "Max A"), havs_max_k_needed (Table 2 "Max k"),
 //   havs_pixels_k_gt_2, havs_pixels_k_gt_6, havs_covered_pixels, havs_violating_pixels
 //   (pixels whose composited segment sequence differs from the exact one),

@@ -33,7 +33,8 @@ void fill_orderer_identity(Record& rec, const PreparedOrderer& p) {
   rec.orderer = p.info->name;
   rec.parameters = resolved_parameters(p.spec);
   const Claims cl = p.orderer->claims();
-  rec.claims = {{"object_exact", cl.object_exact}, {"image_exact", cl.image_exact}};
+  rec.claims = {{"object_exact", cl.object_exact}, {"image_exact", cl.image_exact},
+                {"composites", cl.composites}};
 }
 }  // namespace
 
@@ -124,15 +125,23 @@ Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene&
   rec.counters = m.ordering.counters;
   if (suite.exterior_area && scene.kind() == SceneKind::Cells) rec.a = exterior_area_pixels(scene, job.camera);
   if (suite.oracle) {
+    // The one verdict (verdict.h), untimed; its mask only when images may be written.
     OracleOptions oo;
     oo.supersample = suite.supersample;
-    const OracleResult r = check_ordering(scene, job.camera, m.ordering.order, oo);
-    rec.oracle = r.to_json();
+    oo.violation_mask = !suite.image_views.empty() || suite.images_of_violations;
+    out.verdict = judge(*p.orderer, p.spec, scene, job.camera, m.ordering, oo, "supersample");
+    const Verdict& v = *out.verdict;
+    rec.oracle = v.json();
+    rec.oracle_cell_order = v.cell_order_json();
     // Overlapping cells: the input has no visibility order; not the orderer's fault.
-    if (r.input_fault())
-      rec.input_fault = {{"overlapping_pairs", r.overlapping_pairs}, {"examples", r.overlap_examples}};
-    out.violated = !r.ok() && !r.input_fault();
+    if (v.input_fault())
+      rec.input_fault = {{"overlapping_pairs", v.order_result().overlapping_pairs},
+                         {"examples", v.order_result().overlap_examples}};
+    out.violated = v.violated();
   }
+  if (p.orderer->claims().composites &&
+      (suite.image_error || !suite.image_views.empty() || suite.images_of_violations))
+    out.composited = shown_images(*p.orderer, scene, job.camera, m.ordering);
   out.ordering = std::move(m.ordering);
   return out;
 }

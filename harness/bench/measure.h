@@ -3,6 +3,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@
 #include "harness/bench/probe.h"
 #include "harness/bench/record.h"
 #include "harness/bench/registry.h"
+#include "harness/bench/verdict.h"
 
 namespace vob {
 
@@ -40,7 +42,11 @@ FrameMeasurement measure_frame(PreparedOrderer& p, const Camera& view, int warmu
 struct Measurement {
   Record record;
   Ordering ordering;
-  bool violated = false;  // the oracle found violations (not an input fault)
+  std::optional<Verdict> verdict;  // when the suite has the oracle on
+  // Compositing orderers whose images the suite may want: what it composited and its exact
+  // composite (shown_images), made while the orderer still holds this view.
+  std::optional<ShownImages> composited;
+  bool violated = false;  // the verdict has violations (not an input fault)
 };
 // `base` holds what every record of the dataset shares (suite, dataset, row, dataset_spec,
 // facts, threads, tags, context).

@@ -1,5 +1,7 @@
 #include "harness/bench/orderer.h"
 
+#include <stdexcept>
+
 namespace vob {
 
 void CycleReport::add(const std::vector<int32_t>& members) {
@@ -8,6 +10,14 @@ void CycleReport::add(const std::vector<int32_t>& members) {
     if (primitives.size() >= kMaxReported) return;
     primitives.push_back(m);
   }
+}
+
+OracleResult Orderer::composited_verdict(const Camera&, bool) {
+  throw std::logic_error("composited_verdict called on an orderer that does not composite");
+}
+
+void Orderer::composited_images(const Camera&, Image&, Image&) {
+  throw std::logic_error("composited_images called on an orderer that does not composite");
 }
 
 }  // namespace vob

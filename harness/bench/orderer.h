@@ -12,6 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/bench/phase_clock.h"
+#include "harness/oracle/oracle.h"
+#include "harness/render/compositor.h"
 #include "harness/scene/scene.h"
 #include "harness/view/camera.h"
 
@@ -21,6 +23,10 @@ struct Claims {
   bool object_exact = false;  // exact for every ray (any resolution)
   bool image_exact = false;   // exact at the pixel centres of the view it was given
   bool detects_cycles = false;  // finds visibility cycles among the relations it builds
+  // Composites its own image and fixes the order per pixel there (HAVS's k-buffer): it is
+  // judged on what it composites (Orderer::composited_verdict), one verdict everywhere; the
+  // oracle's count on its returned cell order is only the "derived cell order".
+  bool composites = false;
   bool heuristic() const { return !object_exact && !image_exact; }
 };
 
@@ -47,6 +53,16 @@ class Orderer {
   virtual void prepare(const Scene& scene, PhaseClock& clock) = 0;
   virtual Ordering order(const Camera& view, PhaseClock& clock) = 0;
   virtual size_t bytes() const = 0;         // memory the plugin holds after prepare/order
+  // Only for Claims::composites: the verdict on what the last order() call (for `view`)
+  // composited, with the oracle's conventions (pixel centres, S = 1, OracleResult's fields
+  // where they have a meaning; with_mask fills violation_mask). The harness calls it
+  // outside the PhaseClock phases, whenever a verdict is wanted (check; suites with the
+  // oracle on), so it is never timed.
+  virtual OracleResult composited_verdict(const Camera& view, bool with_mask);
+  // Only for Claims::composites: the image the last order() (for `view`) composited and the
+  // exact composite of the same fragments with the same shading (the reference of its
+  // image error and difference image; the harness compositor shades differently).
+  virtual void composited_images(const Camera& view, Image& composited, Image& exact);
 };
 
 }  // namespace vob

@@ -40,6 +40,7 @@ nlohmann::json Record::to_json() const {
     j["counters"] = counters;
     if (a) j["a"] = *a;
     if (!oracle.is_null()) j["oracle"] = oracle;
+    if (!oracle_cell_order.is_null()) j["oracle_cell_order"] = oracle_cell_order;
     if (!input_fault.is_null()) j["input_fault"] = input_fault;
     if (!image_error.is_null()) j["image_error"] = image_error;
   }

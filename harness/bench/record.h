@@ -30,6 +30,7 @@ struct Record {
   nlohmann::json phases, total, prepare, bytes, cycles, counters;
   std::optional<int64_t> a;       // exterior area in pixels (cells, exterior_area)
   nlohmann::json oracle, input_fault, image_error, images;  // null: absent
+  nlohmann::json oracle_cell_order;  // compositing orderers: the derived cell order's count
 
   // Probe records (probe non-empty; parameters above are the probe's).
   std::string probe;

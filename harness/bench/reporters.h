@@ -38,16 +38,18 @@ class ConsoleReporter {
 };
 
 // Renders a record's order and the exact image when the suite wants its image error or
-// its images: fills image_error, writes the three PNGs and names them in images.
+// its images: fills image_error, writes the PNGs (order, exact, diff, and violations when
+// the verdict has a mask) and names them in images, relative to results_dir (the folder
+// holding results.jsonl).
 class ImageReporter {
  public:
-  ImageReporter(const SuiteSpec& suite, std::string image_dir);
+  ImageReporter(const SuiteSpec& suite, std::string image_dir, std::string results_dir);
   bool writes_files() const;  // the suite may write PNGs (the folder must be writable)
   void report(Measurement& m, const Scene& scene, const Camera& camera) const;
 
  private:
   const SuiteSpec& suite_;
-  std::string dir_;
+  std::string dir_, results_dir_;
 };
 
 }  // namespace vob

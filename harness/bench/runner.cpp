@@ -51,7 +51,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
   ResultsReporter results(opt.results_path);
   const std::string image_dir =
       !opt.image_dir.empty() ? opt.image_dir : (fs::path(opt.results_path).parent_path() / "images").string();
-  const ImageReporter images(suite, image_dir);
+  const ImageReporter images(suite, image_dir, fs::path(opt.results_path).parent_path().string());
   if (images.writes_files() || !suite.probes.empty()) require_writable_folder(image_dir);
   const ConsoleReporter console(opt.progress);
   std::optional<tbb::global_control> threads;

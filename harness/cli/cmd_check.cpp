@@ -1,12 +1,16 @@
 // vobench check: run an orderer over views and judge every ordering with the oracle.
+// The verdict is the one of the records (harness/bench/verdict.h): an orderer that
+// composites itself (HAVS) is judged on what it composites ("judged": "composited"), the
+// oracle's count on its derived cell order shown beside, labelled so.
 // Exit 0: no violation in any view; 1: some violation; 2: bad usage or input, including
 // cells the oracle sees overlapping (the input has no visibility order; no orderer is
-// blamed).
+// blamed) and --supersample > 1 for a compositing orderer.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
 #include "harness/bench/runner.h"
+#include "harness/bench/verdict.h"
 #include "harness/oracle/oracle.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/scene_args.h"
@@ -41,7 +45,7 @@ Command add_check_command(CLI::App& app) {
   view_args->add_to(*cmd);
   cmd->add_option("--supersample", *supersample, "S x S samples per pixel")->check(integer_in(1, 16));
   cmd->add_flag("--json", *json, "print the oracle's counts per view as JSON");
-  cmd->add_option("--images", *images, "write order/exact/difference PNGs of every view here");
+  cmd->add_option("--images", *images, "write order/exact/diff/violations PNGs of every view here");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
     view_args->validate(spec);
@@ -54,7 +58,9 @@ Command add_check_command(CLI::App& app) {
     PreparedOrderer p = prepare_orderer(*algorithm, scene);
     OracleOptions oo;
     oo.supersample = *supersample;
+    oo.violation_mask = !images->empty();
     nlohmann::json out{{"algorithm", *algorithm}, {"dataset", spec.to_json()},
+                       {"judged", p.orderer->claims().composites ? "composited" : "order"},
                        {"primitives", scene.num_primitives()}, {"supersample", *supersample},
                        {"views", nlohmann::json::array()}};
     int failing = 0;
@@ -62,32 +68,40 @@ Command add_check_command(CLI::App& app) {
     for (const auto& [vi, cam] : cams) {
       FrameMeasurement m = measure_frame(p, cam, 0, 1);
       check_complete(scene, m.ordering, *algorithm);
-      const OracleResult r = check_ordering(scene, cam, m.ordering.order, oo);
-      if (r.input_fault()) throw InputError(overlap_fault_line(source_name(spec), r, vi));
+      const Verdict verdict = judge(*p.orderer, *algorithm, scene, cam, m.ordering, oo, "--supersample");
+      const OracleResult& r = verdict.result;
+      if (verdict.input_fault()) throw InputError(overlap_fault_line(source_name(spec), verdict.order_result(), vi));
       failing += r.ok() ? 0 : 1;
       cycles += m.ordering.cycles.cycles;
-      nlohmann::json v = r.to_json();
+      nlohmann::json v = verdict.json();
+      if (verdict.cell_order) v["oracle_cell_order"] = verdict.cell_order_json();
       v["view_index"] = vi;
       v["camera"] = cam.to_json();
       v["cycles"] = m.ordering.cycles.cycles;
       v["seconds"] = m.total_median();
       if (!images->empty()) {
         namespace fs = std::filesystem;
-        const Image ordered = render_in_order(scene, cam, m.ordering.order);
-        const Image exact = render_exact(scene, cam);
+        const ShownImages shown = shown_images(*p.orderer, scene, cam, m.ordering);
         fs::create_directories(*images);
         const std::string stem = (fs::path(*images) / ("view" + std::to_string(vi))).string();
-        write_png(ordered, stem + "-order.png");
-        write_png(exact, stem + "-exact.png");
-        write_png(difference_image(ordered, exact), stem + "-diff.png");
-        v["image_error"] = image_error(ordered, exact).to_json();
+        write_png(shown.ordered, stem + "-order.png");
+        write_png(shown.exact, stem + "-exact.png");
+        write_png(difference_image(shown.ordered, shown.exact), stem + "-diff.png");
+        write_png(violation_image(shown.exact, r.violation_mask), stem + "-violations.png");
+        v["image_error"] = image_error(shown.ordered, shown.exact).to_json();
       }
-      if (!*json)
-        std::printf("view %3d: %s  covered %lld  violating pixels %lld  fragments %lld  pairs %lld  max_k %d%s\n",
+      if (!*json) {
+        const std::string pairs = r.pairs_counted ? "  pairs " + std::to_string(r.violating_pairs) : "";
+        const std::string derived =
+            verdict.cell_order ? "  (composited; derived cell order: violating pixels " +
+                                     std::to_string(verdict.cell_order->violating_pixels) + ")"
+                               : "";
+        std::printf("view %3d: %s  covered %lld  violating pixels %lld  fragments %lld%s  max_k %d%s%s\n",
                     vi, r.ok() ? "ok  " : "FAIL", (long long)r.covered_pixels,
-                    (long long)r.violating_pixels, (long long)r.violating_fragments,
-                    (long long)r.violating_pairs, r.max_k,
-                    m.ordering.cycles.cycles ? ("  cycles " + std::to_string(m.ordering.cycles.cycles)).c_str() : "");
+                    (long long)r.violating_pixels, (long long)r.violating_fragments, pairs.c_str(), r.max_k,
+                    m.ordering.cycles.cycles ? ("  cycles " + std::to_string(m.ordering.cycles.cycles)).c_str() : "",
+                    derived.c_str());
+      }
       out["views"].push_back(v);
     }
     out["failing_views"] = failing;

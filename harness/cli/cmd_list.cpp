@@ -29,7 +29,8 @@ Command add_list_command(CLI::App& app) {
                                  {"summary", o.summary},
                                  {"claims", {{"object_exact", c.object_exact},
                                              {"image_exact", c.image_exact},
-                                             {"detects_cycles", c.detects_cycles}}},
+                                             {"detects_cycles", c.detects_cycles},
+                                             {"composites", c.composites}}},
                                  {"params", params}});
       }
       for (const auto& p : probe_registry())

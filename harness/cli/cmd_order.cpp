@@ -4,6 +4,7 @@
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/runner.h"
+#include "harness/bench/verdict.h"
 #include "harness/oracle/oracle.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/scene_args.h"
@@ -22,7 +23,7 @@ Command add_order_command(CLI::App& app) {
   scene_args->add_to(*cmd);
   view_args->add_to(*cmd);
   cmd->add_option("-o,--output", *out, "ORDER.json")->required();
-  cmd->add_flag("--check", *check, "also run the oracle and store its counts");
+  cmd->add_flag("--check", *check, "also store the verdict (the oracle's counts; HAVS: on what it composites)");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
     view_args->validate(spec);
@@ -52,7 +53,12 @@ Command add_order_command(CLI::App& app) {
     j["phases"] = phases;
     j["counters"] = m.ordering.counters;
     if (!m.ordering.layers.empty()) j["layers"] = m.ordering.layers;
-    if (*check) j["oracle"] = check_ordering(scene, cam, m.ordering.order).to_json();
+    if (*check) {
+      // The one verdict (verdict.h): a compositing orderer's is on what it composited.
+      const Verdict v = judge(*p.orderer, *algorithm, scene, cam, m.ordering, {}, "--supersample");
+      j["oracle"] = v.json();
+      if (v.cell_order) j["oracle_cell_order"] = v.cell_order_json();
+    }
     write_file_atomically(*out, j.dump() + "\n");
     std::cerr << "wrote " << *out << ": " << m.ordering.order.size() << " "
               << scene_kind_name(scene.kind()) << ", " << m.total_median() * 1e3 << " ms\n";

@@ -27,7 +27,7 @@ nlohmann::json OracleResult::to_json() const {
           {"covered_pixels", covered_pixels},
           {"violating_pixels", violating_pixels},
           {"violating_fragments", violating_fragments},
-          {"violating_pairs", violating_pairs},
+          {"violating_pairs", pairs_counted ? nlohmann::json(violating_pairs) : nlohmann::json(nullptr)},
           {"max_k", max_k},
           {"max_list", max_list},
           {"k_histogram", k_histogram},
@@ -134,6 +134,8 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   const size_t max_examples = static_cast<size_t>(opt.max_examples);
   const double overlap_tol = kOverlapRelative * scene.bounds().radius();
 
+  // Per sample (bands write disjoint rows), folded to pixels at the end.
+  std::vector<uint8_t> sample_mask(opt.violation_mask ? frame.num_samples() : 0, 0);
   const int nb = collector.num_bands();
   std::vector<BandStats> bands(nb);
   tbb::enumerable_thread_specific<Scratch> scratch;
@@ -191,6 +193,7 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
       int k = 0;
       if (violated) {
         ++st.violating_samples;
+        if (opt.violation_mask) sample_mask[int64_t(fl.row0) * fl.cols + i] = 1;
         k = s.counter.max_k(s.in.data(), s.query.data(), n);
       }
       if (k >= int(st.khist.size())) st.khist.resize(k + 1, 0);
@@ -246,6 +249,20 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   tbb::parallel_sort(pairs.begin(), pairs.end());
   r.violating_pairs = int64_t(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
   r.max_k = int(r.k_histogram.size()) - 1;
+  if (opt.violation_mask) {
+    const int S = frame.supersample();
+    r.mask_width = frame.cols() / S;
+    r.mask_height = frame.rows() / S;
+    if (S == 1) {
+      r.violation_mask = std::move(sample_mask);
+    } else {
+      r.violation_mask.assign(size_t(r.mask_width) * r.mask_height, 0);
+      for (int sy = 0; sy < frame.rows(); ++sy)
+        for (int sx = 0; sx < frame.cols(); ++sx)
+          if (sample_mask[int64_t(sy) * frame.cols() + sx])
+            r.violation_mask[size_t(sy / S) * r.mask_width + sx / S] = 1;
+    }
+  }
   return r;
 }
 

@@ -21,6 +21,7 @@ struct OracleOptions {
   int supersample = 1;          // S: S x S samples per pixel
   double splat_radius_px = 0;   // voxels: footprint radius in pixels; 0 = projected voxel size
   int max_examples = 5;         // violating fragments (and overlapping pairs) described
+  bool violation_mask = false;  // fill OracleResult::violation_mask (costs w*h*S*S bytes)
 };
 
 struct OracleResult {
@@ -40,6 +41,14 @@ struct OracleResult {
   // order, so their violations are the input's fault, not the orderer's.
   int64_t overlapping_pairs = 0;
   nlohmann::json overlap_examples = nlohmann::json::array();  // {cells, pixel, segments}
+  // With OracleOptions::violation_mask: per pixel (index y * mask_width + x), 1 where any of
+  // its S x S samples has a violating fragment; empty otherwise. At S = 1 the 1s number
+  // exactly violating_pixels.
+  std::vector<uint8_t> violation_mask;
+  int mask_width = 0, mask_height = 0;
+  // False for a verdict that has no primitive pairs (a compositing orderer's, orderer.h):
+  // to_json then writes violating_pairs as null, not as a count of 0.
+  bool pairs_counted = true;
 
   bool ok() const { return violating_fragments == 0; }
   bool input_fault() const { return overlapping_pairs > 0; }

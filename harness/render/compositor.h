@@ -12,6 +12,7 @@
 // render_in_order composites each pixel's fragments in drawing order; render_exact in
 // exact depth order (far to near by segment midpoint, ties by primitive id).
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,17 @@ Image render_exact(const Scene& scene, const Camera& view, const RenderOptions& 
 ImageError image_error(const Image& a, const Image& b);
 // White where a and b differ by more than 1/255, the exact image dimmed elsewhere.
 Image difference_image(const Image& test, const Image& exact);
+// The violation map: the exact image dimmed to kViolationDim, and every pixel whose mask
+// byte (index y * width + x, row 0 at the bottom) is set painted pure red, one pixel each,
+// not dilated, so the red pixels number exactly the verdict's violating_pixels (a dimmed
+// pixel never reaches a red of 1).
+constexpr float kViolationDim = 0.3f;
+Image violation_image(const Image& exact, const std::vector<uint8_t>& mask);
+// Pixels painted as violating by violation_image (pure red at 8 bits).
+int64_t marked_pixels(const Image& violations);
 // PNG through VTK's writer; written atomically (temporary file, then rename).
 void write_png(const Image& img, const std::string& path);
+// An 8-bit RGB PNG back (row 0 at the bottom, as written); for tests.
+Image read_png(const std::string& path);
 
 }  // namespace vob

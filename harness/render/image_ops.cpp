@@ -56,4 +56,24 @@ Image difference_image(const Image& test, const Image& exact) {
   return d;
 }
 
+Image violation_image(const Image& exact, const std::vector<uint8_t>& mask) {
+  if (mask.size() != size_t(exact.width) * exact.height)
+    throw InputError("image", "violation_image",
+                     "mask of " + std::to_string(mask.size()) + " pixels for a " +
+                         std::to_string(exact.width) + "x" + std::to_string(exact.height) + " image");
+  Image v = exact;
+  for (size_t p = 0; p < mask.size(); ++p)
+    for (int c = 0; c < 3; ++c)
+      v.rgb[3 * p + c] = mask[p] ? (c == 0 ? 1.0f : 0.0f) : kViolationDim * exact.rgb[3 * p + c];
+  return v;
+}
+
+int64_t marked_pixels(const Image& img) {
+  int64_t n = 0;
+  const auto byte = [](float v) { return std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f); };
+  for (size_t p = 0; p + 2 < img.rgb.size(); p += 3)
+    n += byte(img.rgb[p]) == 255 && byte(img.rgb[p + 1]) == 0 && byte(img.rgb[p + 2]) == 0;
+  return n;
+}
+
 }  // namespace vob

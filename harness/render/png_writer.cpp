@@ -8,6 +8,7 @@
 
 #include <vtkImageData.h>
 #include <vtkNew.h>
+#include <vtkPNGReader.h>
 #include <vtkPNGWriter.h>
 
 #include "harness/render/compositor.h"
@@ -46,6 +47,28 @@ void write_png(const Image& img, const std::string& path) {
     std::filesystem::remove(tmp, ec);
     throw InputError(path, "png", "cannot be renamed into place: " + ec.message());
   }
+}
+
+Image read_png(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, "png", "does not exist");
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkImageData* data = reader->GetOutput();
+  int dims[3] = {0, 0, 0};
+  data->GetDimensions(dims);
+  const int nc = data->GetNumberOfScalarComponents();
+  if (dims[0] <= 0 || dims[1] <= 0 || nc < 3 || data->GetScalarType() != VTK_UNSIGNED_CHAR)
+    throw InputError(path, "png", "is not an 8-bit RGB image");
+  Image img;
+  img.width = dims[0];
+  img.height = dims[1];
+  img.rgb.resize(size_t(img.width) * img.height * 3);
+  const auto* in = static_cast<const unsigned char*>(data->GetScalarPointer());
+  for (size_t p = 0; p < size_t(img.width) * img.height; ++p)
+    for (int c = 0; c < 3; ++c) img.rgb[3 * p + c] = in[p * nc + c] / 255.0f;
+  return img;
 }
 
 }  // namespace vob

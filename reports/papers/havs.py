@@ -256,8 +256,12 @@ def table34(records, paper, doc):
 # --- havs-k-tradeoff --------------------------------------------------------------------
 
 def _error(r):
-    """(violating pixels, covered pixels, image RMSE): HAVS its own, cell orderers the oracle's."""
+    """(violating pixels, covered pixels, image RMSE): the record's one verdict (HAVS: what it
+    composited, "judged": "composited"); HAVS records older than that verdict: its counters."""
     c = r.get("counters") or {}
+    if m.get(r, "oracle.judged") == "composited":
+        return (r["oracle"]["violating_pixels"], r["oracle"]["covered_pixels"],
+                m.get(r, "image_error.rmse", c.get("havs_image_rmse", 0.0)))
     if "havs_violating_pixels" in c:
         return c["havs_violating_pixels"], c["havs_covered_pixels"], c["havs_image_rmse"]
     return (m.get(r, "oracle.violating_pixels", 0), m.get(r, "oracle.covered_pixels", 0),

@@ -11,6 +11,7 @@
 // backend=software) is tested as an orderer of its own.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 
@@ -74,7 +75,7 @@ void PrintTo(const Case& c, std::ostream* os) { *os << c.spec << " on " << c.dat
 
 bool same(const Claims& a, const Claims& b) {
   return a.object_exact == b.object_exact && a.image_exact == b.image_exact &&
-         a.detects_cycles == b.detects_cycles;
+         a.detects_cycles == b.detects_cycles && a.composites == b.composites;
 }
 
 // The default configuration of every orderer, plus each choice value that changes its claims.
@@ -144,6 +145,18 @@ TEST_P(Conformance, CompleteAndTrueToItsClaims) {
       ASSERT_FALSE(r.input_fault()) << where << ": the test scene itself is invalid";
       covered += r.covered_pixels;
       EXPECT_EQ(r.violating_fragments, 0) << where << " S=1: " << r.to_json().dump();
+    }
+    if (claims.composites) {
+      // One verdict: a compositing orderer answers for what it composited at this view.
+      OracleOptions opt;
+      opt.violation_mask = true;
+      const Verdict v = judge(*p->orderer, c.spec, scene, cam, m.ordering, opt, "supersample");
+      EXPECT_EQ(v.json().at("judged"), "composited") << where;
+      EXPECT_EQ(v.result.samples, int64_t(cam.width) * cam.height) << where;
+      EXPECT_LE(v.result.violating_pixels, v.result.covered_pixels) << where;
+      EXPECT_EQ(std::count(v.result.violation_mask.begin(), v.result.violation_mask.end(), uint8_t(1)),
+                v.result.violating_pixels) << where;
+      EXPECT_TRUE(v.cell_order.has_value()) << where;
     }
     if (acyclic && claims.object_exact) {
       OracleOptions opt;
