@@ -11,8 +11,9 @@ Exit 1 on a regression, each named on stderr:
     any violating pixel;
   - a heuristic whose violating pixels grow by more than --pixel-growth (fraction, 0.10)
     AND by more than --pixel-slack pixels (10);
-  - a slowdown of the median total beyond --threshold (0.10 = 10%) with U-test p < --alpha
-    (0.05). When the sample counts cannot reach p < alpha (e.g. 3 against 3) the row says
+  - a slowdown of the median total beyond --threshold (0.10 = 10%) and beyond --min-ms
+    (0.05 ms: frames of microseconds shift by tens of percent on a busy machine) with
+    U-test p < --alpha (0.05). When the sample counts cannot reach p < alpha (e.g. 3 against 3) the row says
     so and is not flagged.
 Exit 0 otherwise; exit 2 on bad input (one line: file, line, reason) or when matched records
 were made with different settings (repeats, warm-up, threads, oracle, supersample, image
@@ -158,13 +159,15 @@ def compare(base, new, a):
         ratio = tn / tb if tb > 0 else float("inf")
         p, note = u_test(samples(b["total"]), samples(n["total"]), a.alpha)
         verdict = ""
-        if ratio > 1 + a.threshold:
+        if ratio > 1 + a.threshold and (tn - tb) * 1e3 < a.min_ms:
+            verdict = f"slower by < {a.min_ms:g} ms (noise floor)"
+        elif ratio > 1 + a.threshold:
             if p is not None and p < a.alpha:
                 verdict = "SLOWER"
                 regress.append(f"{label(b)}: {ratio:.2f}x slower (median {ms(tb)} -> {ms(tn)} ms, p={p:.3g})")
             elif p is None:
                 verdict = "slower? (untested)"
-        elif ratio < 1 - a.threshold and p is not None and p < a.alpha:
+        elif ratio < 1 - a.threshold and (tb - tn) * 1e3 >= a.min_ms and p is not None and p < a.alpha:
             verdict = "faster"
         pb, pn = pixels(b), pixels(n)
         if pb is None or pn is None:
@@ -195,7 +198,8 @@ def compare(base, new, a):
     md = ["# vobench compare", "", f"base: `{a.base}` ({len(base)} orderer records); "
           f"new: `{a.new}` ({len(new)}); {len(pairs)} matched, {len(only_base)} only in base, "
           f"{len(only_new)} only in new.", "",
-          f"Regression: slowdown > {a.threshold:.0%} with U-test p < {a.alpha:g}; an exact orderer "
+          f"Regression: slowdown > {a.threshold:.0%} and > {a.min_ms:g} ms with U-test p < {a.alpha:g}; "
+          f"an exact orderer "
           f"from 0 to any violating pixel; a heuristic's violating pixels + more than "
           f"{a.pixel_growth:.0%} and {a.pixel_slack} pixels. Times in ms (median of the repeats).", ""]
     md += table(["record", "base ms", "new ms", "new/base", "p (U test)", "time", "violating pixels"], rows)
@@ -247,6 +251,8 @@ def main():
     ap.add_argument("-o", "--output", help="also write FILE.md or FILE.html")
     ap.add_argument("--threshold", type=float, default=0.10, help="slowdown fraction (0.10)")
     ap.add_argument("--alpha", type=float, default=0.05, help="U-test significance (0.05)")
+    ap.add_argument("--min-ms", type=float, default=0.05,
+                    help="a slowdown smaller than this many ms per frame is not flagged (0.05)")
     ap.add_argument("--pixel-growth", type=float, default=0.10, help="heuristic pixel growth fraction (0.10)")
     ap.add_argument("--pixel-slack", type=int, default=10, help="heuristic pixel growth in pixels (10)")
     ap.add_argument("--allow-different-settings", action="store_true")

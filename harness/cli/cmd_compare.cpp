@@ -12,7 +12,7 @@ Command add_compare_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("compare", "compare two results files: time ratios, U test, correctness changes");
   struct Opts {
     std::string base, fresh, out;
-    double threshold = 0.10, alpha = 0.05, pixel_growth = 0.10;
+    double threshold = 0.10, alpha = 0.05, pixel_growth = 0.10, min_ms = 0.05;
     int pixel_slack = 10;
     bool allow = false;
   };
@@ -22,6 +22,8 @@ Command add_compare_command(CLI::App& app) {
   cmd->add_option("-o,--output", o->out, "also write FILE.md or FILE.html");
   cmd->add_option("--threshold", o->threshold, "slowdown that counts, as a fraction (default 0.10)")
       ->check(CLI::Range(0.0, 100.0));
+  cmd->add_option("--min-ms", o->min_ms, "a slowdown below this many ms per frame is noise (default 0.05)")
+      ->check(CLI::Range(0.0, 1e9));
   cmd->add_option("--alpha", o->alpha, "U-test significance level (default 0.05)")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--pixel-growth", o->pixel_growth,
                   "a heuristic's violating-pixel growth that counts, as a fraction (default 0.10)")
@@ -34,7 +36,7 @@ Command add_compare_command(CLI::App& app) {
       s << v;
       return s.str();
     };
-    std::vector<std::string> args = {o->base, o->fresh, "--threshold", num(o->threshold), "--alpha", num(o->alpha),
+    std::vector<std::string> args = {o->base, o->fresh, "--threshold", num(o->threshold), "--alpha", num(o->alpha), "--min-ms", num(o->min_ms),
                                      "--pixel-growth", num(o->pixel_growth), "--pixel-slack",
                                      std::to_string(o->pixel_slack)};
     if (!o->out.empty()) args.insert(args.end(), {"-o", o->out});
