@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/global_control.h>
+
 #include "datasets/datasets.h"
 #include "harness/bench/registry.h"
 #include "harness/view/fit.h"
@@ -30,6 +32,14 @@ Camera direction_view(const Aabb& box, const ViewDirection& d, int w, int h, boo
 
 std::string RunTags::suite_name(const SuiteSpec& s) const {
   return reproduction.empty() ? s.name : reproduction + "/" + s.name;
+}
+
+int run_threads() {
+  return static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+}
+
+std::string settings_key(int repeats, int warmup, int threads) {
+  return "|r" + std::to_string(repeats) + "w" + std::to_string(warmup) + "|t" + std::to_string(threads);
 }
 
 std::string RunTags::key_suffix() const { return scale == "default" ? "" : "|" + scale; }
@@ -93,6 +103,11 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
   std::vector<Job> jobs;
   const std::string scope = tags.suite_name(suite), label = plan.dataset.label();
   const std::string view_set = suite.orbit ? "|o" : suite.view_directions.empty() ? "|v" : "|d";
+  // Every setting that changes an orderer record (docs/pipeline.md "Jobs and keys").
+  const std::string settings = "|r" + std::to_string(suite.repeats) + "w" + std::to_string(suite.warmup) +
+                               (suite.oracle ? "|oracle" : "|nooracle") + "|ss" +
+                               std::to_string(suite.supersample) + (suite.image_error ? "|imgerr" : "") +
+                               "|t" + std::to_string(run_threads());
   if (plan.orderers)
     for (const auto& spec : algorithms_for(suite.algorithms, scene.kind()))
       for (const auto& [w, h] : suite.sizes)
@@ -102,8 +117,7 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
           // A fitted window has the camera's size; the key keeps the suite's W x H.
           j.w = cam.width, j.h = cam.height, j.view_index = vi, j.camera = cam;
           j.key = scope + "|" + spec + "|" + label + view_set + std::to_string(vi) + "/" +
-                  std::to_string(suite.views) + "|" + size_text(w, h) + "|s" +
-                  std::to_string(suite.supersample) + (suite.ortho ? "|ortho" : "") +
+                  std::to_string(suite.views) + "|" + size_text(w, h) + settings + (suite.ortho ? "|ortho" : "") +
                   (suite.zoom != 1.0 ? "|zoom" + std::to_string(suite.zoom) : "") +
                   (suite.fit ? "|fit" : "") + tags.key_suffix();
           jobs.push_back(std::move(j));
@@ -112,7 +126,8 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
     Job j;
     j.kind = Job::Kind::Probe;
     j.probe = p;
-    j.key = scope + "|" + p->label() + "|" + label + tags.key_suffix();
+    j.key = scope + "|" + p->label() + "|" + label + settings_key(p->repeats, p->warmup, run_threads()) +
+            tags.key_suffix();
     jobs.push_back(std::move(j));
   }
   return jobs;
@@ -122,7 +137,8 @@ Job sceneless_job(const SuiteSpec& suite, const ProbeSpec& probe, const RunTags&
   Job j;
   j.kind = Job::Kind::Probe;
   j.probe = &probe;
-  j.key = tags.suite_name(suite) + "|" + probe.label() + "|" + tags.key_suffix();
+  j.key = tags.suite_name(suite) + "|" + probe.label() + "|" + settings_key(probe.repeats, probe.warmup, run_threads()) +
+          tags.key_suffix();
   return j;
 }
 

@@ -20,6 +20,11 @@ struct RunTags {
   std::string key_suffix() const;                    // "" or "|tiny", "|full"
 };
 
+// The TBB parallelism in effect now (the suite's `threads` once the runner set it).
+int run_threads();
+// "|rRwW|tT": the timing settings of a probe key (orderer keys add oracle, ss, imgerr).
+std::string settings_key(int repeats, int warmup, int threads);
+
 struct Job {
   enum class Kind { Orderer, Probe } kind = Kind::Orderer;
   std::string key;

@@ -18,6 +18,11 @@ double median(std::vector<double> v) {
   const size_t m = v.size() / 2;
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
+// {min, median, samples}: the samples in repeat order, so a comparison can test them.
+nlohmann::json sample_stats(const std::vector<double>& v) {
+  if (v.empty()) return {{"min", 0.0}, {"median", 0.0}, {"samples", nlohmann::json::array()}};
+  return {{"min", *std::min_element(v.begin(), v.end())}, {"median", median(v)}, {"samples", v}};
+}
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -62,7 +67,7 @@ nlohmann::json FrameMeasurement::phases_json() const {
     for (const auto& r : repeats)
       for (const auto& [n, s] : r)
         if (n == name) v.push_back(s);
-    j[name] = {{"min", *std::min_element(v.begin(), v.end())}, {"median", median(v)}};
+    j[name] = sample_stats(v);
   }
   return j;
 }
@@ -74,8 +79,7 @@ nlohmann::json FrameMeasurement::total_json() const {
     for (const auto& [n, s] : r) t += s;
     v.push_back(t);
   }
-  if (v.empty()) return {{"min", 0.0}, {"median", 0.0}};
-  return {{"min", *std::min_element(v.begin(), v.end())}, {"median", median(v)}};
+  return sample_stats(v);
 }
 
 double FrameMeasurement::total_median() const { return total_json()["median"].get<double>(); }

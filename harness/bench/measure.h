@@ -33,8 +33,8 @@ PreparedOrderer prepare_orderer(const std::string& spec, const Scene& scene);
 struct FrameMeasurement {
   Ordering ordering;                       // of the last repeat
   std::vector<std::vector<std::pair<std::string, double>>> repeats;  // phases per repeat
-  nlohmann::json phases_json() const;      // name -> {min, median}
-  nlohmann::json total_json() const;       // {min, median}
+  nlohmann::json phases_json() const;      // name -> {min, median, samples}
+  nlohmann::json total_json() const;       // {min, median, samples}: seconds, repeat order
   double total_median() const;
 };
 FrameMeasurement measure_frame(PreparedOrderer& p, const Camera& view, int warmup, int repeats);

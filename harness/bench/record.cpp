@@ -5,6 +5,8 @@ namespace vob {
 nlohmann::json Record::to_json() const {
   nlohmann::json j;
   j["key"] = key;
+  j["schema_version"] = kSchemaVersion;
+  j["run_id"] = run_id;
   j["suite"] = suite;
   j["parameters"] = parameters;
   j["repeats"] = repeats;
@@ -49,7 +51,6 @@ nlohmann::json Record::to_json() const {
     j["paper"] = paper.empty() ? nlohmann::json(nullptr) : nlohmann::json(paper);
     j["scale"] = scale;
   }
-  j["context"] = context;
   return j;
 }
 

@@ -11,6 +11,8 @@
 
 namespace vob {
 
+constexpr int kSchemaVersion = 2;  // docs/record.schema.json
+
 struct Record {
   // Every record.
   std::string key, suite;
@@ -19,7 +21,7 @@ struct Record {
   nlohmann::json facts;           // scene_facts(): kind, n, points, b, cell_types | dims, voxels
   int repeats = 0, warmup = 0, threads = 0;
   std::string reproduction, paper, scale;  // when run by reproduce (paper empty: null)
-  nlohmann::json context;
+  std::string run_id;             // names the run's context line (context.h)
 
   // Orderer records.
   std::string algorithm;          // the spec as the suite gave it

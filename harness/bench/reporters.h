@@ -14,13 +14,15 @@ namespace vob {
 // Appends records to the results file (results.h: under flock, never rewriting a line).
 class ResultsReporter {
  public:
-  explicit ResultsReporter(const std::string& path);
+  // `context`: the run's context line (context.h), appended before the run's first record.
+  ResultsReporter(const std::string& path, nlohmann::json context);
   bool done(const std::string& key);
   // Whether the record was written (false: another process appended its key first).
   bool report(const Record& rec);
 
  private:
   ResultsFile file_;
+  nlohmann::json context_;  // null once written
 };
 
 // One progress line per dataset and per record.

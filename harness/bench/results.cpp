@@ -14,6 +14,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "harness/bench/context.h"
 #include "harness/bench/json_input.h"
 #include "harness/scene/input_error.h"
 
@@ -79,7 +80,8 @@ std::vector<nlohmann::json> ResultsFile::read_all(const std::string& path) {
   while (std::getline(in, line)) {
     ++n;
     if (blank(line)) continue;
-    out.push_back(parse_json_input(line, path, "line " + std::to_string(n)));
+    nlohmann::json r = parse_json_input(line, path, "line " + std::to_string(n));
+    if (!is_context_line(r)) out.push_back(std::move(r));
   }
   return out;
 }

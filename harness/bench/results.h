@@ -41,7 +41,8 @@ class ResultsFile {
   size_t size() const { return records_; }
   const std::string& path() const { return path_; }
 
-  // Every record of a results file, in file order. InputError for a line that is not JSON.
+  // Every record of a results file, in file order, without the runs' context lines
+  // (context.h). InputError for a line that is not JSON.
   static std::vector<nlohmann::json> read_all(const std::string& path);
 
  private:

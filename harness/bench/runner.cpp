@@ -21,16 +21,16 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 // What every record of the run shares; the dataset's part is added per dataset.
-Record base_record(const SuiteSpec& suite, const RunOptions& opt) {
+Record base_record(const SuiteSpec& suite, const RunOptions& opt, const std::string& run_id) {
   Record r;
   r.suite = opt.tags.suite_name(suite);
   r.repeats = suite.repeats;
   r.warmup = suite.warmup;
-  r.threads = static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  r.threads = run_threads();
   r.reproduction = opt.tags.reproduction;
   r.paper = opt.tags.paper;
   r.scale = opt.tags.scale;
-  r.context = run_context();
+  r.run_id = run_id;
   return r;
 }
 
@@ -48,15 +48,16 @@ Scene make_checked_scene(const DatasetSpec& ds, bool validate_full) {
 RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
   namespace fs = std::filesystem;
   RunSummary summary;
-  ResultsReporter results(opt.results_path);
+  std::optional<tbb::global_control> threads;
+  if (suite.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, suite.threads);
+  const std::string run_id = new_run_id();
+  ResultsReporter results(opt.results_path, context_line(run_id, run_context(run_threads())));
   const std::string image_dir =
       !opt.image_dir.empty() ? opt.image_dir : (fs::path(opt.results_path).parent_path() / "images").string();
   const ImageReporter images(suite, image_dir, fs::path(opt.results_path).parent_path().string());
   if (images.writes_files() || !suite.probes.empty()) require_writable_folder(image_dir);
   const ConsoleReporter console(opt.progress);
-  std::optional<tbb::global_control> threads;
-  if (suite.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, suite.threads);
-  const Record base = base_record(suite, opt);
+  const Record base = base_record(suite, opt, run_id);
   auto stop = [&] { return summary.stopped = opt.stop_requested && opt.stop_requested(); };
   // Writes a finished record, counting it.
   auto report = [&](const Record& rec) {

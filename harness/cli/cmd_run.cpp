@@ -6,6 +6,7 @@
 
 #include "harness/bench/runner.h"
 #include "harness/cli/commands.h"
+#include "harness/cli/python_script.h"
 #include "harness/scene/input_error.h"
 #include "harness/cli/stop_signals.h"
 
@@ -24,6 +25,11 @@ Command add_run_command(CLI::App& app) {
                   "cells: per-cell checks (default); full: also every pair of interpenetrating "
                   "cells of each cell dataset, before it is measured")
       ->check(CLI::IsMember({"cells", "full"}));
+  auto format = std::make_shared<std::string>("jsonl");
+  cmd->add_option("--format", *format,
+                  "jsonl (default); gbench: also Google Benchmark's JSON of the file's records "
+                  "beside it (RESULTS.gbench.json)")
+      ->check(CLI::IsMember({"jsonl", "gbench"}));
   return [=]() {
     const SuiteSpec s = SuiteSpec::load(*suite);
     std::error_code ec;
@@ -40,7 +46,8 @@ Command add_run_command(CLI::App& app) {
               << " already present, ";
     if (r.written_elsewhere) std::cerr << r.written_elsewhere << " written meanwhile by another run, ";
     std::cerr << r.violations << " with oracle violations -> " << *out << "\n";
-    if (!r.stopped) return 0;
+    if (!r.stopped)
+      return *format == "gbench" ? run_python_script("gbench.py", {*out, "-o", gbench_path(*out)}) : 0;
     const int sig = StopSignals::received();
     std::cerr << "run " << s.name << ": stopped by " << StopSignals::name(sig) << " with "
               << r.written << " records written; run the same command again to resume\n";

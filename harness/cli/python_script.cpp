@@ -26,4 +26,10 @@ int run_python_script(const std::string& script, const std::vector<std::string>&
   return WIFEXITED(status) ? WEXITSTATUS(status) : 2;
 }
 
+std::string gbench_path(const std::string& results) {
+  const size_t slash = results.rfind('/'), dot = results.rfind('.');
+  const bool ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (ext ? results.substr(0, dot) : results) + ".gbench.json";
+}
+
 }  // namespace vob

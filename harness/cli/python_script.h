@@ -10,4 +10,8 @@ namespace vob {
 // signal). InputError when python3 cannot be started.
 int run_python_script(const std::string& script, const std::vector<std::string>& args);
 
+// Where `--format gbench` writes Google Benchmark's JSON of a results file (reports/gbench.py):
+// "DIR/results.jsonl" -> "DIR/results.gbench.json".
+std::string gbench_path(const std::string& results);
+
 }  // namespace vob

@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "harness/bench/context.h"
 #include "harness/bench/json_input.h"
 #include "harness/scene/input_error.h"
 
@@ -104,6 +105,11 @@ void check_report_inputs(const std::vector<std::string>& paths) {
       if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
       const std::string where = "line " + std::to_string(n);
       const nlohmann::json r = parse_json_input(line, path, where);
+      if (is_context_line(r)) {  // a run's context (docs/pipeline.md "Records"), not a record
+        if (!r.contains("context") || !r["context"].is_object() || !r.contains("run_id") || !r["run_id"].is_string())
+          throw InputError(path, where, "context line needs a string 'run_id' and an object 'context'");
+        continue;
+      }
       const std::string problem = report_record_problem(r);
       if (!problem.empty()) throw InputError(path, where, problem);
       ++records;

@@ -41,7 +41,8 @@ for c in doc.get("claims", []):
     if not isinstance(c.get("criterion"), str) or not c["criterion"].strip():
         fail(f"claim {c.get('claim')!r}: no criterion")
 with open(os.path.join(DIR, "results.jsonl")) as f:
-    recs = [json.loads(line) for line in f if line.strip()]
+    # Context lines (one per run) are not records (docs/pipeline.md "Records").
+    recs = [r for r in (json.loads(line) for line in f if line.strip()) if r.get("type") != "context"]
 if not recs:
     fail("no records")
 for r in recs:

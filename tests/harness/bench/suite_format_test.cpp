@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
+
+#include <tbb/global_control.h>
 
 #include "harness/bench/jobs.h"
 #include "harness/bench/reproduction.h"
@@ -109,8 +112,27 @@ TEST(SuiteFormat, KeysCarryReproductionViewSetAndScale) {
   const RunTags tags{"repro", "paper", "tiny"};
   const auto jobs = dataset_jobs(s, plans[0], scene, tags);
   ASSERT_EQ(jobs.size(), 6u);  // mpvo x 6 views
-  EXPECT_EQ(jobs[2].key, "repro/s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|s1|tiny");
-  EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{})[2].key, "s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|s1");
+  const std::string t = "|t" + std::to_string(run_threads());  // the parallelism in effect
+  EXPECT_EQ(jobs[2].key, "repro/s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|r3w1|oracle|ss1" + t + "|tiny");
+  EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{})[2].key,
+            "s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|v2/6|512x512|r3w1|oracle|ss1" + t);
+}
+
+TEST(SuiteFormat, KeysChangeWithEverySettingThatChangesARecord) {
+  const SuiteSpec base = SuiteSpec::from_json(gap_suite(), "s.json");
+  const auto plans = plan_datasets(base);
+  const Scene scene = make_scene(plans[0].dataset);
+  const std::string k0 = dataset_jobs(base, plans[0], scene, RunTags{})[0].key;
+  for (const auto& [field, value] : std::vector<std::pair<std::string, json>>{
+           {"repeats", 5}, {"warmup", 0}, {"oracle", false}, {"supersample", 2}, {"image_error", true},
+           {"threads", 1}}) {
+    auto j = gap_suite();
+    j[field] = value;
+    const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
+    std::optional<tbb::global_control> threads;
+    if (s.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, s.threads);
+    EXPECT_NE(dataset_jobs(s, plans[0], scene, RunTags{})[0].key, k0) << field;
+  }
 }
 
 TEST(SuiteFormat, OrbitViewsAreOrbitFramesWithTheirOwnKeys) {
@@ -127,7 +149,8 @@ TEST(SuiteFormat, OrbitViewsAreOrbitFramesWithTheirOwnKeys) {
   const Camera want = orbit_view(scene.bounds(), 30, 10, ViewOptions{64, 32});
   EXPECT_EQ(views[1].second.to_json(), want.to_json());
   EXPECT_NE(views[1].second.to_json(), fibonacci_view(scene.bounds(), 30, 10, ViewOptions{64, 32}).to_json());
-  EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{})[1].key, "s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|o10/30|512x512|s1");
+  EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{})[1].key,
+            "s|mpvo|gap(gaps=0,nx=2,ny=2,nz=8)|o10/30|512x512|r3w1|oracle|ss1|t" + std::to_string(run_threads()));
   j.erase("views");
   j.erase("spread_views");
   j["view_directions"] = json::parse(R"([{"from": [1, 0, 0]}])");

@@ -164,18 +164,44 @@ TEST(Cli, RunWritesRecordsAndSkipsThemOnRerun) {
   ASSERT_EQ(r.code, 0) << r.out;
   std::ifstream in(results);
   std::string line;
-  int n = 0;
+  int n = 0, contexts = 0;
+  std::string run_id;
   while (std::getline(in, line)) {
     const auto j = nlohmann::json::parse(line);
+    EXPECT_EQ(j["schema_version"], 2);
+    if (j.value("type", "") == "context") {  // one per run, before its records
+      EXPECT_EQ(n, 0);
+      ++contexts;
+      run_id = j["run_id"];
+      for (const char* k : {"cpu", "threads", "libraries", "load_avg", "git_sha"})
+        EXPECT_TRUE(j["context"].contains(k)) << k;
+      continue;
+    }
     for (const char* k : {"algorithm", "dataset", "n", "b", "a", "w", "h", "camera", "phases", "total",
-                          "prepare", "bytes", "oracle", "context", "cycles"})
+                          "prepare", "bytes", "oracle", "run_id", "cycles"})
       EXPECT_TRUE(j.contains(k)) << k;
+    EXPECT_FALSE(j.contains("context"));
+    EXPECT_EQ(j["run_id"], run_id);
+    EXPECT_EQ(j["total"]["samples"].size(), 2u);
     ++n;
   }
   EXPECT_EQ(n, 4);
+  EXPECT_EQ(contexts, 1);
   r = vobench("run " + suite.string() + " -o " + results.string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("0 records written, 4 already present"), std::string::npos) << r.out;
+  // Another setting is another key: a run without the oracle, then the oracle switched on,
+  // writes every record again.
+  const fs::path suite2 = scratch("suite_nooracle.json"), results2 = scratch("oracle_on.jsonl");
+  write(suite2, R"({"name": "t", "datasets": [{"name": "gap", "set": {"nx": 3, "ny": 3, "nz": 4}}],
+                    "algorithms": ["mpvo", "centroid"], "views": 2, "sizes": ["32x32"],
+                    "repeats": 2, "warmup": 0, "oracle": false})");
+  fs::remove(results2);
+  r = vobench("run " + suite2.string() + " -o " + results2.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  r = vobench("run " + suite.string() + " -o " + results2.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_NE(r.out.find("4 records written, 0 already present"), std::string::npos) << r.out;
   const fs::path report = scratch("report");
   r = vobench("report " + results.string() + " -o " + report.string());
   ASSERT_EQ(r.code, 0) << r.out;

@@ -141,6 +141,7 @@ TEST(CliOverlap, RunMarksTheRecordAnInputFault) {
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   std::ifstream in(results);
   std::string line;
+  ASSERT_TRUE(std::getline(in, line));  // the run's context line
   ASSERT_TRUE(std::getline(in, line));
   const auto j = nlohmann::json::parse(line);
   ASSERT_TRUE(j.contains("input_fault")) << line.substr(0, 400);

@@ -64,3 +64,22 @@ TEST(ReportInput, FileErrorsNameTheFileAndLine) {
   EXPECT_NO_THROW(check_report_inputs({path.string()}));
   std::filesystem::remove(path);
 }
+
+TEST(ReportInput, ContextLinesAreAcceptedButAreNoRecords) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("vob_report_ctx_" + std::to_string(getpid()) + ".jsonl");
+  const std::string ctx =
+      R"({"key": "context|r1", "type": "context", "run_id": "r1", "schema_version": 2, "context": {"cpu": "x"}})";
+  std::ofstream(path) << ctx << "\n" << record().dump() << "\n";
+  EXPECT_NO_THROW(check_report_inputs({path.string()}));
+  std::ofstream(path) << ctx << "\n";
+  EXPECT_THROW(check_report_inputs({path.string()}), InputError);  // holds no records
+  std::ofstream(path) << R"({"key": "context|r1", "type": "context"})" << "\n" << record().dump() << "\n";
+  try {
+    check_report_inputs({path.string()});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("line 1: context line"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}

@@ -1,0 +1,74 @@
+#!/usr/bin/python3
+"""Every line `vobench run` writes fits docs/record.schema.json (orderer, probe and context
+lines, with and without the oracle), and the schema refuses lines that break it.
+
+usage: check_records.py VOBENCH SCHEMA WORKDIR
+"""
+import copy
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+import jsonschema
+
+VOBENCH, SCHEMA, WORK = sys.argv[1:4]
+
+
+def fail(why):
+    sys.exit(f"check_records: {why}")
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+results = os.path.join(WORK, "results.jsonl")
+for name, extra in (("on", {}), ("off", {"oracle": False, "repeats": 2})):
+    suite = {"name": "schema", "datasets": [{"name": "gap", "set": {"nx": 3, "ny": 3, "nz": 4}}],
+             "algorithms": ["mpvo", "centroid"], "views": 2, "sizes": ["32x32"], "repeats": 3, "warmup": 1,
+             "probes": [{"name": "sxmpvo-tiny-cells", "set": {"side": 32}}], **extra}
+    path = os.path.join(WORK, f"suite-{name}.json")
+    with open(path, "w") as f:
+        json.dump(suite, f)
+    p = subprocess.run([VOBENCH, "run", path, "-o", results], capture_output=True, text=True)
+    if p.returncode != 0:
+        fail(f"vobench run {path} exited {p.returncode}: {p.stderr[-2000:]}")
+
+with open(SCHEMA) as f:
+    schema = json.load(f)
+jsonschema.Draft202012Validator.check_schema(schema)
+v = jsonschema.Draft202012Validator(schema)
+lines = [json.loads(ln) for ln in open(results) if ln.strip()]
+kinds = {"context": 0, "probe": 0, "orderer": 0}
+runs = set()
+for n, rec in enumerate(lines, 1):
+    errs = sorted(v.iter_errors(rec), key=str)
+    if errs:
+        fail(f"{results}: line {n} breaks the schema: {errs[0].message}")
+    kind = "context" if rec.get("type") == "context" else "probe" if "probe" in rec else "orderer"
+    kinds[kind] += 1
+    if kind == "context":
+        runs.add(rec["run_id"])
+    elif rec["run_id"] not in runs:
+        fail(f"line {n}: run_id {rec['run_id']!r} has no context line before it")
+if kinds["context"] != 2 or kinds["probe"] != 2 or kinds["orderer"] != 8:
+    fail(f"expected 2 context lines, 2 probe and 8 orderer records, got {kinds}")
+
+# Lines that break the schema must be refused.
+orderer = next(r for r in lines if "algorithm" in r)
+context = next(r for r in lines if r.get("type") == "context")
+broken = []
+for what, rec, change in (
+        ("samples missing", orderer, lambda r: r["total"].pop("samples")),
+        ("phase without median", orderer, lambda r: next(iter(r["phases"].values())).pop("median")),
+        ("schema_version 1", orderer, lambda r: r.update(schema_version=1)),
+        ("context in a record", orderer, lambda r: r.update(context={"cpu": "x"})),
+        ("no run_id", orderer, lambda r: r.pop("run_id")),
+        ("context without libraries", context, lambda r: r["context"].pop("libraries"))):
+    bad = copy.deepcopy(rec)
+    change(bad)
+    if v.is_valid(bad):
+        broken.append(what)
+if broken:
+    fail(f"the schema accepts broken lines: {broken}")
+print(f"check_records: {len(lines)} lines valid ({kinds}); 6 broken lines refused")

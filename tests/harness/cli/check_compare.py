@@ -1,0 +1,113 @@
+#!/usr/bin/python3
+"""`vobench compare` and `vobench run --format gbench` on two runs of one tiny suite:
+
+1. the two runs compare without regression (exit 0; --threshold 2: a shared machine's noise
+   on sub-millisecond frames is not what this test judges);
+2. one exact orderer's record given a violation -> exit 1 naming it;
+3. one orderer's samples (and min/median) tripled -> exit 1 naming it (default thresholds);
+4. records of different settings (repeats) -> refused (exit 2) naming the setting, and
+   compared with --allow-different-settings;
+5. a malformed line -> exit 2 naming file and line;
+6. results.gbench.json has Google Benchmark's structure.
+
+usage: check_compare.py VOBENCH WORKDIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+VOBENCH, WORK = sys.argv[1:3]
+
+
+def fail(why):
+    sys.exit(f"check_compare: {why}")
+
+
+def vob(*args):
+    return subprocess.run([VOBENCH, *args], capture_output=True, text=True)
+
+
+def run_suite(name, repeats, fmt=None):
+    suite = {"name": "cmp", "datasets": [{"name": "gap", "set": {"nx": 3, "ny": 3, "nz": 4}}],
+             "algorithms": ["xmpvo", "centroid"], "views": 2, "sizes": ["32x32"], "repeats": repeats, "warmup": 1}
+    path = os.path.join(WORK, name + ".json")
+    with open(path, "w") as f:
+        json.dump(suite, f)
+    out = os.path.join(WORK, name, "results.jsonl")
+    p = vob("run", path, "-o", out, *(["--format", fmt] if fmt else []))
+    if p.returncode != 0:
+        fail(f"run {name} exited {p.returncode}: {p.stderr[-2000:]}")
+    return out
+
+
+def lines(path):
+    return [json.loads(ln) for ln in open(path) if ln.strip()]
+
+
+def write(path, recs):
+    with open(path, "w") as f:
+        f.writelines(json.dumps(r) + "\n" for r in recs)
+
+
+def expect(args, code, *names):
+    p = vob("compare", *args)
+    if p.returncode != code or any(n not in p.stdout + p.stderr for n in names):
+        fail(f"compare {' '.join(args)}: exit {p.returncode} (want {code}, naming {names}):\n"
+             f"{p.stdout[-1500:]}\n{p.stderr[-1500:]}")
+    return p
+
+
+shutil.rmtree(WORK, ignore_errors=True)
+os.makedirs(WORK)
+base = run_suite("base", 5, fmt="gbench")
+new = run_suite("new", 5)
+p = expect([base, new, "--threshold", "2", "-o", os.path.join(WORK, "cmp.html")], 0, "No regression")
+if "<table>" not in open(os.path.join(WORK, "cmp.html")).read():
+    fail("cmp.html has no table")
+plain = vob("compare", base, new)  # default threshold: shown, not judged (noise)
+print(plain.stdout.split("## Phases")[0])
+
+recs = lines(base)
+exact = next(r for r in recs if r.get("algorithm") == "xmpvo" and r.get("oracle"))  # claims object_exact
+bad = [dict(r, oracle=dict(r["oracle"], violating_pixels=7)) if r is exact else r for r in recs]
+write(os.path.join(WORK, "violating.jsonl"), bad)
+expect([base, os.path.join(WORK, "violating.jsonl")], 1, "claims exactness", exact["algorithm"])
+
+slow = next(r for r in recs if r.get("algorithm") == "xmpvo")  # ~1 ms frames: above --min-ms
+tripled = []
+for r in recs:
+    if r is slow:
+        t = r["total"]
+        r = dict(r, total={"min": 3 * t["min"], "median": 3 * t["median"], "samples": [3 * s for s in t["samples"]]})
+    tripled.append(r)
+write(os.path.join(WORK, "tripled.jsonl"), tripled)
+expect([base, os.path.join(WORK, "tripled.jsonl")], 1, "slower", slow["algorithm"])
+
+other = run_suite("other", 4)
+expect([base, other], 2, "refused", "repeats")
+p = vob("compare", base, other, "--allow-different-settings", "--threshold", "2")
+if p.returncode != 0 or "Settings differ" not in p.stdout:
+    fail(f"--allow-different-settings: exit {p.returncode}\n{p.stdout[-800:]}{p.stderr[-800:]}")
+broken = os.path.join(WORK, "broken.jsonl")
+with open(broken, "w") as f:
+    f.write(open(base).readline() + "{not json\n")
+expect([base, broken], 2, "broken.jsonl: line 2")
+
+g = json.load(open(os.path.join(WORK, "base", "results.gbench.json")))
+orderers = [r for r in recs if "algorithm" in r]
+for k in ("date", "host_name", "num_cpus", "mhz_per_cpu", "caches", "library_build_type"):
+    if k not in g.get("context", {}):
+        fail(f"gbench context lacks {k}")
+its = [b for b in g["benchmarks"] if b["run_type"] == "iteration"]
+meds = [b for b in g["benchmarks"] if b["run_type"] == "aggregate" and b["aggregate_name"] == "median"]
+if len(its) != 5 * len(orderers) or len(meds) != len(orderers):
+    fail(f"gbench: {len(its)} iteration and {len(meds)} median rows for {len(orderers)} records")
+for b in g["benchmarks"]:
+    for k in ("name", "run_name", "run_type", "repetitions", "real_time", "cpu_time", "time_unit", "iterations"):
+        if k not in b:
+            fail(f"gbench row {b.get('name')} lacks {k}")
+    if b["time_unit"] != "ms" or b["repetitions"] != 5:
+        fail(f"gbench row {b['name']}: {b['time_unit']}, {b['repetitions']} repetitions")
+print(f"check_compare: ok ({len(orderers)} records per run, {len(g['benchmarks'])} gbench rows)")
