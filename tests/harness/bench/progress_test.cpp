@@ -89,7 +89,7 @@ TEST(JobPlan, ProbesAndViewChoicesCount) {
   EXPECT_EQ(plan.datasets.back().label, "");
   EXPECT_DOUBLE_EQ(plan.datasets[0].primitives, 2000);
   s = suite_of(R"({"name": "q", "datasets": [{"name": "sphere"}], "algorithms": ["triangle-centroid"],
-      "view_directions": [{"from": [1, 0, 0]}, {"from": [0, 1, 0]}, {"from": [0, 0, 1]}]})");
+      "view_directions": [{"from": [1, 0, 0]}, {"from": [0, 1, 0]}, {"from": [0, 0, 1], "up": [0, 1, 0]}]})");
   EXPECT_EQ(plan_run(s, RunTags{}, KnownRecords{}).jobs(), 3u);
   s = suite_of(R"({"name": "q", "datasets": [{"name": "sphere"}], "algorithms": ["triangle-centroid"],
       "orbit": true, "views": 8, "view_indices": [1, 2]})");
