@@ -12,6 +12,7 @@
 #include "datasets/generators/view_cases.h"
 #include "datasets/generators/volumes.h"
 #include "datasets/generators/zoo.h"
+#include "harness/bench/names.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -105,7 +106,9 @@ const std::vector<DatasetInfo>& dataset_registry() {
 const DatasetInfo& find_dataset(const std::string& name) {
   for (const auto& info : dataset_registry())
     if (info.name == name) return info;
-  throw InputError("--dataset", name, "unknown dataset (see: vobench list)");
+  std::vector<std::string> names;
+  for (const auto& info : dataset_registry()) names.push_back(info.name);
+  throw InputError("--dataset", name, "unknown dataset (" + known_names_hint(name, names) + ")");
 }
 
 Scene make_dataset(const std::string& name, Params params) {

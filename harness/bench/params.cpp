@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "harness/bench/names.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -80,8 +81,14 @@ bool Params::get_bool(const std::string& key, bool def) {
 }
 
 void Params::check_all_used() const {
+  // The keys read are the owner's parameters: they name the known ones in the message.
   for (const auto& [k, v] : values_)
-    if (!used_.count(k)) throw InputError(owner_, "parameter " + k, "is not a known parameter");
+    if (!used_.count(k))
+      throw InputError(owner_, "parameter " + k,
+                       "is not a known parameter (" +
+                           (used_.empty() ? std::string("it takes none")
+                                          : known_names_hint(k, {used_.begin(), used_.end()})) +
+                           ")");
 }
 
 nlohmann::json Params::to_json() const {

@@ -19,6 +19,7 @@
 #include "algorithms/xmpvo/xmpvo.h"
 #include "algorithms/voxel/grid_orderers.h"
 #include "algorithms/voxel/voxel_probes.h"
+#include "harness/bench/names.h"
 #include "harness/bench/probe.h"
 #include "harness/scene/input_error.h"
 
@@ -49,9 +50,9 @@ const std::vector<OrdererInfo>& orderer_registry() {
 const OrdererInfo& find_orderer(const std::string& name) {
   for (const auto& info : orderer_registry())
     if (info.name == name) return info;
-  std::string all;
-  for (const auto& info : orderer_registry()) all += (all.empty() ? "" : ", ") + info.name;
-  throw InputError("--algorithm", name, "unknown orderer (known: " + all + ")");
+  std::vector<std::string> names;
+  for (const auto& info : orderer_registry()) names.push_back(info.name);
+  throw InputError("--algorithm", name, "unknown orderer (" + known_names_hint(name, names) + ")");
 }
 
 const OrdererInfo& spec_orderer(const std::string& spec) {
@@ -82,9 +83,9 @@ const std::vector<ProbeInfo>& probe_registry() {
 const ProbeInfo& find_probe(const std::string& name) {
   for (const auto& info : probe_registry())
     if (info.name == name) return info;
-  std::string all;
-  for (const auto& info : probe_registry()) all += (all.empty() ? "" : ", ") + info.name;
-  throw InputError("probe", name, "unknown probe (known: " + all + ")");
+  std::vector<std::string> names;
+  for (const auto& info : probe_registry()) names.push_back(info.name);
+  throw InputError("probe", name, "unknown probe (" + known_names_hint(name, names) + ")");
 }
 
 std::unique_ptr<Orderer> make_orderer(const std::string& spec) {

@@ -9,6 +9,7 @@
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
+#include "harness/bench/job_plan.h"
 #include "harness/bench/reporters.h"
 #include "harness/scene/cell_overlap.h"
 #include "harness/scene/input_error.h"
@@ -56,7 +57,16 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
       !opt.image_dir.empty() ? opt.image_dir : (fs::path(opt.results_path).parent_path() / "images").string();
   const ImageReporter images(suite, image_dir, fs::path(opt.results_path).parent_path().string());
   if (images.writes_files() || !suite.probes.empty()) require_writable_folder(image_dir);
-  const ConsoleReporter console(opt.progress);
+  // [k/N] and the time left (progress.h): N counted before the first scene is made.
+  const KnownRecords known = KnownRecords::read(opt.results_path);
+  const RunPlan planned = plan_run(suite, opt.tags, known);
+  ProgressTracker own_tracker;
+  ProgressTracker& tracker = opt.tracker ? *opt.tracker : own_tracker;
+  if (!opt.tracker) {
+    tracker.set_calibration(known.seconds_per_unit());
+    tracker.add(planned.jobs(), planned.cost_to_do());
+  }
+  const ConsoleReporter console(with_status(opt.progress, tracker));
   const Record base = base_record(suite, opt, run_id);
   auto stop = [&] { return summary.stopped = opt.stop_requested && opt.stop_requested(); };
   // Writes a finished record, counting it.
@@ -78,15 +88,23 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     dataset_base.row = plan.dataset.row_label();
     dataset_base.dataset_spec = plan.dataset.to_json();
     dataset_base.facts = scene_facts(scene);
+    const std::vector<Job> jobs = dataset_jobs(suite, plan, scene, opt.tags);
+    const double primitives = double(scene.num_primitives());
+    const PlannedDataset made = plan_made(suite, plan.dataset.label(), jobs, primitives, known);
+    tracker.replace(planned.datasets[di].jobs.size(), planned.datasets[di].cost_to_do(), made.jobs.size(),
+                    made.cost_to_do());
     std::unique_ptr<PreparedOrderer> prepared;  // of the current spec, once a record is missing
-    for (const Job& job : dataset_jobs(suite, plan, scene, opt.tags)) {
+    for (const Job& job : jobs) {
       if (stop()) return summary;
       if (results.done(job.key)) {
         ++summary.skipped;
+        tracker.skipped();
         continue;
       }
       if (job.kind == Job::Kind::Probe) {
-        report(run_probe_job(job, &scene, suite, &plan.dataset, dataset_base, image_dir, opt.progress));
+        Record rec = run_probe_job(job, &scene, suite, &plan.dataset, dataset_base, image_dir, opt.progress);
+        tracker.finished(job_cost(suite, job, primitives));
+        report(rec);
         continue;
       }
       if (!prepared || prepared->spec != job.spec) {
@@ -96,6 +114,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
       Measurement m = measure_orderer_job(job, *prepared, scene, suite, dataset_base);
       if (m.violated) ++summary.violations;
       images.report(m, scene, job.camera);
+      tracker.finished(job_cost(suite, job, primitives));
       report(m.record);
     }
   }
@@ -104,9 +123,12 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     if (stop()) return summary;
     if (results.done(job.key)) {
       ++summary.skipped;
+      tracker.skipped();
       continue;
     }
-    report(run_probe_job(job, nullptr, suite, nullptr, base, image_dir, opt.progress));
+    Record rec = run_probe_job(job, nullptr, suite, nullptr, base, image_dir, opt.progress);
+    tracker.finished(job_cost(suite, job, 0));
+    report(rec);
   }
   return summary;
 }

@@ -7,6 +7,7 @@
 
 #include "harness/bench/jobs.h"
 #include "harness/bench/measure.h"
+#include "harness/bench/progress.h"
 #include "harness/bench/suite.h"
 #include "harness/oracle/oracle.h"  // for the callers that judge orders themselves
 
@@ -21,6 +22,9 @@ struct RunOptions {
   // measuring it; a dataset with such cells is an InputError naming the first pair.
   bool validate_full = false;
   RunTags tags;  // set by reproduce: key prefix and the records' reproduction, paper, scale
+  // The [k/N] of the record lines, when the caller counts several suites (reproduce) and
+  // has added this suite's plan to it; null: the run counts its own jobs.
+  ProgressTracker* tracker = nullptr;
 };
 struct RunSummary {
   int written = 0;             // records this run appended

@@ -8,7 +8,9 @@
 #include <sstream>
 
 #include "datasets/datasets.h"
+#include "harness/bench/job_plan.h"
 #include "harness/bench/json_input.h"
+#include "harness/bench/names.h"
 #include "harness/bench/probe.h"
 #include "harness/bench/registry.h"
 #include "harness/bench/scale_overlay.h"
@@ -125,8 +127,11 @@ std::vector<DatasetSpec> read_dataset(const SuiteReader& r, const nlohmann::json
   ds.name = r.string(d["name"], where + ".name");
   if (d.contains("tetrahedralize")) r.fail(where + ".tetrahedralize", "applies to \"input\" files only");
   const auto& known = dataset_registry();
-  if (std::none_of(known.begin(), known.end(), [&](const DatasetInfo& i) { return i.name == ds.name; }))
-    r.fail(where + ".name", "'" + ds.name + "' is not a dataset (see: vobench list)");
+  if (std::none_of(known.begin(), known.end(), [&](const DatasetInfo& i) { return i.name == ds.name; })) {
+    std::vector<std::string> names;
+    for (const auto& i : known) names.push_back(i.name);
+    r.fail(where + ".name", "'" + ds.name + "' is not a dataset (" + known_names_hint(ds.name, names) + ")");
+  }
   const auto points = r.set_and_grid(d, where);
   if (points.size() > 1 && !label.empty() && label.find('{') == std::string::npos)
     r.fail(where + ".label", "must name the grid's keys as {key}, or every grid point gets the same row");
@@ -162,13 +167,31 @@ void check_orderer(const SuiteReader& r, const std::string& spec, const std::str
     r.fail(where, e.what());
   }
   const auto& known = orderer_registry();
-  if (std::none_of(known.begin(), known.end(), [&](const OrdererInfo& i) { return i.name == name; }))
-    r.fail(where, "'" + name + "' is not an orderer (see: vobench list)");
+  if (std::none_of(known.begin(), known.end(), [&](const OrdererInfo& i) { return i.name == name; })) {
+    std::vector<std::string> names;
+    for (const auto& i : known) names.push_back(i.name);
+    r.fail(where, "'" + name + "' is not an orderer (" + known_names_hint(name, names) + ")");
+  }
   try {
     make_orderer(spec);  // constructs only: parameters known and in range, nothing prepared
   } catch (const InputError& e) {
     r.fail(where, e.what());
   }
+}
+
+// An orderer that takes none of the suite's kinds of scene would silently run nothing.
+void check_some_dataset_fits(const SuiteReader& r, const std::string& spec, const std::vector<DatasetSpec>& datasets,
+                             const std::string& where) {
+  if (spec == "all") return;
+  const SceneKind kind = spec_orderer(spec).kind;
+  std::string kinds;
+  for (const auto& ds : datasets) {
+    const SceneKind k = dataset_kind(ds);
+    if (k == kind) return;
+    if (kinds.find(scene_kind_name(k)) == std::string::npos) kinds += (kinds.empty() ? "" : ", ") + std::string(scene_kind_name(k));
+  }
+  r.fail(where, "'" + spec + "' orders " + scene_kind_name(kind) + "; no dataset of this suite is " +
+                    scene_kind_name(kind) + " (they are " + kinds + "), so it would run nothing");
 }
 
 // A string spec ("havs:k=6", "all") or {"name", "set", "grid"}: one spec per grid point.
@@ -199,7 +222,11 @@ std::vector<ProbeSpec> read_probe(const SuiteReader& r, const nlohmann::json& e,
   p.name = r.string(e["name"], where + ".name");
   const auto& known = probe_registry();
   const auto info = std::find_if(known.begin(), known.end(), [&](const ProbeInfo& i) { return i.name == p.name; });
-  if (info == known.end()) r.fail(where + ".name", "'" + p.name + "' is not a probe (see: vobench list)");
+  if (info == known.end()) {
+    std::vector<std::string> names;
+    for (const auto& i : known) names.push_back(i.name);
+    r.fail(where + ".name", "'" + p.name + "' is not a probe (" + known_names_hint(p.name, names) + ")");
+  }
   p.repeats = e.contains("repeats") ? r.integer(e["repeats"], where + ".repeats", 1, kMaxRepeats) : suite.repeats;
   p.warmup = e.contains("warmup") ? r.integer(e["warmup"], where + ".warmup", 0, kMaxRepeats) : suite.warmup;
   if (e.contains("datasets")) p.datasets = read_datasets(r, e["datasets"], where + ".datasets");
@@ -310,8 +337,10 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
     const auto& algorithms = r.array(j["algorithms"], "algorithms");
     if (s.datasets.empty()) r.fail("algorithms", "need datasets");
     for (size_t i = 0; i < algorithms.size(); ++i)
-      for (auto& spec : read_algorithm(r, algorithms[i], "algorithms[" + std::to_string(i) + "]"))
+      for (auto& spec : read_algorithm(r, algorithms[i], "algorithms[" + std::to_string(i) + "]")) {
+        check_some_dataset_fits(r, spec, s.datasets, "algorithms[" + std::to_string(i) + "]");
         s.algorithms.push_back(std::move(spec));
+      }
   }
   if (j.contains("probes")) {
     const auto& probes = r.array(j["probes"], "probes");

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "harness/bench/names.h"
 #include "harness/bench/reproduction.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/reproduce.h"
@@ -22,9 +23,9 @@ int exit_status(int status) {
 }
 
 [[noreturn]] void unknown_reproduction(const std::string& name, const std::string& suites_dir) {
-  std::string all;
-  for (const auto& r : list_reproductions(suites_dir)) all += (all.empty() ? "" : ", ") + r.name;
-  throw InputError("reproduction", "'" + name + "'", "is not known (known: " + all + ")");
+  std::vector<std::string> names;
+  for (const auto& r : list_reproductions(suites_dir)) names.push_back(r.name);
+  throw InputError("reproduction", "'" + name + "'", "is not known (" + known_names_hint(name, names) + ")");
 }
 }  // namespace
 
@@ -43,6 +44,10 @@ Command add_reproduce_command(CLI::App& app) {
                 "without it a rerun keeps them and computes only what is missing");
   auto* full_flag = cmd->add_flag("--full", *full, "the paper's full sizes where they are opt-in");
   cmd->add_flag("--tiny", *tiny, "the smallest sizes (seconds; the repro tests)")->excludes(full_flag);
+  auto dry_run = std::make_shared<bool>(false);
+  cmd->add_flag("--dry-run", *dry_run,
+                "list the jobs (those already in the output folder marked) with their estimated cost "
+                "and exit; makes no scene, writes nothing");
   return [=]() {
     std::error_code ec;
     if (!out_dir->empty() && std::filesystem::exists(*out_dir, ec) && !std::filesystem::is_directory(*out_dir, ec))
@@ -58,6 +63,10 @@ Command add_reproduce_command(CLI::App& app) {
         Reproduction rep = load_reproduction(e.path, scale, suites_dir);
         if (!rep.paper.empty()) reps.push_back(std::move(rep));
       }
+      if (*dry_run) {
+        dry_run_reproductions(reps, out, *force);
+        return 0;
+      }
       const int status = reproduce_all(reps, out, *force);
       if (status == 0) std::cerr << "reproduce all: wrote " << out << "/claims-summary.md\n";
       return exit_status(status);
@@ -65,6 +74,10 @@ Command add_reproduce_command(CLI::App& app) {
     const std::string path = find_reproduction(suites_dir, *name);
     if (path.empty()) unknown_reproduction(*name, suites_dir);
     const Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
+    if (*dry_run) {
+      dry_run_reproductions({rep}, out, *force);
+      return 0;
+    }
     const int status = reproduce(rep, out, *force);
     if (status == 0) std::cerr << "reproduce " << *name << ": wrote " << out << "/" << *name << ".md\n";
     return exit_status(status);

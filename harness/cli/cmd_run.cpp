@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "harness/bench/runner.h"
+#include "harness/cli/dry_run.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/python_script.h"
 #include "harness/scene/input_error.h"
@@ -30,11 +31,20 @@ Command add_run_command(CLI::App& app) {
                   "jsonl (default); gbench: also Google Benchmark's JSON of the file's records "
                   "beside it (RESULTS.gbench.json)")
       ->check(CLI::IsMember({"jsonl", "gbench"}));
+  auto dry_run = std::make_shared<bool>(false);
+  cmd->add_flag("--dry-run", *dry_run,
+                "list the jobs (done ones marked) with their estimated cost and exit; makes no scene, "
+                "writes nothing");
   return [=]() {
     const SuiteSpec s = SuiteSpec::load(*suite);
     std::error_code ec;
     if (std::filesystem::exists(*out, ec) && !std::filesystem::is_regular_file(*out, ec))
       throw InputError("--output", "'" + *out + "'", "exists and is not a results file");
+    if (*dry_run) {
+      const KnownRecords known = KnownRecords::read(*out);
+      print_dry_run_total(std::cout, "run " + s.name, print_dry_run(std::cout, s, RunTags{}, known), known, *out);
+      return 0;
+    }
     const StopSignals signals;
     RunOptions opt;
     opt.results_path = *out;

@@ -8,8 +8,10 @@
 #include <set>
 
 #include "harness/bench/atomic_file.h"
+#include "harness/bench/job_plan.h"
 #include "harness/bench/results.h"
 #include "harness/bench/runner.h"
+#include "harness/cli/dry_run.h"
 #include "harness/cli/python_script.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/scene/input_error.h"
@@ -34,7 +36,7 @@ void check_scale_of_folder(const Reproduction& rep, const std::string& results) 
 }  // namespace
 
 int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& name,
-                    const std::string& out_dir, bool force, const RunTags& tags) {
+                    const std::string& out_dir, bool force, const RunTags& tags, ProgressTracker* all) {
   require_writable_folder(out_dir);
   const std::string results = results_of(out_dir);
   if (force) {
@@ -44,14 +46,30 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
     if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
   }
   const StopSignals signals;
+  // [k/N] over every suite of the reproduction, counted before the first scene is made.
+  const KnownRecords known = KnownRecords::read(results);
+  ProgressTracker tracker(all);
+  tracker.set_calibration(known.seconds_per_unit());
+  size_t done = 0;
+  for (const SuiteSpec& suite : suites) {
+    const RunPlan plan = plan_run(suite, tags, known);
+    tracker.add(plan.jobs(), plan.cost_to_do());
+    done += plan.jobs() - plan.to_do();
+  }
+  std::fprintf(stderr, "%s: %zu jobs, %zu already done\n", name.c_str(), tracker.total(), done);
   RunOptions opt;
   opt.results_path = results;
   opt.tags = tags;
+  opt.tracker = &tracker;
   opt.stop_requested = [] { return StopSignals::received() != 0; };
   const auto t0 = std::chrono::steady_clock::now();
   opt.progress = [t0](const std::string& line) {
+    // Record lines carry their own elapsed time ([k/N] ...); the others get it here.
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::fprintf(stderr, "[%6.1f s] %s\n", s, line.c_str());
+    if (line.rfind("[", 0) == 0)
+      std::fprintf(stderr, "%s\n", line.c_str());
+    else
+      std::fprintf(stderr, "[%6.1f s] %s\n", s, line.c_str());
   };
   for (const SuiteSpec& suite : suites) {
     std::fprintf(stderr, "suite %s\n", suite.name.c_str());
@@ -69,10 +87,10 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
   return 0;
 }
 
-int reproduce(const Reproduction& rep, const std::string& out_dir, bool force) {
+int reproduce(const Reproduction& rep, const std::string& out_dir, bool force, ProgressTracker* all) {
   if (!force) check_scale_of_folder(rep, results_of(out_dir));
   const RunTags tags{rep.name, rep.paper, rep.scale};
-  const int status = run_suites_into(rep.suites, rep.name, out_dir, force, tags);
+  const int status = run_suites_into(rep.suites, rep.name, out_dir, force, tags, all);
   if (status != 0) return status;
   if (!rep.paper.empty()) return run_python_script("build_tables.py", {out_dir, "--only", rep.name});
   return run_report({results_of(out_dir)}, out_dir, rep.title, rep.name);
@@ -81,11 +99,23 @@ int reproduce(const Reproduction& rep, const std::string& out_dir, bool force) {
 int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force) {
   for (const Reproduction& rep : reps)
     if (!force) check_scale_of_folder(rep, results_of(out_dir));
+  // [k/N] over every reproduction as well as per reproduction.
+  ProgressTracker all;
+  {
+    const KnownRecords known = force ? KnownRecords() : KnownRecords::read(results_of(out_dir));
+    all.set_calibration(known.seconds_per_unit());
+    for (const Reproduction& rep : reps)
+      for (const SuiteSpec& suite : rep.suites) {
+        const RunPlan plan = plan_run(suite, RunTags{rep.name, rep.paper, rep.scale}, known);
+        all.add(plan.jobs(), plan.cost_to_do());
+      }
+    std::cerr << "reproduce all: " << reps.size() << " reproductions, " << all.total() << " jobs\n";
+  }
   int first_failure = 0;
   bool drop = force;
   for (const Reproduction& rep : reps) {
     std::cerr << "reproduce all: " << rep.name << "\n";
-    const int status = reproduce(rep, out_dir, drop);
+    const int status = reproduce(rep, out_dir, drop, &all);
     drop = false;
     if (status == StopSignals::exit_code(SIGINT) || status == StopSignals::exit_code(SIGTERM)) return status;
     if (status != 0) {
@@ -95,6 +125,20 @@ int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_
   }
   const int summary = run_python_script("build_tables.py", {out_dir});  // every table and the summary
   return first_failure != 0 ? first_failure : summary;
+}
+
+void dry_run_reproductions(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force) {
+  const std::string results = results_of(out_dir);
+  const KnownRecords known = force ? KnownRecords() : KnownRecords::read(results);
+  DryRunTotals all;
+  for (const Reproduction& rep : reps) {
+    DryRunTotals t;
+    std::cout << "reproduction " << rep.name << " (" << rep.scale << " scale)\n";
+    for (const SuiteSpec& suite : rep.suites) t += print_dry_run(std::cout, suite, RunTags{rep.name, rep.paper, rep.scale}, known);
+    print_dry_run_total(std::cout, rep.name, t, known, results);
+    all += t;
+  }
+  if (reps.size() > 1) print_dry_run_total(std::cout, "all", all, known, results);
 }
 
 int report_folder(const std::string& dir, const std::string& suites_dir) {

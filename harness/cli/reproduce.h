@@ -5,20 +5,27 @@
 #include <vector>
 
 #include "harness/bench/jobs.h"
+#include "harness/bench/progress.h"
 #include "harness/bench/reproduction.h"
 
 namespace vob {
 
 // Runs the suites into out_dir/results.jsonl, keeping the records already there unless
-// `force` (which also drops out_dir/images), printing progress. Returns 0, or 130 / 143
-// when SIGINT / SIGTERM stopped the run (every finished record is on disk).
+// `force` (which also drops out_dir/images), printing progress: [k/N] over all the suites
+// (and over `all`, reproduce all's tracker, when given). Returns 0, or 130 / 143 when
+// SIGINT / SIGTERM stopped the run (every finished record is on disk).
 int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& name,
-                    const std::string& out_dir, bool force, const RunTags& tags);
+                    const std::string& out_dir, bool force, const RunTags& tags,
+                    ProgressTracker* all = nullptr);
 
 // The whole reproduction: its suites, then its tables (build_tables.py --only NAME when it
 // has a paper, else the generic report as NAME.md). Refuses (InputError) a folder holding
 // this reproduction's records at another scale. Returns the exit status.
-int reproduce(const Reproduction& rep, const std::string& out_dir, bool force);
+int reproduce(const Reproduction& rep, const std::string& out_dir, bool force, ProgressTracker* all = nullptr);
+
+// `--dry-run`: the jobs of the reproductions (dry_run.h) against out_dir/results.jsonl, a
+// total per reproduction and, for more than one, over all. Makes no scene, writes nothing.
+void dry_run_reproductions(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force);
 
 // `vobench reproduce all`: every reproduction with a paper, validated first, run in name
 // order into the one folder out_dir/results.jsonl (record keys carry the reproduction), each

@@ -1,0 +1,212 @@
+#include "harness/bench/job_plan.h"
+
+#include <cmath>
+#include <filesystem>
+
+#include "datasets/datasets.h"
+#include "harness/bench/results.h"
+
+namespace vob {
+
+namespace {
+constexpr double kUnknownPrimitives = 1e5;
+
+double param(const DatasetSpec& ds, const std::string& key, double def) {
+  const auto it = ds.set.find(key);
+  if (it == ds.set.end()) return def;
+  char* end = nullptr;
+  const double v = std::strtod(it->second.c_str(), &end);
+  return end && *end == '\0' && std::isfinite(v) ? v : def;
+}
+
+// The kind of an input file from its extension (what load_input dispatches on).
+SceneKind input_kind(const DatasetSpec& ds) {
+  const std::string ext = std::filesystem::path(ds.input).extension().string();
+  if (ext == ".vti" || ext == ".inr") return SceneKind::Voxels;
+  if (ext == ".off" && !ds.tetrahedralize) return SceneKind::Triangles;
+  return SceneKind::Cells;
+}
+
+
+// A scene of `kind` small enough to make in microseconds: it stands in for the dataset when
+// its jobs are listed (keys, views; the cameras of datasets with their own depend only on
+// the bounding box, their number not at all).
+const Scene& stand_in(SceneKind kind) {
+  static const Scene cells = [] {
+    Params p("gap");
+    for (const char* k : {"nx", "ny", "nz"}) p.set(k, "1");
+    return make_dataset("gap", p);
+  }();
+  static const Scene triangles = [] {
+    Params p("sphere");
+    p.set("subdiv", "0");
+    return make_dataset("sphere", p);
+  }();
+  static const Scene voxels = [] {
+    Params p("shells");
+    for (const char* k : {"nx", "ny", "nz"}) p.set(k, "8");
+    return make_dataset("shells", p);
+  }();
+  return kind == SceneKind::Cells ? cells : kind == SceneKind::Triangles ? triangles : voxels;
+}
+
+std::string job_line(const Job& j) {
+  if (j.kind == Job::Kind::Probe) return j.probe->label();
+  return j.spec + " view " + std::to_string(j.view_index) + " " + std::to_string(j.w) + "x" + std::to_string(j.h);
+}
+}  // namespace
+
+SceneKind dataset_kind(const DatasetSpec& ds) {
+  return ds.input.empty() ? find_dataset(ds.name).kind : input_kind(ds);
+}
+
+double orderer_job_cost(double primitives, double pixels, int repeats, int warmup, int oracle_samples) {
+  return (repeats + warmup) * (primitives + pixels) + (oracle_samples > 0 ? primitives + pixels * oracle_samples : 0);
+}
+
+double probe_job_cost(double primitives, int repeats, int warmup) {
+  return (repeats + warmup) * (primitives > 0 ? primitives : kUnknownPrimitives);
+}
+
+double job_cost(const SuiteSpec& suite, const Job& job, double primitives) {
+  if (job.kind == Job::Kind::Probe) return probe_job_cost(primitives, job.probe->repeats, job.probe->warmup);
+  return orderer_job_cost(primitives, double(job.w) * job.h, suite.repeats, suite.warmup,
+                          suite.oracle ? suite.supersample * suite.supersample : 0);
+}
+
+double estimated_primitives(const DatasetSpec& ds, std::string* from) {
+  if (from) *from = "parameters";
+  if (!ds.input.empty()) {
+    std::error_code ec;
+    const auto bytes = std::filesystem::file_size(ds.input, ec);
+    if (from) *from = "file size (a guess)";
+    return ec ? 0 : double(bytes) / 60;  // ~60 bytes per cell in VTK/TetGen text or XML
+  }
+  const std::string& n = ds.name;
+  const auto p = [&](const char* k, double d) { return param(ds, k, d); };
+  if (n == "gap") return 6 * p("nx", 50) * p("ny", 50) * p("nz", 100);
+  if (n == "helix") return p("cells", 20000);
+  if (n == "zoo") return 7200 * std::pow(p("scale", 1), 3);
+  if (n == "sphere") return 20 * std::pow(4, p("subdiv", 3));
+  if (n == "spheres") return 180 * std::pow(4, p("subdiv", 2));
+  if (n == "block" || n == "shells" || n == "sparse") return p("nx", 64) * p("ny", 64) * p("nz", 64);
+  if (n == "skull") return 64 * 64 * 64;
+  if (n == "edge-on") return 6 * std::pow(p("n", 8), 3);
+  if (n == "eye-in-plane" || n == "eye-inside") return 6 * std::pow(p("n", 6), 3);
+  if (n.rfind("touching-", 0) == 0) return 6 * std::pow(p("n", 6), 3);
+  if (n == "slivers") return 6 * std::pow(p("n", 8), 2) * 3;
+  if (n == "tiny") return p("count", 2000);
+  if (n == "cycle") return p("cells", 6);
+  if (n == "cycle-sticks") return 3;
+  if (n == "offset") return 20000;
+  if (from) *from = "unknown (1e5 assumed)";
+  return 0;
+}
+
+KnownRecords KnownRecords::read(const std::string& results_path) {
+  KnownRecords k;
+  std::error_code ec;
+  if (results_path.empty() || !std::filesystem::is_regular_file(results_path, ec)) return k;
+  for (const auto& r : ResultsFile::read_all(results_path)) {
+    if (!r.is_object()) continue;
+    if (r.contains("key") && r["key"].is_string()) k.keys.insert(r["key"].get<std::string>());
+    if (!r.contains("dataset") || !r["dataset"].is_string() || !r.contains("n") || !r["n"].is_number()) continue;
+    const double n = r["n"].get<double>();
+    k.primitives[r["dataset"].get<std::string>()] = n;
+    // Calibration: an orderer record's frames (repeats + warmup at its median). The oracle,
+    // images and scene are not in the record, so this rate is a lower bound.
+    const auto total = r.value("total", nlohmann::json());
+    if (r.contains("probe") || !total.is_object() || !total.contains("median") || !total["median"].is_number())
+      continue;
+    const int frames = r.value("repeats", 0) + r.value("warmup", 0);
+    const double pixels = r.value("pixels", 0.0);
+    if (frames <= 0 || pixels <= 0) continue;
+    k.seconds += frames * total["median"].get<double>();
+    k.cost += orderer_job_cost(n, pixels, r.value("repeats", 0), r.value("warmup", 0), 0);
+    ++k.timed;
+  }
+  return k;
+}
+
+size_t PlannedDataset::to_do() const {
+  size_t n = 0;
+  for (const auto& j : jobs) n += !j.done;
+  return n;
+}
+
+double PlannedDataset::cost_to_do() const {
+  double c = 0;
+  for (const auto& j : jobs)
+    if (!j.done) c += j.cost;
+  return c;
+}
+
+size_t RunPlan::jobs() const {
+  size_t n = 0;
+  for (const auto& d : datasets) n += d.jobs.size();
+  return n;
+}
+
+size_t RunPlan::to_do() const {
+  size_t n = 0;
+  for (const auto& d : datasets) n += d.to_do();
+  return n;
+}
+
+double RunPlan::cost_to_do() const {
+  double c = 0;
+  for (const auto& d : datasets) c += d.cost_to_do();
+  return c;
+}
+
+namespace {
+PlannedJob planned(const SuiteSpec& suite, const Job& j, double primitives, const KnownRecords& known) {
+  PlannedJob pj;
+  pj.key = j.key;
+  pj.line = job_line(j);
+  pj.probe = j.kind == Job::Kind::Probe;
+  pj.pixels = pj.probe ? 0 : double(j.w) * j.h;
+  pj.done = known.keys.count(j.key) > 0;
+  pj.cost = job_cost(suite, j, primitives);
+  return pj;
+}
+}  // namespace
+
+PlannedDataset plan_made(const SuiteSpec& suite, const std::string& label, const std::vector<Job>& jobs,
+                         double primitives, const KnownRecords& known) {
+  PlannedDataset pd;
+  pd.label = label;
+  pd.primitives = primitives;
+  pd.size_from = "scene";
+  for (const Job& j : jobs) pd.jobs.push_back(planned(suite, j, primitives, known));
+  return pd;
+}
+
+RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords& known) {
+  RunPlan plan;
+  const auto add = [&](PlannedDataset& pd, const Job& j) { pd.jobs.push_back(planned(suite, j, pd.primitives, known)); };
+  for (const DatasetPlan& dp : plan_datasets(suite)) {
+    PlannedDataset pd;
+    pd.label = dp.dataset.label();
+    pd.kind = dataset_kind(dp.dataset);
+    const auto it = known.primitives.find(pd.label);
+    if (it != known.primitives.end()) {
+      pd.primitives = it->second;
+      pd.size_from = "records";
+    } else {
+      pd.primitives = estimated_primitives(dp.dataset, &pd.size_from);
+    }
+    if (!dp.dataset.input.empty()) pd.views_note = "kind from the file extension";
+    if (dp.dataset.input.empty() && find_dataset(dp.dataset.name).views && suite.view_directions.empty() &&
+        !suite.orbit)
+      pd.views_note = "views: the dataset's own cameras";
+    for (const Job& j : dataset_jobs(suite, dp, stand_in(pd.kind), tags)) add(pd, j);
+    plan.datasets.push_back(std::move(pd));
+  }
+  PlannedDataset sceneless;
+  for (const ProbeSpec* p : sceneless_probes(suite)) add(sceneless, sceneless_job(suite, *p, tags));
+  if (!sceneless.jobs.empty()) plan.datasets.push_back(std::move(sceneless));
+  return plan;
+}
+
+}  // namespace vob

@@ -1,0 +1,77 @@
+// The jobs of a suite counted and costed before any scene is made (docs/pipeline.md
+// "Progress and --dry-run"): what `[k/N]` and `--dry-run` print. Keys come from
+// dataset_jobs() itself, run on a stand-in scene of the dataset's kind (a few cells), so
+// they are the keys the run will use; a dataset's size comes from records of it already in
+// the results file, else from its generator parameters, else it is a guess (said so).
+#pragma once
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "harness/bench/jobs.h"
+#include "harness/bench/suite.h"
+
+namespace vob {
+
+// What a results file already says: finished keys, the size of every dataset it has
+// records of, and frame times to calibrate seconds per cost unit.
+struct KnownRecords {
+  std::set<std::string> keys;
+  std::map<std::string, double> primitives;  // dataset label -> n
+  double seconds = 0, cost = 0;              // calibration: measured seconds and their cost
+  size_t timed = 0;                          // records that gave both
+  // Nothing when the file does not exist; never creates or writes it.
+  static KnownRecords read(const std::string& results_path);
+  double seconds_per_unit() const { return cost > 0 ? seconds / cost : 0; }
+};
+
+// The cost model: the work of one job in "units". An orderer job runs repeats + warmup
+// frames, and the oracle judges one more (at its samples per pixel); each frame touches every primitive (projecting,
+// sorting, traversing) and the orderers that composite and the oracle touch every pixel.
+// A sum, not a product: a sort-based orderer does not slow down with a larger window, and
+// the oracle's per-pixel work grows with depth complexity, not with the whole mesh. What
+// the model misses (prepare, images, scene generation) is absorbed by the measured
+// seconds per unit, which is why the estimate calibrates from the run's own jobs.
+// `oracle_samples`: the oracle's samples per pixel (supersample^2), 0 without the oracle.
+double orderer_job_cost(double primitives, double pixels, int repeats, int warmup, int oracle_samples);
+// A probe: repeats + warmup passes over its scene (1e5 primitives when it has none).
+double probe_job_cost(double primitives, int repeats, int warmup);
+
+struct PlannedJob {
+  std::string key, line;  // line: "mpvo view 3 512x512" or the probe's label
+  double pixels = 0;      // orderer jobs; 0 for probes
+  bool probe = false, done = false;  // done: its key is in the results file
+  double cost = 0;
+};
+
+struct PlannedDataset {
+  std::string label;         // empty: the probes without a scene
+  SceneKind kind = SceneKind::Cells;
+  double primitives = 0;
+  std::string size_from;     // "records", "parameters", "file size (a guess)", "unknown (1e5 assumed)"
+  std::string views_note;    // non-empty: how the view count was found
+  std::vector<PlannedJob> jobs;
+  size_t to_do() const;
+  double cost_to_do() const;
+};
+
+struct RunPlan {
+  std::vector<PlannedDataset> datasets;  // plan_datasets() order, then the sceneless probes
+  size_t jobs() const;
+  size_t to_do() const;
+  double cost_to_do() const;
+};
+
+RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords& known);
+// A dataset's part of the plan again once its scene is made: its real jobs and size.
+PlannedDataset plan_made(const SuiteSpec& suite, const std::string& label, const std::vector<Job>& jobs,
+                         double primitives, const KnownRecords& known);
+// The cost of a job of the run, with the scene's real size.
+double job_cost(const SuiteSpec& suite, const Job& job, double primitives);
+// The kind of scene a dataset makes, without making it (an input file's from its extension).
+SceneKind dataset_kind(const DatasetSpec& ds);
+// A guess at a dataset's primitives from its parameters, without generating it; 0 if none.
+double estimated_primitives(const DatasetSpec& ds, std::string* from);
+
+}  // namespace vob
