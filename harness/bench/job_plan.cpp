@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
+
+#include <tbb/global_control.h>
 
 #include "datasets/datasets.h"
 #include "harness/bench/results.h"
@@ -183,6 +186,10 @@ PlannedDataset plan_made(const SuiteSpec& suite, const std::string& label, const
 }
 
 RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords& known) {
+  // Keys name the threads a run uses (jobs.h): plan under the suite's limit as run_suite does,
+  // so a dry run or a reproduction's count sees the keys the run will write.
+  std::optional<tbb::global_control> threads;
+  if (suite.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, suite.threads);
   RunPlan plan;
   const auto add = [&](PlannedDataset& pd, const Job& j) { pd.jobs.push_back(planned(suite, j, pd.primitives, known)); };
   for (const DatasetPlan& dp : plan_datasets(suite)) {
