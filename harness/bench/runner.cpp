@@ -97,7 +97,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
       if (stop()) return summary;
       if (results.done(job.key)) {
         ++summary.skipped;
-        tracker.skipped();
+        tracker.skipped(known.keys.count(job.key) ? 0 : job_cost(suite, job, primitives));
         continue;
       }
       if (job.kind == Job::Kind::Probe) {
@@ -122,7 +122,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     if (stop()) return summary;
     if (results.done(job.key)) {
       ++summary.skipped;
-      tracker.skipped();
+      tracker.skipped(known.keys.count(job.key) ? 0 : job_cost(suite, job, 0));
       continue;
     }
     Record rec = run_probe_job(job, nullptr, suite, nullptr, base, image_dir, opt.progress);
