@@ -1,5 +1,6 @@
 #include "harness/bench/job_plan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -64,7 +65,7 @@ SceneKind dataset_kind(const DatasetSpec& ds) {
 }
 
 double orderer_job_cost(double primitives, double pixels, int repeats, int warmup, int oracle_samples) {
-  return (repeats + warmup) * (primitives + pixels) + (oracle_samples > 0 ? primitives + pixels * oracle_samples : 0);
+  return (repeats + warmup) * primitives + pixels * std::max(1, oracle_samples) + (oracle_samples > 0 ? primitives : 0);
 }
 
 double probe_job_cost(double primitives, int repeats, int warmup) {
@@ -125,7 +126,7 @@ KnownRecords KnownRecords::read(const std::string& results_path) {
     const double pixels = r.value("pixels", 0.0);
     if (frames <= 0 || pixels <= 0) continue;
     k.seconds += frames * total["median"].get<double>();
-    k.cost += orderer_job_cost(n, pixels, r.value("repeats", 0), r.value("warmup", 0), 0);
+    k.cost += orderer_job_cost(n, 0, r.value("repeats", 0), r.value("warmup", 0), 0);  // frames only
     ++k.timed;
   }
   return k;

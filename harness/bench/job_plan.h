@@ -27,12 +27,14 @@ struct KnownRecords {
 };
 
 // The cost model: the work of one job in "units". An orderer job runs repeats + warmup
-// frames, and the oracle judges one more (at its samples per pixel); each frame touches every primitive (projecting,
-// sorting, traversing) and the orderers that composite and the oracle touch every pixel.
-// A sum, not a product: a sort-based orderer does not slow down with a larger window, and
-// the oracle's per-pixel work grows with depth complexity, not with the whole mesh. What
-// the model misses (prepare, images, scene generation) is absorbed by the measured
-// seconds per unit, which is why the estimate calibrates from the run's own jobs.
+// frames, each touching every primitive (projecting, sorting, traversing); the pixels are
+// touched once per job (the oracle's samples, or the image and its set-up), not per frame,
+// since most orderers do not rasterize at all. A sum, not a product: a sorting orderer does
+// not slow down with a larger window. The first version charged pixels per frame, and on
+// `reproduce all --tiny` its estimate stayed twice the real time (512x512 views of small
+// meshes dominated the cost and ran fast). What the model misses (prepare, compositing
+// orderers, scene generation) is absorbed by the measured seconds per unit, which is why
+// the estimate calibrates from the run's own jobs.
 // `oracle_samples`: the oracle's samples per pixel (supersample^2), 0 without the oracle.
 double orderer_job_cost(double primitives, double pixels, int repeats, int warmup, int oracle_samples);
 // A probe: repeats + warmup passes over its scene (1e5 primitives when it has none).

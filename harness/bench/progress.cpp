@@ -19,9 +19,10 @@ void ProgressTracker::replace(size_t old_jobs, double old_cost, size_t jobs, dou
   if (parent_) parent_->replace(old_jobs, old_cost, jobs, cost);
 }
 
-void ProgressTracker::skipped() {
+void ProgressTracker::skipped(double cost) {
   ++done_;
-  if (parent_) parent_->skipped();
+  cost_left_ = std::max(0.0, cost_left_ - cost);
+  if (parent_) parent_->skipped(cost);
 }
 
 void ProgressTracker::finished(double cost) {

@@ -23,7 +23,9 @@ class ProgressTracker {
   void add(size_t jobs, double cost_to_do);
   // A dataset's planned numbers replaced by the real ones once its scene is made.
   void replace(size_t old_jobs, double old_cost, size_t jobs, double cost);
-  void skipped();                     // a job found done (it was not counted as to do)
+  // A job found done; `cost`: its cost when the plan counted it as to do (another run
+  // wrote it meanwhile), else 0.
+  void skipped(double cost = 0);
   void finished(double cost);         // a computed job
   // "[k/N] MM:SS elapsed, ~MM:SS left" (and " (all: [k/N], ~H:MM:SS left)" with a parent).
   std::string status() const;

@@ -9,7 +9,6 @@
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
-#include "harness/bench/job_plan.h"
 #include "harness/bench/reporters.h"
 #include "harness/scene/cell_overlap.h"
 #include "harness/scene/input_error.h"
@@ -58,7 +57,8 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
   const ImageReporter images(suite, image_dir, fs::path(opt.results_path).parent_path().string());
   if (images.writes_files() || !suite.probes.empty()) require_writable_folder(image_dir);
   // [k/N] and the time left (progress.h): N counted before the first scene is made.
-  const KnownRecords known = KnownRecords::read(opt.results_path);
+  const KnownRecords own_known = opt.tracker && opt.known ? KnownRecords() : KnownRecords::read(opt.results_path);
+  const KnownRecords& known = opt.tracker && opt.known ? *opt.known : own_known;
   const RunPlan planned = plan_run(suite, opt.tags, known);
   ProgressTracker own_tracker;
   ProgressTracker& tracker = opt.tracker ? *opt.tracker : own_tracker;
@@ -98,7 +98,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
       if (stop()) return summary;
       if (results.done(job.key)) {
         ++summary.skipped;
-        tracker.skipped();
+        tracker.skipped(known.keys.count(job.key) ? 0 : job_cost(suite, job, primitives));
         continue;
       }
       if (job.kind == Job::Kind::Probe) {
@@ -123,7 +123,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     if (stop()) return summary;
     if (results.done(job.key)) {
       ++summary.skipped;
-      tracker.skipped();
+      tracker.skipped(known.keys.count(job.key) ? 0 : job_cost(suite, job, 0));
       continue;
     }
     Record rec = run_probe_job(job, nullptr, suite, nullptr, base, image_dir, opt.progress);

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "harness/bench/job_plan.h"
 #include "harness/bench/jobs.h"
 #include "harness/bench/measure.h"
 #include "harness/bench/progress.h"
@@ -23,8 +24,9 @@ struct RunOptions {
   bool validate_full = false;
   RunTags tags;  // set by reproduce: key prefix and the records' reproduction, paper, scale
   // The [k/N] of the record lines, when the caller counts several suites (reproduce) and
-  // has added this suite's plan to it; null: the run counts its own jobs.
+  // has added this suite's plan, made from `known`, to it; null: the run counts its own jobs.
   ProgressTracker* tracker = nullptr;
+  const KnownRecords* known = nullptr;  // with tracker: what the caller's plan was made from
 };
 struct RunSummary {
   int written = 0;             // records this run appended

@@ -13,10 +13,14 @@ std::string units(double cost) {
   return buf;
 }
 
-// " ~00:41" when calibrated, else "".
+// " ~0.12 s" or " ~03:10" when calibrated, else "".
 std::string time_of(double cost, const KnownRecords& known) {
-  const double rate = known.seconds_per_unit();
-  return rate > 0 ? " ~" + ProgressTracker::clock_text(cost * rate) : "";
+  const double s = cost * known.seconds_per_unit();
+  if (!(s > 0)) return "";
+  if (s >= 60) return " ~" + ProgressTracker::clock_text(s);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " ~%.2g s", s);
+  return buf;
 }
 }  // namespace
 

@@ -61,6 +61,7 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
   opt.results_path = results;
   opt.tags = tags;
   opt.tracker = &tracker;
+  opt.known = &known;
   opt.stop_requested = [] { return StopSignals::received() != 0; };
   const auto t0 = std::chrono::steady_clock::now();
   opt.progress = [t0](const std::string& line) {

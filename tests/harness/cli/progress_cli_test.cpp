@@ -129,4 +129,11 @@ TEST(ProgressCli, ReproduceDryRunListsEverySuiteAndWritesNothing) {
   EXPECT_NE(r.out.find("quick: "), std::string::npos) << r.out;
   EXPECT_FALSE(lines_starting(r.out, "    quick/").empty()) << r.out;
   EXPECT_FALSE(fs::exists(out));
+  // Every reproduction with a paper, a total each and one over all.
+  const Outcome all = vobench("reproduce all --tiny --dry-run -o " + out.string());
+  ASSERT_EQ(all.code, 0) << all.out;
+  EXPECT_EQ(lines_starting(all.out, "all: ").size(), 1u) << all.out;
+  EXPECT_GT(lines_starting(all.out, "reproduction ").size(), 5u) << all.out;
+  EXPECT_FALSE(lines_starting(all.out, "xmpvo-scaling: ").empty()) << all.out;
+  EXPECT_FALSE(fs::exists(out));
 }

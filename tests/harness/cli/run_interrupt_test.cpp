@@ -106,10 +106,13 @@ class Vobench {
   std::string buffer_, all_;
 };
 
-// A progress line of a finished record: "  ALG on DATASET view I WxH: T ms/frame, ...".
+// A progress line of a finished record:
+// "[k/N] MM:SS elapsed, ~MM:SS left: ALG on DATASET view I WxH: T ms/frame, ...".
 bool finished_record(const std::string& line, std::string& label) {
   if (line.find(" ms/frame") == std::string::npos) return false;
-  label = line.substr(2, line.rfind(": ") - 2);
+  size_t start = line.find(" left: ");
+  start = start == std::string::npos ? line.find(" unknown: ") + 10 : start + 7;
+  label = line.substr(start, line.rfind(": ") - start);
   return true;
 }
 
