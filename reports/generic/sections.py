@@ -51,7 +51,7 @@ VERDICT_NOTE = ("claim: object = object-space exact, image = image-space exact, 
 
 
 def scene_table(page, rows, revisions):
-    multi = len(revisions) > 1
+    multi = len({r["revision"] for r in rows}) > 1  # this scene's rows, not the whole report's
     by_run = any(r["run"] for r in rows)
     derived = any(r["cell_order_px"] is not None for r in rows)
     head = (["orderer", "claim"] + (["revision"] if multi else []) + (["run"] if by_run else []) +
