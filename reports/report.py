@@ -72,7 +72,7 @@ def build(a):
         sections.scene_section(full, s, [r for r in rows if r["scene"] == s], recs, figs[s], out, revisions)
     scaling(full)
     pages = {}
-    if len(scenes) <= PAGE_SCENES:
+    if len(scenes) <= a.page_scenes:
         pages["report.html"] = full.to_html()
     else:
         index = Page(a.title)
@@ -120,6 +120,8 @@ def main():
     ap.add_argument("--title", default="vobench report")
     ap.add_argument("--include", action="append", default=[], help="Markdown files to put first")
     ap.add_argument("--name", help="also write NAME.md, NAME.html and NAME.json (the rows) for reproduce")
+    ap.add_argument("--page-scenes", type=int, default=PAGE_SCENES,
+                    help=f"more scenes than this: an index page and one page per scene (default {PAGE_SCENES})")
     build(ap.parse_args())
 
 

@@ -37,7 +37,8 @@ def _save(fig, out):
 
 
 def label(row, revisions):
-    return row["algorithm"] + (f" @ {row['revision']}" if len(revisions) > 1 else "")
+    return (row["algorithm"] + (f" @ {row['revision']}" if len(revisions) > 1 else "")
+            + (f" [run {row['run']}]" if row.get("run") else ""))
 
 
 def marker_legend(ax, claims, loc):
@@ -63,13 +64,15 @@ def speed_error(scene, rows, out):
     for r in chk:
         ax.scatter([r["seconds"] * f], [r["err"] * 100], marker=MARKERS[r["exact"]][0], s=70,
                    color=cols[label(r, revs)], edgecolor="k", linewidth=0.5, label=label(r, revs), zorder=3)
+        ax.annotate(label(r, revs), (r["seconds"] * f, r["err"] * 100), xytext=(5, 5), textcoords="offset points",
+                    fontsize=7, rotation=30, color="0.25")
     if chk:
         pts = [(r["seconds"], r["err"]) for r in chk]
         front = pareto(pts)
         ax.plot([pts[i][0] * f for i in front], [pts[i][1] * 100 for i in front], "k--", lw=0.8,
                 label="Pareto front (checked)")
         # Exact orderers sit on 0: a margin below keeps their markers whole.
-        ax.set_ylim(-0.004, max(1.0, 100 * max(e for _, e in pts)) * 1.8)
+        ax.set_ylim(-0.004, max(1.0, 100 * max(e for _, e in pts)) * 6)  # room for labels
     else:
         ax.text(0.5, 0.5, "no orderer of this scene was checked by the oracle", transform=ax.transAxes,
                 ha="center", va="center", color="0.4")
@@ -79,9 +82,11 @@ def speed_error(scene, rows, out):
     ax.set_title(f"speed against error: {scene}", fontsize=11)
     ax.grid(True, which="both", alpha=0.3)
     if band is not None:
-        for k, r in enumerate(unchk):
+        for r in unchk:
             band.scatter([r["seconds"] * f], [0], marker=MARKERS[r["exact"]][0], s=70, color=cols[label(r, revs)],
                          edgecolor="k", linewidth=0.5, label=label(r, revs), zorder=3)
+            band.annotate(label(r, revs), (r["seconds"] * f, 0), xytext=(5, 5), textcoords="offset points",
+                          fontsize=7, rotation=30, color="0.25")
         band.set_yticks([])
         band.set_ylabel("not checked\n(no oracle)", rotation=0, ha="right", va="center")
         band.set_facecolor("#eeeeee")

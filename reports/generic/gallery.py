@@ -74,7 +74,7 @@ def add(page, recs, html_dir, revisions):
             page.image_row([exact])
         for k, r in enumerate(failing):
             # The exact image once per view: at the head of its first row.
-            items = ([exact] if k == 0 else []) + [
+            items = [exact if k == 0 else (None, "")] + [
                 (link(image_path(r, "order"), html_dir), f"{r['algorithm']}: its order"),
                 (link(image_path(r, "diff"), html_dir), "colour difference")]
             text = caption(r)

@@ -15,7 +15,7 @@ table{border-collapse:collapse;font-size:12.5px;margin:.5em 0 1em}td,th{border:1
 text-align:right;white-space:nowrap}td:first-child,th:first-child{text-align:left}th{background:#f3f3f3;white-space:normal;vertical-align:bottom}
 .nc{color:#777;font-style:italic}.bad{color:#b00}figure{margin:1em 0}figure img{width:100%;border:1px solid #ddd}
 figcaption{font-size:13px;color:#333}.row{display:flex;gap:8px;flex-wrap:wrap;margin:.3em 0 1.2em}
-.row figure{flex:1 1 0;min-width:200px;max-width:360px;margin:0}.row img{image-rendering:pixelated}
+.row figure{flex:0 0 calc(25% - 6px);min-width:180px;margin:0}.row img{image-rendering:pixelated}
 nav.toc{background:#f7f7f7;border:1px solid #ddd;padding:.5em 1em;font-size:14px}nav.toc ul{margin:.2em 0}
 .scroll{overflow-x:auto}"""
 
@@ -76,13 +76,15 @@ class Page:
 
     def image_row(self, items, caption="", md_caption=None):
         """items: (src or None, label). A missing file is named, never linked."""
-        self.md.append(" ".join(f"![{lab}]({src})" if src else f"({lab}: no image)" for src, lab in items))
+        self.md.append(" ".join(f"![{lab}]({src})" if src else f"({lab}: no image)" for src, lab in items if lab))
         self.md += ["", md_caption or caption, ""] if (md_caption or caption) else [""]
         if caption:
             self.html.append(f"<p>{caption if md_caption is not None else E(caption)}</p>")
         cells = []
         for src, lab in items:
-            if src:
+            if not lab:  # a spacer keeping columns aligned
+                cells.append("<figure></figure>")
+            elif src:
                 cells.append(f"<figure><a href='{E(src)}'><img src='{E(src)}' alt='{E(lab)}'></a>"
                              f"<figcaption>{E(lab)}</figcaption></figure>")
             else:

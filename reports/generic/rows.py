@@ -75,8 +75,20 @@ def summarise(recs):
     groups = collections.OrderedDict()
     for r in recs:
         groups.setdefault((scene_key(r), revision(r), r["algorithm"]), []).append(r)
-    rows = []
+    # Runs that measured the same view again (a rerun with other settings, two files merged)
+    # get a row each; runs that complete each other (a resumed run) share one.
+    split = collections.OrderedDict()
     for (scene, rev, algo), rs in groups.items():
+        runs = collections.defaultdict(set)
+        for r in rs:
+            runs[r.get("view_index")].add(run_of(r))
+        if any(len(v) > 1 for v in runs.values()):
+            for r in rs:
+                split.setdefault((scene, rev, algo, run_of(r)), []).append(r)
+        else:
+            split[(scene, rev, algo, None)] = rs
+    rows = []
+    for (scene, rev, algo, run), rs in split.items():
         times = [r["total"]["median"] for r in rs]
         chk = [r for r in rs if checked(r)]
         errs = [e for e in (error_fraction(r) for r in chk) if e is not None]
@@ -89,7 +101,7 @@ def summarise(recs):
         rows.append({
             "scene": scene, "dataset": rs[0]["dataset"], "dataset_spec": rs[0].get("dataset_spec"),
             "w": rs[0]["w"], "h": rs[0]["h"], "revision": rev,
-            "runs": sorted({run_of(r) for r in rs}), "algorithm": algo, "n": rs[0]["n"],
+            "runs": sorted({run_of(r) for r in rs}), "run": run, "algorithm": algo, "n": rs[0]["n"],
             "b": rs[0].get("b"), "views": len(rs),
             "repeated_views": sum(1 for c in views.values() if c > 1),
             "seconds": statistics.median(times),
@@ -111,10 +123,11 @@ def summarise(recs):
             "phases": {k: statistics.median(v) for k, v in phases.items()},
             "bytes": rs[0]["bytes"]["orderer"] + rs[0]["bytes"]["derived"],
         })
-    base = {(r["scene"], r["revision"], r["algorithm"]): r for r in rows}
+    base = {(r["scene"], r["revision"], r["run"], r["algorithm"]): r for r in rows}
     for row in rows:
         for ref in ("mpvonc", "vtk-centroid"):
-            b = base.get((row["scene"], row["revision"], ref))
+            b = base.get((row["scene"], row["revision"], row["run"], ref)) or base.get(
+                (row["scene"], row["revision"], None, ref))
             row["vs_" + ref] = row["seconds"] / b["seconds"] if b and b["seconds"] > 0 else None
         row["verdict"] = verdict_text(row)
     # One orderer's rows of several revisions side by side.

@@ -51,9 +51,10 @@ VERDICT_NOTE = ("claim: object = object-space exact, image = image-space exact, 
 
 
 def scene_table(page, rows, revisions):
-    multi = len(revisions) > 1
+    multi = len({r["revision"] for r in rows}) > 1  # this scene's rows, not the whole report's
+    by_run = any(r["run"] for r in rows)
     derived = any(r["cell_order_px"] is not None for r in rows)
-    head = (["orderer", "claim"] + (["revision"] if multi else []) +
+    head = (["orderer", "claim"] + (["revision"] if multi else []) + (["run"] if by_run else []) +
             ["views", "time/frame", "vs mpvonc", "vs vtk-centroid", "prepare", "verdict",
              "violating px (% covered)"] + (["derived cell order px"] if derived else []) +
             ["max k", "image RMSE", "cycles", "memory"])
@@ -65,6 +66,7 @@ def scene_table(page, rows, revisions):
         nc = r["checked_views"] == 0
         err = "not checked" if r["err"] is None and nc else sig(None if r["err"] is None else 100 * r["err"])
         cells = ([r["algorithm"], r["exact"]] + ([r["revision"]] if multi else []) +
+                 ([r["run"] or "all"] if by_run else []) +
                  [views, human_seconds(r["seconds"]), sig(r["vs_mpvonc"]), sig(r["vs_vtk-centroid"]),
                   human_seconds(r["prepare_s"]), r["verdict"], err] +
                  ([sig(r["cell_order_px"]) if r["cell_order_px"] is not None else "–"] if derived else []) +
@@ -77,6 +79,8 @@ def scene_table(page, rows, revisions):
         out.append(cells)
         classes.append(cls)
     page.table(head, out, classes)
+    if by_run:
+        page.para("run: runs that measured the same views again are not merged; each has its own row.")
     if derived:
         page.para("derived cell order px: the oracle's count on the cell order a compositing orderer "
                   "returns (labelled 'derived cell order'); its verdict is the 'verdict' column.")
@@ -128,13 +132,13 @@ def overview(page, scenes, rows):
     """Orderer x scene: median time per frame, marked when it fails in some view (✗) or was
     not checked (?), so one table answers which orderer to choose."""
     revs = sorted({r["revision"] for r in rows})
-    keys = list(dict.fromkeys((r["algorithm"], r["revision"]) for r in rows))
-    cell = {(r["algorithm"], r["revision"], r["scene"]): r for r in rows}
+    keys = list(dict.fromkeys((r["algorithm"], r["revision"], r["run"]) for r in rows))
+    cell = {(r["algorithm"], r["revision"], r["run"], r["scene"]): r for r in rows}
     out, classes = [], []
-    for algo, rev in keys:
-        line, cls = [algo + (f" @ {rev}" if len(revs) > 1 else "")], [None]
+    for algo, rev, run in keys:
+        line, cls = [figures.label({"algorithm": algo, "revision": rev, "run": run}, revs)], [None]
         for s in scenes:
-            r = cell.get((algo, rev, s))
+            r = cell.get((algo, rev, run, s))
             if r is None:
                 line.append("")
                 cls.append(None)

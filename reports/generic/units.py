@@ -9,6 +9,8 @@ def sig(v, digits=3):
         return f"{v:,}"
     if v == 0:
         return "0"
+    if abs(v) >= 1000:  # 2,070 rather than 2.07e+03
+        return f"{v:,.0f}"
     return f"{v:.{digits}g}"
 
 

@@ -2,10 +2,12 @@
 """report.browser (tests/reports/CMakeLists.txt): a tiny run (one suite with the oracle and
 images, one without), `vobench report DIR` started from another folder, DIR moved; then
 every HTML page opened offline in headless chromium must load every image; the run without
-the oracle must read "not checked" with no error value; a screenshot of report.html is
-written to WORK/report.png; and with one image deleted the check must report it broken.
+the oracle must read "not checked" with no error value; a second report, split into one page
+per scene, written into another folder from the moved results, must load every image too;
+a screenshot of report.html is written to WORK/report.png; and with one image deleted the
+check must report it broken.
 
-usage: check_report_browser.py VOBENCH CHROMIUM WORK"""
+usage: check_report_browser.py VOBENCH CHROMIUM WORK REPORT_PY"""
 import json
 import os
 import re
@@ -16,7 +18,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import browser  # noqa: E402
 
-VOBENCH, CHROMIUM, WORK = sys.argv[1:4]
+VOBENCH, CHROMIUM, WORK, REPORT_PY = sys.argv[1:5]
 
 
 def fail(why):
@@ -55,9 +57,16 @@ vobench(["report", run_dir], cwd=elsewhere)
 os.makedirs(os.path.dirname(moved))
 shutil.move(run_dir, moved)
 
-pages = browser.pages(moved)
-if not pages:
-    fail(f"no HTML page in {moved}")
+# One page per scene, in a folder that is not the results' folder.
+paged = os.path.join(WORK, "moved", "paged")
+r = subprocess.run(["/usr/bin/python3", REPORT_PY, "--out", paged, "--page-scenes", "1",
+                    os.path.join(moved, "results.jsonl")], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+if r.returncode != 0:
+    print(r.stdout)
+    fail("report.py --page-scenes 1 failed")
+pages = browser.pages(moved) + browser.pages(paged)
+if len(browser.pages(paged)) != 1 + len(SUITES):
+    fail(f"{paged}: expected an index and one page per scene, got {browser.pages(paged)}")
 profile = os.path.join(WORK, "chromium-profile")
 total = 0
 for page in pages:
