@@ -64,7 +64,9 @@ TEST(FitWindow, ASuiteWithFitGivesFittedJobsUnderItsOwnKeys) {
   const auto jobs = dataset_jobs(s, plans.at(0), scene, RunTags{});
   ASSERT_EQ(jobs.size(), 3u);
   for (const Job& job : jobs) {
-    EXPECT_NE(job.key.find("|450x375|s1|fit"), std::string::npos) << job.key;
+    // The size entry stays in the key (docs/pipeline.md "Jobs and keys"), and |fit ends it.
+    EXPECT_NE(job.key.find("|450x375|"), std::string::npos) << job.key;
+    EXPECT_EQ(job.key.substr(job.key.size() - 4), "|fit") << job.key;
     EXPECT_EQ(job.w, job.camera.width);
     EXPECT_EQ(job.h, job.camera.height);
     EXPECT_NEAR(double(job.w) * job.h, 450.0 * 375, 0.01 * 450 * 375);
