@@ -56,7 +56,8 @@ def scene_table(page, rows, revisions):
     derived = any(r["cell_order_px"] is not None for r in rows)
     head = (["orderer", "claim"] + (["revision"] if multi else []) + (["run"] if by_run else []) +
             ["views", "time/frame", "vs mpvonc", "vs vtk-centroid", "prepare", "verdict",
-             "violating px (% covered)"] + (["derived cell order px"] if derived else []) +
+             "violating px, summed over views (mean % covered)"] +
+            (["derived cell order px"] if derived else []) +
             ["max k", "image RMSE", "cycles", "memory"])
     out, classes = [], []
     for r in rows:
@@ -64,7 +65,9 @@ def scene_table(page, rows, revisions):
         if r["repeated_views"]:
             views += f" ({r['repeated_views']} measured more than once)"
         nc = r["checked_views"] == 0
-        err = "not checked" if r["err"] is None and nc else sig(None if r["err"] is None else 100 * r["err"])
+        # The count itself (summed over the checked views), so table, caption and `check` agree.
+        err = ("not checked" if r["err"] is None and nc else
+               "–" if r["err"] is None else f"{r['violating_pixels']:,} ({sig(100 * r['err'])}%)")
         cells = ([r["algorithm"], r["exact"]] + ([r["revision"]] if multi else []) +
                  ([r["run"] or "all"] if by_run else []) +
                  [views, human_seconds(r["seconds"]), sig(r["vs_mpvonc"]), sig(r["vs_vtk-centroid"]),
