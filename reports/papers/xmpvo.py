@@ -5,6 +5,7 @@ import matplotlib.pyplot as plt
 
 from vobtables import metrics as m
 from vobtables import paper as P
+from papers.cook_common import fitted, size_entry, window_text
 
 
 def command(records):
@@ -221,8 +222,9 @@ def cook_table2(records, paper, doc):
     sx_sizes = []
     for row, recs in groups:
         bsp, xm, sx = of(recs, "bsp-xmpvo"), of(recs, "xmpvo"), of(recs, "sxmpvo")
-        by_pixels = sorted(m.group(sx, "pixels"), key=lambda g: g[0])
-        sx_sizes = [f"{g[1][0]['w']}x{g[1][0]['h']}" for g in by_pixels]
+        # By the suite's size entry: with fitted windows each view has its own w x h.
+        by_pixels = sorted(m.group(sx, lambda r: size_entry(r)[0] * size_entry(r)[1]), key=lambda g: g[0])
+        sx_sizes = ["%dx%d" % size_entry(g[1][0]) for g in by_pixels]
         sx_times = [m.mean(g[1], m.frame_seconds) for g in by_pixels]
         sx_times += [None] * (len(labels) - len(sx_times))
         first = by_pixels[0][1] if by_pixels else []
@@ -240,24 +242,25 @@ def cook_table2(records, paper, doc):
     for (row, recs), pr in zip(groups, p["rows"]):
         bsp_t = m.mean(of(recs, "bsp-xmpvo"), m.frame_seconds)
         sx = of(recs, "sxmpvo")
-        small = min((r["pixels"] for r in sx), default=None)
-        sx_t = m.mean([r for r in sx if r["pixels"] == small], m.frame_seconds)
+        small = min((size_entry(r) for r in sx), key=lambda e: e[0] * e[1], default=None)
+        sx_t = m.mean([r for r in sx if size_entry(r) == small], m.frame_seconds)
         q = m.ratio(sx_t, bsp_t)
         pq = m.ratio(P.value(pr["sxmpvo"][0]), P.value(pr["bsp_xmpvo"]))
         doc.claim(f"SXMPVO is faster than BSP-XMPVO per view on {row} (for {pr['data set']}; ours: SXMPVO at the "
                   "smallest image / BSP-XMPVO, seconds per view)", ours=q,
                   paper="-" if pq is None else f"{pr['sxmpvo'][0]} / {pr['bsp_xmpvo']} = {pq:.2f} (different machines)",
                   criterion="ours < 1", holds=None if q is None else q < 1)
-    obj = bsp_all[0] if bsp_all else {"w": 0, "h": 0}
+    win = window_text(bsp_all) if bsp_all else "-"
     full = records[0].get("scale") == "full"
     sx_any = of(orderer_recs, "sxmpvo")
     ours.notes = ("BSP-XMPVO prep. = its whole prepare (unique faces, face planes, BSP build). BSP-XMPVO and XMPVO "
                   "are object-space orderers: their per-view time does not depend on the image, so they are timed "
-                  f"once per view (at {obj['w']}x{obj['h']}; " +
+                  f"once per view ({win}; " +
                   ("3 repeats" if full else "1 frame after a warm-up for BSP-XMPVO, 1 frame for XMPVO; --full repeats") +
                   f"). SXMPVO: {frames_text(sx_any) if sx_any else 'median of 3 frames after a warm-up'} per view and "
-                  f"size ({', '.join(sx_sizes)}). The oracle checks every orderer on the same views at "
-                  f"{obj['w']}x{obj['h']}.")
+                  f"size ({', '.join(sx_sizes)}" + (", each window fitted to the bounding box at that pixel count"
+                                                    if fitted(sx_any) else "") +
+                  f"). The oracle checks every orderer on the same views ({win}).")
     machines = paper["machines"]
     pt = doc.table(f"Paper, {p['table']} (SXMPVO on the {machines[p['machines']['SXMPVO']]}; BSP-XMPVO on a "
                    f"{machines[p['machines']['BSP-XMPVO']]}; {p['units']})",
