@@ -9,6 +9,7 @@
 #include "harness/bench/names.h"
 #include "harness/bench/reproduction.h"
 #include "harness/cli/commands.h"
+#include "harness/cli/python_script.h"
 #include "harness/cli/reproduce.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/scene/input_error.h"
@@ -48,7 +49,18 @@ Command add_reproduce_command(CLI::App& app) {
   cmd->add_flag("--dry-run", *dry_run,
                 "list the jobs (those already in the output folder marked) with their estimated cost "
                 "and exit; makes no scene, writes nothing");
+  auto format = std::make_shared<std::string>("jsonl");
+  cmd->add_option("--format", *format,
+                  "jsonl (default); gbench: also Google Benchmark's JSON of the folder's records "
+                  "(DIR/results.gbench.json)")
+      ->check(CLI::IsMember({"jsonl", "gbench"}));
   return [=]() {
+    // Google Benchmark's JSON of the finished folder, beside its results.jsonl.
+    const auto with_format = [=](int status, const std::string& folder) {
+      if (status != 0 || *format != "gbench") return status;
+      const std::string results = folder + "/results.jsonl";
+      return run_python_script("gbench.py", {results, "-o", gbench_path(results)});
+    };
     std::error_code ec;
     if (!out_dir->empty() && std::filesystem::exists(*out_dir, ec) && !std::filesystem::is_directory(*out_dir, ec))
       throw InputError("--output", "'" + *out_dir + "'", "exists and is not a folder");
@@ -67,7 +79,7 @@ Command add_reproduce_command(CLI::App& app) {
         dry_run_reproductions(reps, out, *force);
         return 0;
       }
-      const int status = reproduce_all(reps, out, *force);
+      const int status = with_format(reproduce_all(reps, out, *force), out);
       if (status == 0) std::cerr << "reproduce all: wrote " << out << "/claims-summary.md\n";
       return exit_status(status);
     }
@@ -78,7 +90,7 @@ Command add_reproduce_command(CLI::App& app) {
       dry_run_reproductions({rep}, out, *force);
       return 0;
     }
-    const int status = reproduce(rep, out, *force);
+    const int status = with_format(reproduce(rep, out, *force), out);
     if (status == 0) std::cerr << "reproduce " << *name << ": wrote " << out << "/" << *name << ".md\n";
     return exit_status(status);
   };
