@@ -83,13 +83,13 @@ def prepare_seconds(r):
 
 
 def violating_pixels(r):
-    """The oracle's violating pixels; 0 when the input has overlapping cells (not the
-    orderer's fault); HAVS reports its own (it composites itself)."""
+    """The verdict's violating pixels (`oracle`: for an orderer that composites itself, on what
+    it composited); 0 when the input has overlapping cells (not the orderer's fault). Records
+    older than the one verdict judged HAVS's derived cell order there: its own count wins."""
     if "input_fault" in r:
         return 0
-    own = get(r, "counters.havs_violating_pixels")
-    if own is not None:
-        return int(own)
+    if get(r, "oracle.judged") is None and get(r, "counters.havs_violating_pixels") is not None:
+        return int(get(r, "counters.havs_violating_pixels"))
     return get(r, "oracle.violating_pixels")
 
 
