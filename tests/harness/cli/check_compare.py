@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """`vobench compare` and `vobench run --format gbench` on two runs of one tiny suite:
 
-1. the two runs compare without regression (exit 0; --threshold 2: a shared machine's noise
-   on sub-millisecond frames is not what this test judges);
+1. a run compared with itself is no regression (exit 0), and two real runs compare with a
+   threshold no noise reaches (--threshold 100, the largest allowed: timing on a shared machine is not what a
+   test may judge; docs: speed is measured in benchmarks, never asserted in a test);
 2. one exact orderer's record given a violation -> exit 1 naming it;
 3. one orderer's samples (and min/median) tripled -> exit 1 naming it (default thresholds);
 4. records of different settings (repeats) -> refused (exit 2) naming the setting, and
@@ -63,7 +64,8 @@ shutil.rmtree(WORK, ignore_errors=True)
 os.makedirs(WORK)
 base = run_suite("base", 5, fmt="gbench")
 new = run_suite("new", 5)
-p = expect([base, new, "--threshold", "2", "-o", os.path.join(WORK, "cmp.html")], 0, "No regression")
+expect([base, base], 0, "No regression")
+p = expect([base, new, "--threshold", "100", "-o", os.path.join(WORK, "cmp.html")], 0, "No regression")
 if "<table>" not in open(os.path.join(WORK, "cmp.html")).read():
     fail("cmp.html has no table")
 plain = vob("compare", base, new)  # default threshold: shown, not judged (noise)
@@ -87,7 +89,7 @@ expect([base, os.path.join(WORK, "tripled.jsonl")], 1, "slower", slow["algorithm
 
 other = run_suite("other", 4)
 expect([base, other], 2, "refused", "repeats")
-p = vob("compare", base, other, "--allow-different-settings", "--threshold", "2")
+p = vob("compare", base, other, "--allow-different-settings", "--threshold", "100")
 if p.returncode != 0 or "Settings differ" not in p.stdout:
     fail(f"--allow-different-settings: exit {p.returncode}\n{p.stdout[-800:]}{p.stderr[-800:]}")
 broken = os.path.join(WORK, "broken.jsonl")
