@@ -1,6 +1,9 @@
 // The one file that includes plugin headers. Add a plugin: include its header, add a line.
 #include "harness/bench/registry.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include "algorithms/centroid/centroid.h"
 #include "algorithms/centroid/triangle_centroid.h"
 #include "algorithms/centroid/vtk_centroid.h"
@@ -25,8 +28,9 @@
 
 namespace vob {
 
-const std::vector<OrdererInfo>& orderer_registry() {
-  static const std::vector<OrdererInfo> registry = {
+namespace {
+std::deque<OrdererInfo>& mutable_registry() {
+  static std::deque<OrdererInfo> registry = {
       centroid_orderer_info(),
       vtk_centroid_orderer_info(),
       mpvo_orderer_info(),
@@ -45,6 +49,19 @@ const std::vector<OrdererInfo>& orderer_registry() {
       havs_orderer_info(),
   };
   return registry;
+}
+}  // namespace
+
+const std::deque<OrdererInfo>& orderer_registry() { return mutable_registry(); }
+
+void register_orderer(OrdererInfo info) {
+  const bool plain = !info.name.empty() && std::all_of(info.name.begin(), info.name.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+  });
+  if (!plain) throw InputError("orderer", "'" + info.name + "'", "is not a plain name (letters, digits, '_', '-', '.')");
+  for (const auto& known : orderer_registry())
+    if (known.name == info.name) throw InputError("orderer", info.name, "is already registered");
+  mutable_registry().push_back(std::move(info));
 }
 
 const OrdererInfo& find_orderer(const std::string& name) {

@@ -2,6 +2,7 @@
 // file that includes algorithm headers. Each plugin's OrdererInfo (name, scene kind,
 // summary, parameters) is written once, in the plugin's own folder.
 #pragma once
+#include <deque>
 #include <functional>
 #include <memory>
 #include <string>
@@ -28,7 +29,12 @@ inline std::unique_ptr<Orderer> make_from_info(const OrdererInfo& info, Params& 
   return info.make(resolve_params(info.params, given));
 }
 
-const std::vector<OrdererInfo>& orderer_registry();
+// Built-in orderers first, then those registered at run time (plugins loaded with --plugin,
+// external commands from suites). A deque: references to entries stay valid as it grows.
+const std::deque<OrdererInfo>& orderer_registry();
+// Adds an orderer (a plugin's or an external command's). InputError when the name is taken
+// or is not a plain name (letters, digits, '_', '-', '.').
+void register_orderer(OrdererInfo info);
 const OrdererInfo& find_orderer(const std::string& name);  // InputError if unknown
 // The info of the orderer a spec "name:k=v,..." names (InputError if unknown).
 const OrdererInfo& spec_orderer(const std::string& spec);
