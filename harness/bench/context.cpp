@@ -13,6 +13,7 @@
 #include <thread>
 
 #include "harness/bench/record.h"
+#include "harness/bench/resources.h"
 
 // Library versions the build was configured with (harness/bench/CMakeLists.txt).
 #ifndef VOB_VTK_VERSION
@@ -61,19 +62,6 @@ nlohmann::json caches() {
     out.push_back({{"level", "?"}, {"type", "cpuinfo"}, {"size", cpuinfo("cache size")}});
   return out;
 }
-// The sha of the source tree now (not at configure time), with "+dirty" for local edits.
-std::string git_sha() {
-  const std::string cmd = std::string("git -C '") + VOB_SOURCE_DIR +
-                          "' describe --always --dirty=+dirty 2>/dev/null";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return "";
-  char buf[128] = "";
-  const bool got = fgets(buf, sizeof buf, p) != nullptr;
-  pclose(p);
-  std::string s = got ? buf : "";
-  while (!s.empty() && (s.back() == '\n' || s.back() == '\r')) s.pop_back();
-  return s;
-}
 std::string host_name() {
   char host[256] = "unknown";
   gethostname(host, sizeof host - 1);
@@ -113,7 +101,7 @@ nlohmann::json run_context(int threads) {
           {"load_avg", have_load ? nlohmann::json{load[0], load[1], load[2]} : nlohmann::json(nullptr)},
           {"compiler", VOB_COMPILER},
           {"build_type", VOB_BUILD_TYPE},
-          {"git_sha", git_sha()},
+          {"git_sha", source_revision()},
           {"libraries",
            {{"vtk", VOB_VTK_VERSION},
             {"cgal", VOB_CGAL_VERSION},

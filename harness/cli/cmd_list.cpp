@@ -5,6 +5,7 @@
 #include "harness/bench/probe.h"
 #include "harness/bench/registry.h"
 #include "harness/bench/reproduction.h"
+#include "harness/bench/resources.h"
 #include "harness/cli/commands.h"
 
 namespace vob {
@@ -14,7 +15,7 @@ Command add_list_command(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   cmd->add_flag("--json", *json, "machine-readable output");
   return [json]() {
-    const auto reproductions = list_reproductions(std::string(VOB_SOURCE_DIR) + "/datasets/suites");
+    const auto reproductions = list_reproductions(resource_path("datasets/suites"));
     if (*json) {
       nlohmann::json j{{"orderers", nlohmann::json::array()},
                        {"probes", nlohmann::json::array()},

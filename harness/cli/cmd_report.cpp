@@ -3,8 +3,8 @@
 // report (Markdown + HTML with figures) of results files.
 #include <filesystem>
 
+#include "harness/bench/resources.h"
 #include "harness/cli/commands.h"
-#include "harness/cli/reproduce.h"
 #include "harness/cli/report_input.h"
 #include "harness/cli/reproduce.h"
 #include "harness/scene/input_error.h"
@@ -29,7 +29,7 @@ Command add_report_command(CLI::App& app) {
       if (!out->empty()) throw InputError("--output", "'" + *out + "'", "does not apply to a results folder (tables go into it)");
       const std::string dir = results->front();
       check_report_inputs({(fs::path(dir) / "results.jsonl").string()});
-      return report_folder(dir, std::string(VOB_SOURCE_DIR) + "/datasets/suites") == 0 ? 0 : 2;
+      return report_folder(dir, resource_path("datasets/suites")) == 0 ? 0 : 2;
     }
     for (const auto& r : *results)
       if (fs::is_directory(r, ec)) throw InputError(r, "results", "is a folder: give one folder alone, or results files");

@@ -1,13 +1,14 @@
 // vobench reproduce NAME: run a reproduction file (datasets/suites/**/NAME.json) into
-// reports/out/NAME (or -o DIR) and build its tables (docs/pipeline.md). `vobench reproduce
-// all`: every reproduction with a paper into one folder (reports/out/all[-SCALE]), then the
-// summary of every claim.
+// reports/out/NAME (installed: ./vobench-out/NAME; or -o DIR) and build its tables
+// (docs/pipeline.md). `vobench reproduce all`: every reproduction with a paper into one
+// folder (reports/out/all[-SCALE]), then the summary of every claim.
 #include <csignal>
 #include <filesystem>
 #include <iostream>
 
 #include "harness/bench/names.h"
 #include "harness/bench/reproduction.h"
+#include "harness/bench/resources.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/python_script.h"
 #include "harness/cli/reproduce.h"
@@ -39,7 +40,9 @@ Command add_reproduce_command(CLI::App& app) {
   auto tiny = std::make_shared<bool>(false);
   cmd->add_option("name", *name, "reproduction, or 'all' (every reproduction with a paper, and the claims summary)")
       ->required();
-  cmd->add_option("-o,--output", *out_dir, "output folder (default reports/out/NAME, NAME-tiny or NAME-full)");
+  cmd->add_option("-o,--output", *out_dir,
+                  "output folder (default reports/out/NAME, NAME-tiny or NAME-full in the source "
+                  "tree; installed: the same names under ./vobench-out/)");
   cmd->add_flag("--force", *force,
                 "start afresh: drop the records (and images) of an earlier run in the output folder; "
                 "without it a rerun keeps them and computes only what is missing");
@@ -64,11 +67,13 @@ Command add_reproduce_command(CLI::App& app) {
     std::error_code ec;
     if (!out_dir->empty() && std::filesystem::exists(*out_dir, ec) && !std::filesystem::is_directory(*out_dir, ec))
       throw InputError("--output", "'" + *out_dir + "'", "exists and is not a folder");
-    const std::string suites_dir = std::string(VOB_SOURCE_DIR) + "/datasets/suites";
+    const std::string suites_dir = resource_path("datasets/suites");
     const std::string scale = *tiny ? "tiny" : *full ? "full" : "default";
     std::string out = *out_dir;
+    // Installed, nothing is written into the prefix: ./vobench-out/NAME instead.
     if (out.empty())
-      out = std::string(VOB_SOURCE_DIR) + "/reports/out/" + *name + (scale == "default" ? "" : "-" + scale);
+      out = (installed() ? std::string("vobench-out") : resource_path("reports/out")) + "/" + *name +
+            (scale == "default" ? "" : "-" + scale);
     if (*name == "all" && find_reproduction(suites_dir, "all").empty()) {
       std::vector<Reproduction> reps;  // every file validated before any work
       for (const auto& e : list_reproductions(suites_dir)) {

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 
+#include "harness/bench/resources.h"
 #include "harness/scene/input_error.h"
 
 extern char** environ;
@@ -12,7 +13,7 @@ extern char** environ;
 namespace vob {
 
 int run_python_script(const std::string& script, const std::vector<std::string>& args) {
-  std::vector<std::string> all = {VOB_PYTHON, std::string(VOB_SOURCE_DIR) + "/reports/" + script};
+  std::vector<std::string> all = {VOB_PYTHON, resource_path("reports/" + script)};
   all.insert(all.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
