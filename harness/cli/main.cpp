@@ -2,15 +2,21 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <vector>
 
 #include "harness/cli/commands.h"
 #include "harness/cli/error_line.h"
+#include "harness/cli/plugin_loader.h"
 #include "harness/scene/input_error.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"vobench: visibility orderings for volume rendering, checked by one oracle"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "help for every subcommand");
+  // Taken out of argv by load_plugin_options before CLI11 parses; declared for --help.
+  std::vector<std::string> plugin_help;
+  app.add_option("--plugin", plugin_help,
+                 "PATH.so: load orderers from a shared library (before the subcommand; repeatable)");
   std::map<CLI::App*, vob::Command> commands;
   const auto add = [&](vob::Command (*f)(CLI::App&)) {
     const size_t before = app.get_subcommands({}).size();
@@ -35,6 +41,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", vob::error_line("vobench: " + where + message).c_str());
     return code;
   };
+  // Plugins first: their orderers are known to every subcommand (list, check, run, ...).
+  std::vector<char*> args;
+  try {
+    args = vob::load_plugin_options(argc, argv);
+  } catch (const std::exception& e) {
+    return fail(e.what(), 2);
+  }
+  argc = static_cast<int>(args.size());
+  argv = args.data();
   // CLI11 would only say that a subcommand is required; name the word it did not know.
   if (argc > 1 && argv[1][0] != '-') {
     std::string known;
