@@ -1,0 +1,16 @@
+# vobench_add_plugin(NAME [SOURCES] src...): a shared library of orderers for
+# `vobench --plugin $<TARGET_FILE:NAME> SUBCOMMAND ...`. The sources define
+# extern "C" void vobench_register_orderers(void) (#include "harness/bench/plugin.h").
+# Linked against libvobench.so, so the orderers land in the program's own registry.
+# Installed with find_package(vobench); in vobench's own tree it works the same.
+function(vobench_add_plugin name)
+  cmake_parse_arguments(P "" "" "SOURCES" ${ARGN})
+  set(sources ${P_SOURCES} ${P_UNPARSED_ARGUMENTS})
+  if(NOT sources)
+    message(FATAL_ERROR "vobench_add_plugin(${name}): no SOURCES")
+  endif()
+  add_library(${name} MODULE ${sources})
+  target_link_libraries(${name} PRIVATE vobench::vobench)
+  # Undefined symbols fail the link here, not the dlopen in vobench.
+  target_link_options(${name} PRIVATE "LINKER:--no-undefined")
+endfunction()
