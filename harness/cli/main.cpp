@@ -16,7 +16,8 @@ int main(int argc, char** argv) {
   // Taken out of argv by load_plugin_options before CLI11 parses; declared for --help.
   std::vector<std::string> plugin_help;
   app.add_option("--plugin", plugin_help,
-                 "PATH.so: load orderers from a shared library (before the subcommand; repeatable)");
+                 "load orderers from a shared library (before the subcommand; repeatable)")
+      ->type_name("PATH.so");
   std::map<CLI::App*, vob::Command> commands;
   const auto add = [&](vob::Command (*f)(CLI::App&)) {
     const size_t before = app.get_subcommands({}).size();
