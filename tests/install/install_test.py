@@ -2,7 +2,8 @@
 """vobench installed like a library, used from outside its tree (issue 15, item 3):
 
 1. `cmake --install BUILD --component vobench` into a fresh temporary prefix, which is then
-   MOVED (the RPATH and the resource lookup must follow it);
+   MOVED (the RPATH and the resource lookup must follow it); the installed headers compile
+   from the prefix alone;
 2. the out-of-tree orderer project (tests/install/orderer: only find_package(vobench) and
    vobench_add_plugin) configures and builds against the moved prefix, and finds the
    package there (not the build tree);
@@ -64,6 +65,13 @@ for f in ["lib/libvobench.so", "lib/cmake/vobench/vobenchConfig.cmake",
         fail(f"{f} not installed")
 if any(f.startswith("share/vobench/reports/out/") or "__pycache__" in f for f in files_under(prefix)):
     fail("report outputs or caches installed")
+
+# Every installed header compiles from the prefix alone (nothing it includes is missing).
+include = os.path.join(prefix, "include", "vobench")
+headers = [os.path.relpath(os.path.join(d, f), include) for d, _, fs in os.walk(include) for f in fs]
+all_h = os.path.join(WORK, "all_headers.cpp")
+open(all_h, "w").write("".join(f'#include "{h}"\n' for h in sorted(headers)))
+run(["c++", "-std=c++20", "-fsyntax-only", "-I", include, all_h])
 
 # 2. The out-of-tree project against the moved prefix only.
 proj = os.path.join(WORK, "orderer-build")
