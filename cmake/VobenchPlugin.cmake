@@ -2,7 +2,7 @@
 # `vobench --plugin $<TARGET_FILE:NAME> SUBCOMMAND ...`. The sources define
 # extern "C" void vobench_register_orderers(void) (#include "harness/bench/plugin.h").
 # Linked against libvobench.so, so the orderers land in the program's own registry.
-# Installed with find_package(vobench); in vobench's own tree it works the same.
+# Comes with find_package(vobench); vobench's own tree includes it too (harness/cli).
 function(vobench_add_plugin name)
   cmake_parse_arguments(P "" "" "SOURCES" ${ARGN})
   set(sources ${P_SOURCES} ${P_UNPARSED_ARGUMENTS})
