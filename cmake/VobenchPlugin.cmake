@@ -9,7 +9,12 @@ function(vobench_add_plugin name)
   if(NOT sources)
     message(FATAL_ERROR "vobench_add_plugin(${name}): no SOURCES")
   endif()
-  add_library(${name} MODULE ${sources})
+  # The vobench version the plugin is built for: vobench --plugin refuses a plugin from
+  # another major.minor (the C++ interface may have changed) instead of crashing in it.
+  set(stamp ${CMAKE_CURRENT_BINARY_DIR}/${name}_vobench_version.cpp)
+  file(CONFIGURE OUTPUT ${stamp} CONTENT
+       "extern \"C\" const char* vobench_plugin_version() { return \"${vobench_VERSION}\"; }\n")
+  add_library(${name} MODULE ${sources} ${stamp})
   target_link_libraries(${name} PRIVATE vobench::vobench)
   # Undefined symbols fail the link here, not the dlopen in vobench.
   target_link_options(${name} PRIVATE "LINKER:--no-undefined")

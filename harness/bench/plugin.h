@@ -10,5 +10,11 @@
 #include "harness/scene/input_error.h"
 
 #define VOBENCH_PLUGIN_ENTRY_POINT "vobench_register_orderers"
+#define VOBENCH_PLUGIN_VERSION "vobench_plugin_version"
 
 extern "C" void vobench_register_orderers(void);
+// Optional (vobench_add_plugin defines it): the vobench version the plugin was built
+// against; a plugin of another major.minor is refused before its entry point is called.
+extern "C" const char* vobench_plugin_version(void);
+// libvobench.so's own version ("0.15.0").
+extern "C" const char* vobench_library_version(void);

@@ -10,6 +10,12 @@
 #include "harness/scene/input_error.h"
 
 namespace vob {
+namespace {
+std::string major_minor(const std::string& version) {
+  const size_t dot = version.find('.');
+  return dot == std::string::npos ? version : version.substr(0, version.find('.', dot + 1));
+}
+}  // namespace
 
 void load_plugin(const std::string& path) {
   namespace fs = std::filesystem;
@@ -26,6 +32,12 @@ void load_plugin(const std::string& path) {
     const char* why = dlerror();
     throw InputError("--plugin", what, std::string("cannot be loaded as a shared library (") +
                                            (why ? why : "unknown reason") + ")");
+  }
+  if (void* v = dlsym(lib, VOBENCH_PLUGIN_VERSION)) {
+    const std::string built = reinterpret_cast<const char* (*)()>(v)(), ours = vobench_library_version();
+    if (major_minor(built) != major_minor(ours))
+      throw InputError("--plugin", what, "was built for vobench " + built + ", this is " + ours +
+                                             " (rebuild it against this installation)");
   }
   void* entry = dlsym(lib, VOBENCH_PLUGIN_ENTRY_POINT);
   if (!entry)

@@ -9,7 +9,8 @@
    package there (not the build tree);
 3. `vobench --plugin LIB list` shows its orderer; `check` with it passes on zoo, its
    deliberately wrong variant (reverse=true) fails (exit 1): the plugin's order is judged;
-4. a broken --plugin (missing file, not a library, no entry point) -> exit 2, one line;
+4. a broken --plugin (missing file, not a library, no entry point, built for another
+   vobench version) -> exit 2, one line;
 5. the installed program reads share/vobench of the moved prefix (a reproduction added
    there is listed; the build tree's program does not list it);
 6. a tiny suite with the plugin's orderer runs (the same counts as the built-in centroid it
@@ -115,6 +116,18 @@ for path, reason in [(os.path.join(WORK, "missing.so"), "no such file"),
     lines = p.stderr.strip().splitlines()
     if len(lines) != 1 or path not in lines[0] or reason not in lines[0]:
         fail(f"--plugin {path}: want one line with '{reason}', got {p.stderr!r}")
+
+# A plugin built for another vobench version is refused before its entry point runs.
+stale = os.path.join(WORK, "stale.cpp")
+open(stale, "w").write('#include <cstdlib>\n#include "harness/bench/plugin.h"\n'
+                       'extern "C" const char* vobench_plugin_version() { return "0.1.0"; }\n'
+                       'extern "C" void vobench_register_orderers() { std::abort(); }\n')
+stale_so = os.path.join(WORK, "libstale.so")
+run(["c++", "-std=c++20", "-shared", "-fPIC", "-I", include, stale, "-L", os.path.join(prefix, "lib"),
+     "-lvobench", "-o", stale_so])
+p = run([vobench, "--plugin", stale_so, "list"], ok=(2,))
+if "was built for vobench 0.1.0" not in p.stderr or len(p.stderr.strip().splitlines()) != 1:
+    fail(f"--plugin of another version: {p.stderr!r}")
 
 # 5. Files come from the moved prefix's share/vobench.
 marker = os.path.join(prefix, "share", "vobench", "datasets", "suites", "install-marker.json")
