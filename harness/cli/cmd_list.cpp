@@ -7,6 +7,7 @@
 #include "harness/bench/reproduction.h"
 #include "harness/bench/resources.h"
 #include "harness/cli/commands.h"
+#include "harness/cli/plugin_loader.h"
 
 namespace vob {
 
@@ -33,6 +34,7 @@ Command add_list_command(CLI::App& app) {
                                              {"detects_cycles", c.detects_cycles},
                                              {"composites", c.composites}}},
                                  {"params", params}});
+        if (const std::string from = plugin_of(o.name); !from.empty()) j["orderers"].back()["plugin"] = from;
       }
       for (const auto& p : probe_registry())
         j["probes"].push_back({{"name", p.name}, {"summary", p.summary}, {"needs_scene", p.needs_scene}});
@@ -47,7 +49,9 @@ Command add_list_command(CLI::App& app) {
     }
     std::cout << "Orderers (--algorithm NAME[:k=v,...]):\n";
     for (const auto& o : orderer_registry()) {
-      std::cout << "  " << o.name << " [" << scene_kind_name(o.kind) << "]  " << o.summary << "\n";
+      const std::string from = plugin_of(o.name);
+      std::cout << "  " << o.name << " [" << scene_kind_name(o.kind)
+                << (from.empty() ? "" : ", plugin " + from) << "]  " << o.summary << "\n";
       for (const ParamSpec& s : o.params) std::cout << "      " << s.describe() << "\n";
     }
     std::cout << "\nProbes (suite \"probes\" entries):\n";

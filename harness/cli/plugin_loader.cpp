@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <map>
 
 #include "harness/bench/plugin.h"
 #include "harness/bench/registry.h"
@@ -11,6 +12,10 @@
 
 namespace vob {
 namespace {
+std::map<std::string, std::string>& plugin_orderers() {  // orderer name -> plugin path
+  static std::map<std::string, std::string> m;
+  return m;
+}
 std::string major_minor(const std::string& version) {
   const size_t dot = version.find('.');
   return dot == std::string::npos ? version : version.substr(0, version.find('.', dot + 1));
@@ -52,6 +57,13 @@ void load_plugin(const std::string& path) {
   }
   if (orderer_registry().size() == before)
     throw InputError("--plugin", what, VOBENCH_PLUGIN_ENTRY_POINT " registered no orderer");
+  for (size_t i = before; i < orderer_registry().size(); ++i)
+    plugin_orderers()[orderer_registry()[i].name] = path;
+}
+
+std::string plugin_of(const std::string& orderer) {
+  const auto it = plugin_orderers().find(orderer);
+  return it == plugin_orderers().end() ? "" : it->second;
 }
 
 std::vector<char*> load_plugin_options(int argc, char** argv) {
@@ -72,7 +84,8 @@ std::vector<char*> load_plugin_options(int argc, char** argv) {
   }
   for (size_t j = i; j < rest.size(); ++j)
     if (std::strcmp(rest[j], "--plugin") == 0 || std::strncmp(rest[j], "--plugin=", 9) == 0)
-      throw InputError("--plugin", "option", "goes before the subcommand (vobench --plugin PATH.so SUBCOMMAND ...)");
+      throw InputError("--plugin", "option",
+                       "goes before the subcommand (vobench --plugin PATH.so SUBCOMMAND ...)");
   return rest;
 }
 

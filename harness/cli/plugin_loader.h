@@ -12,5 +12,7 @@ void load_plugin(const std::string& path);
 // Loads every leading "--plugin PATH" / "--plugin=PATH" (before the subcommand) and returns
 // argv without them. InputError for a --plugin without a path or after the subcommand.
 std::vector<char*> load_plugin_options(int argc, char** argv);
+// The path of the plugin that registered `orderer` ("" for the built-in ones).
+std::string plugin_of(const std::string& orderer);
 
 }  // namespace vob

@@ -92,9 +92,10 @@ if not os.path.isfile(plugin):
 
 # 3. The plugin's orderer is listed and judged.
 p = run([vobench, "--plugin", plugin, "list", "--json"])
-names = [o["name"] for o in json.loads(p.stdout)["orderers"]]
-if "oot-centroid" not in names or "sxmpvo" not in names:
-    fail(f"list --json with the plugin: orderers {names}")
+listed = {o["name"]: o for o in json.loads(p.stdout)["orderers"]}
+if "sxmpvo" not in listed or listed.get("oot-centroid", {}).get("plugin") != plugin \
+        or "plugin" in listed["sxmpvo"]:
+    fail(f"list --json with the plugin: {listed.get('oot-centroid')}, orderers {sorted(listed)}")
 if "oot-centroid" in run([vobench, "list"]).stdout:
     fail("oot-centroid listed without --plugin")
 scene = ["-d", "zoo", "--views", "3", "--size", "64x64", "--json"]
@@ -154,7 +155,8 @@ if sorted({r["algorithm"] for r in records}) != ["centroid", "oot-centroid"] or 
 # The plugin sorts like the built-in centroid (eye distance, back to front): same counts.
 counts = {}
 for r in records:
-    counts.setdefault((r["dataset"], r["camera"]["eye"][0]), {})[r["algorithm"]] = r["oracle"]["violating_pixels"]
+    view = (r["dataset"], r["camera"]["eye"][0])
+    counts.setdefault(view, {})[r["algorithm"]] = r["oracle"]["violating_pixels"]
 if any(c["oot-centroid"] != c["centroid"] for c in counts.values()):
     fail(f"oot-centroid and centroid disagree: {counts}")
 run([vobench, "--plugin", plugin, "report", out])
