@@ -9,6 +9,7 @@
 
 #include "datasets/datasets.h"
 #include "harness/bench/registry.h"
+#include "harness/bench/sorter_answer.h"
 #include "harness/bench/sorter_process.h"
 #include "harness/scene/input_error.h"
 
@@ -67,47 +68,35 @@ class ExternalOrderer final : public Orderer {
   Ordering order(const Camera& view, PhaseClock& clock) override {
     if (!process_) throw InputError(where(), view_name(), "the sorter is not running (an earlier view failed)");
     const nlohmann::json request{{"view_index", view_index_}, {"camera", view.to_json()}};
+    // The round trip: from writing the request to a checked order in memory.
     const auto t0 = std::chrono::steady_clock::now();
     const auto deadline = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                                    std::chrono::duration<double>(timeout_));
     std::string line;
     SorterProcess::Io io = process_->write_line(request.dump(), deadline);
     if (io == SorterProcess::Io::Ok) io = process_->read_line(line, deadline);
-    const double round_trip = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (io == SorterProcess::Io::Timeout) fail("did not answer within " + short_number(timeout_) + " s (timeout)");
     if (io == SorterProcess::Io::Gone) fail(process_->exit_description() + " before answering");
-
-    Ordering out;
-    double sorter_seconds = 0;
-    nlohmann::json answer;
-    try {
-      answer = nlohmann::json::parse(line);
-    } catch (const nlohmann::json::exception&) {
-      fail("answered malformed JSON: '" + line.substr(0, 60) + (line.size() > 60 ? "...'" : "'"));
-    }
-    if (!answer.is_object() || !answer.contains("order") || !answer["order"].is_array())
-      fail("answered no \"order\" array: '" + line.substr(0, 60) + (line.size() > 60 ? "...'" : "'"));
-    const auto& ids = answer["order"];
-    out.order.reserve(ids.size());
-    for (size_t i = 0; i < ids.size(); ++i) {
-      if (!ids[i].is_number_integer() || ids[i].get<int64_t>() < INT32_MIN || ids[i].get<int64_t>() > INT32_MAX)
-        fail("order[" + std::to_string(i) + "] is " + ids[i].dump().substr(0, 30) + ", not an id");
-      out.order.push_back(static_cast<int32_t>(ids[i].get<int64_t>()));
-    }
-    const std::string problem = permutation_problem(scene_, out.order);
+    const auto answered = std::chrono::steady_clock::now();
+    SorterAnswer answer;
+    const std::string malformed = decode_sorter_answer(line, answer);
+    if (!malformed.empty()) fail(malformed);
+    const std::string problem = permutation_problem(scene_, answer.order);
     if (!problem.empty()) fail("the order " + problem);
-    if (answer.contains("phases")) {
-      if (!answer["phases"].is_object()) fail("\"phases\" is not an object of seconds");
-      for (const auto& [name, s] : answer["phases"].items()) {
-        if (!s.is_number() || !std::isfinite(s.get<double>()) || s.get<double>() < 0)
-          fail("phase '" + name + "' is " + s.dump().substr(0, 30) + ", not seconds");
-        clock.add("sorter:" + name, s.get<double>());
-        sorter_seconds += s.get<double>();
-      }
+    const auto done = std::chrono::steady_clock::now();
+    const double round_trip = std::chrono::duration<double>(done - t0).count();
+    double sorter_seconds = 0;
+    for (const auto& [name, s] : answer.phases) {
+      clock.add("sorter:" + name, s);
+      sorter_seconds += s;
     }
     // The rest of the round trip: encoding, pipes, decoding, the sorter's untimed work.
     clock.add("round_trip", std::max(0.0, round_trip - sorter_seconds));
+    Ordering out;
+    out.order = std::move(answer.order);
     out.counters["round_trip_seconds"] = round_trip;
+    // vobench's own share: decoding and checking the answer.
+    out.counters["decode_seconds"] = std::chrono::duration<double>(done - answered).count();
     return out;
   }
 
