@@ -139,6 +139,11 @@ for vi in (1, 3):
 sent = [json.loads(ln)["view_index"] for ln in open(log)]
 if sent != [1, 1, 1, 3, 3, 3]:  # warm-up and two repeats per view
     fail(f"suite: view indices sent {sent}")
+suite["algorithms"] = [{"name": "mine", "command": f"{SORTER} crash"}]
+json.dump(suite, open(os.path.join(WORK, "broken.json"), "w"))
+p = expect(["run", os.path.join(WORK, "broken.json"), "-o", os.path.join(WORK, "broken", "results.jsonl")], 2)
+if "view 1: exited with status" not in p.stderr.strip().splitlines()[-1]:  # its 2nd request: view 1 again
+    fail(f"suite with a crashing sorter: {p.stderr[-1500:]}")
 
 # 5. thresholds and JUnit
 report = views_of(["check", *CELLS, *CELL_VIEWS, "-a", "centroid", "--max-rmse", "1e9"])
