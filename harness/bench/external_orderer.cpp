@@ -74,7 +74,11 @@ class ExternalOrderer final : public Orderer {
                                    std::chrono::duration<double>(timeout_));
     std::string line;
     SorterProcess::Io io = process_->write_line(request.dump(), deadline);
-    if (io == SorterProcess::Io::Ok) io = process_->read_line(line, deadline);
+    // An answer needs about 12 bytes per id; far more without a newline is not one.
+    const size_t max_bytes = 64 * scene_.num_primitives() + (size_t(16) << 20);
+    if (io == SorterProcess::Io::Ok) io = process_->read_line(line, deadline, max_bytes);
+    if (io == SorterProcess::Io::TooLong)
+      fail("wrote more than " + std::to_string(max_bytes) + " bytes without ending the line");
     if (io == SorterProcess::Io::Timeout) fail("did not answer within " + short_number(timeout_) + " s (timeout)");
     if (io == SorterProcess::Io::Gone) fail(process_->exit_description() + " before answering");
     const auto answered = std::chrono::steady_clock::now();

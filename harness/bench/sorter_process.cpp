@@ -155,7 +155,7 @@ SorterProcess::Io SorterProcess::write_line(const std::string& line, Deadline de
   return Io::Ok;
 }
 
-SorterProcess::Io SorterProcess::read_line(std::string& line, Deadline deadline) {
+SorterProcess::Io SorterProcess::read_line(std::string& line, Deadline deadline, size_t max_bytes) {
   char chunk[1 << 16];
   for (;;) {
     const size_t nl = buffer_.find('\n');
@@ -164,6 +164,7 @@ SorterProcess::Io SorterProcess::read_line(std::string& line, Deadline deadline)
       buffer_.erase(0, nl + 1);
       return Io::Ok;
     }
+    if (buffer_.size() > max_bytes) return Io::TooLong;
     pollfd p{out_, POLLIN, 0};
     const int r = ::poll(&p, 1, millis_until(deadline));
     if (r < 0 && errno == EINTR) continue;

@@ -14,7 +14,7 @@ namespace vob {
 class SorterProcess {
  public:
   using Deadline = std::chrono::steady_clock::time_point;
-  enum class Io { Ok, Gone, Timeout };
+  enum class Io { Ok, Gone, Timeout, TooLong };
 
   // Throws InputError naming the command when it cannot be started.
   SorterProcess(const std::string& command, const std::vector<std::pair<std::string, std::string>>& env,
@@ -24,7 +24,8 @@ class SorterProcess {
   SorterProcess& operator=(const SorterProcess&) = delete;
 
   Io write_line(const std::string& line, Deadline deadline);  // `line` without '\n'
-  Io read_line(std::string& line, Deadline deadline);         // the line without '\n'
+  // The line without '\n'; TooLong once more than max_bytes arrive without a newline.
+  Io read_line(std::string& line, Deadline deadline, size_t max_bytes);
   // "exited with status 1", "was killed by signal 11 (Segmentation fault)", or "closed its
   // stdout" while still running; waits up to a second for the exit.
   std::string exit_description();

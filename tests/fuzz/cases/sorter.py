@@ -63,6 +63,7 @@ def cases(work):
                              "view 1: was killed by signal 9"),
         "not-found": ("{dir}/no-such-sorter", "status 127"),
         "hang": ("sleep 30", "view 0: did not answer within 1 s"),
+        "endless-line": ("yes | tr -d '\\n'", "view 0: wrote more than"),
     }
     for name, (cmd, names) in sorters.items():
         # --json: nothing on stdout before the end, even when view 0 was fine
