@@ -136,6 +136,12 @@ for vi in (1, 3):
         fail(f"suite: mine and centroid differ at view {vi}")
     if set(by[("mine", vi)]["phases"]) != {"round_trip", "sorter:sort"}:
         fail(f"suite: phases {sorted(by[('mine', vi)]['phases'])}")
+import jsonschema  # noqa: E402 (only this part needs it)
+schema = json.load(open(os.path.join(SOURCE, "docs", "record.schema.json")))
+for r in recs:
+    errors = list(jsonschema.Draft202012Validator(schema).iter_errors(r))
+    if errors:
+        fail(f"suite: a {r.get('algorithm', r.get('type'))} record breaks the schema: {errors[0].message[:300]}")
 sent = [json.loads(ln)["view_index"] for ln in open(log)]
 if sent != [1, 1, 1, 3, 3, 3]:  # warm-up and two repeats per view
     fail(f"suite: view indices sent {sent}")
