@@ -47,7 +47,8 @@ std::string percent_text(double v) {
 }  // namespace
 
 Command add_check_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("check", "check an orderer with the oracle (exit 1 on a violation)");
+  auto* cmd = app.add_subcommand("check", "check an orderer, an order file or a sorter program with the oracle (exit 1 on a "
+                                          "violation, or with thresholds on one exceeded)");
   auto scene_args = std::make_shared<SceneArgs>();
   auto view_args = std::make_shared<ViewArgs>();
   auto algorithm = std::make_shared<std::string>();
