@@ -5,8 +5,9 @@
    (a heuristic with violations: exit 1, same counts; an exact one: exit 0), reversed it
    fails (exit 1), a dropped cell is exit 2 with one line naming the file;
 2. the README's Python sorter (docs/examples/centroid_sorter.py, also checked to be the text
-   the README shows) gets triangle-centroid's counts; the C++ sorter (external_sorter) gets
-   centroid's counts, with its phases recorded beside the round trip;
+   the README shows) gets triangle-centroid's counts; the C++ sorter (external_sorter) and a
+   Python one reading the .vtu with docs/examples/vtu_cells.py get centroid's counts, with
+   their phases recorded beside the round trip;
 3. broken sorters (dropped cell, repeated cell, nonsense, crash, hang past --timeout, no
    program) -> exit 2 and one line naming the view;
 4. a suite entry {"name": "mine", "command": ...}: records with the built-in's counts, the
@@ -104,6 +105,11 @@ builtin = views_of(["check", *CELLS, *CELL_VIEWS, "-a", "centroid"])
 cpp = views_of(["check", *CELLS, *CELL_VIEWS, "--command", SORTER])
 if counts(cpp) != counts(builtin) or not any(c[1] for c in counts(builtin)):
     fail(f"C++ sorter {counts(cpp)} != centroid {counts(builtin)} (or no violations to compare)")
+cells_py = os.path.join(os.path.dirname(os.path.abspath(__file__)), "cell_centroid_sorter.py")
+python = views_of(["check", *CELLS, *CELL_VIEWS, "--command",
+                   f"/usr/bin/python3 {cells_py} {os.path.join(SOURCE, 'docs', 'examples')}"])
+if counts(python) != counts(builtin):  # the .vtu read by docs/examples/vtu_cells.py
+    fail(f"Python cell sorter {counts(python)} != centroid {counts(builtin)}")
 
 # 3. broken sorters: exit 2, one line naming the view and the fault
 one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", f"{SORTER} drop"], "view 0", "767 ids for 768 cells")
