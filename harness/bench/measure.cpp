@@ -4,6 +4,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "harness/bench/external_orderer.h"
 #include "harness/bench/registry.h"
 #include "harness/oracle/oracle.h"
 #include "harness/raster/polygon_raster.h"
@@ -100,6 +101,7 @@ FrameMeasurement measure_frame(PreparedOrderer& p, const Camera& view, int warmu
 
 Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene& scene,
                                 const SuiteSpec& suite, const Record& base) {
+  set_external_view_index(*p.orderer, job.view_index);  // the sorter protocol sends it
   FrameMeasurement m = measure_frame(p, job.camera, suite.warmup, suite.repeats);
   check_complete(scene, m.ordering, job.spec);
   Measurement out;

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "datasets/datasets.h"
+#include "harness/bench/external_orderer.h"
 #include "harness/bench/job_plan.h"
 #include "harness/bench/json_input.h"
 #include "harness/bench/names.h"
@@ -194,13 +196,47 @@ void check_some_dataset_fits(const SuiteReader& r, const std::string& spec, cons
                     scene_kind_name(kind) + " (they are " + kinds + "), so it would run nothing");
 }
 
+// {"name": "mine", "command": "CMD ARGS", "kind": "cells", "timeout": 60}: another program
+// speaking the sorter protocol (external_orderer.h), registered under its name. "kind"
+// defaults to the datasets' kind when they all have one.
+std::string read_command_algorithm(const SuiteReader& r, const nlohmann::json& a, const std::string& where,
+                                   const std::vector<DatasetSpec>& datasets) {
+  r.only_keys(a, where, {"name", "command", "kind", "timeout", "comment"});
+  if (!a.contains("name")) r.fail(where + ".name", "is missing");
+  const std::string name = r.string(a["name"], where + ".name");
+  const std::string command = r.string(a["command"], where + ".command");
+  const double timeout =
+      a.contains("timeout") ? r.number(a["timeout"], where + ".timeout", 0, 1e6) : kDefaultSorterTimeout;
+  std::optional<SceneKind> kind;
+  if (a.contains("kind")) {
+    const std::string k = r.string(a["kind"], where + ".kind");
+    for (SceneKind c : {SceneKind::Cells, SceneKind::Triangles, SceneKind::Voxels})
+      if (k == scene_kind_name(c)) kind = c;
+    if (!kind) r.fail(where + ".kind", "'" + k + "' is not cells, triangles or voxels");
+  } else {
+    for (const auto& ds : datasets) {
+      const SceneKind k = dataset_kind(ds);
+      if (kind && *kind != k) r.fail(where + ".kind", "is needed: the datasets are of several kinds");
+      kind = k;
+    }
+  }
+  try {
+    register_external_orderer(name, command, *kind, timeout);
+  } catch (const InputError& e) {
+    r.fail(where + ".name", e.what());
+  }
+  return name;
+}
+
 // A string spec ("havs:k=6", "all") or {"name", "set", "grid"}: one spec per grid point.
-std::vector<std::string> read_algorithm(const SuiteReader& r, const nlohmann::json& a, const std::string& where) {
+std::vector<std::string> read_algorithm(const SuiteReader& r, const nlohmann::json& a, const std::string& where,
+                                        const std::vector<DatasetSpec>& datasets) {
   if (a.is_string()) {
     const std::string spec = r.string(a, where);
     if (spec != "all") check_orderer(r, spec, where);
     return {spec};
   }
+  if (a.is_object() && a.contains("command")) return {read_command_algorithm(r, a, where, datasets)};
   r.only_keys(a, where, {"name", "set", "grid", "comment"});
   if (!a.contains("name")) r.fail(where + ".name", "is missing");
   const std::string name = r.string(a["name"], where + ".name");
@@ -337,7 +373,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
     const auto& algorithms = r.array(j["algorithms"], "algorithms");
     if (s.datasets.empty()) r.fail("algorithms", "need datasets");
     for (size_t i = 0; i < algorithms.size(); ++i)
-      for (auto& spec : read_algorithm(r, algorithms[i], "algorithms[" + std::to_string(i) + "]")) {
+      for (auto& spec : read_algorithm(r, algorithms[i], "algorithms[" + std::to_string(i) + "]", s.datasets)) {
         check_some_dataset_fits(r, spec, s.datasets, "algorithms[" + std::to_string(i) + "]");
         s.algorithms.push_back(std::move(spec));
       }

@@ -4,7 +4,8 @@
 //   {"name": "quick",
 //    "datasets": [{"name": "gap", "set": {"nx": 8}, "grid": {"gaps": [0, 3]},
 //                  "label": "gap {gaps}"}, {"input": "mesh.vtu"}],
-//    "algorithms": ["mpvo", {"name": "havs", "grid": {"k": [2, 6]}}],  // or ["all"]
+//    "algorithms": ["mpvo", {"name": "havs", "grid": {"k": [2, 6]}},  // or ["all"]
+//                   {"name": "mine", "command": "./mysort --fast"}],  // external_orderer.h
 //    "probes": [{"name": "xmpvo-stability"}],
 //    "views": 14, "view_indices": [0, 3] | "spread_views": 3 | "view_directions": [...],
 //    "orbit": false,

@@ -2,16 +2,24 @@
 // The verdict is the one of the records (harness/bench/verdict.h): an orderer that
 // composites itself (HAVS) is judged on what it composites ("judged": "composited"), the
 // oracle's count on its derived cell order shown beside, labelled so.
+// The orderings come from a registered orderer (--algorithm), a file (--order ORDER.json,
+// the format `vobench order` writes) or another program (--command, external_orderer.h).
 // Exit 0: no violation in any view; 1: some violation; 2: bad usage or input, including
 // cells the oracle sees overlapping (the input has no visibility order; no orderer is
-// blamed) and --supersample > 1 for a compositing orderer.
+// blamed), --supersample > 1 for a compositing orderer and a broken external sorter.
+// With --max-violating-pixels / --max-rmse the exit is 1 only when a threshold is exceeded
+// (a CI gate for heuristics); --junit writes one JUnit test case per view.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
+#include "harness/bench/external_orderer.h"
+#include "harness/bench/junit.h"
 #include "harness/bench/runner.h"
 #include "harness/bench/verdict.h"
 #include "harness/oracle/oracle.h"
+#include "harness/cli/check_sources.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/scene_args.h"
 #include "harness/render/compositor.h"
@@ -30,89 +38,197 @@ std::string overlap_fault_line(const std::string& source, const OracleResult& r,
   return line + ", " + std::to_string(r.overlapping_pairs) +
          " overlapping pairs): the input has no visibility order";
 }
+
+std::string percent_text(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g%%", v);
+  return b;
+}
 }  // namespace
 
 Command add_check_command(CLI::App& app) {
-  auto* cmd = app.add_subcommand("check", "check an orderer with the oracle (exit 1 on a violation)");
+  auto* cmd = app.add_subcommand("check", "check an orderer, an order file or a sorter program with the oracle (exit 1 on a "
+                                          "violation, or with thresholds on one exceeded)");
   auto scene_args = std::make_shared<SceneArgs>();
   auto view_args = std::make_shared<ViewArgs>();
   auto algorithm = std::make_shared<std::string>();
+  auto order_path = std::make_shared<std::string>();
+  auto command = std::make_shared<std::string>();
+  auto timeout = std::make_shared<double>(kDefaultSorterTimeout);
   auto supersample = std::make_shared<int>(1);
   auto json = std::make_shared<bool>(false);
   auto images = std::make_shared<std::string>();
-  cmd->add_option("--algorithm,-a", *algorithm, "orderer NAME[:k=v,...]")->required();
+  auto max_pixels = std::make_shared<double>(-1);
+  auto max_rmse = std::make_shared<double>(-1);
+  auto junit = std::make_shared<std::string>();
+  cmd->add_option("--algorithm,-a", *algorithm, "orderer NAME[:k=v,...]");
+  cmd->add_option("--order", *order_path,
+                  "judge the permutation in this file (the format `vobench order` writes); its camera "
+                  "and dataset unless view or scene options are given");
+  cmd->add_option("--command", *command,
+                  "judge another program speaking the sorter protocol (README \"Judging your own sorter\")");
+  cmd->add_option("--timeout", *timeout, "--command: seconds to wait for each answer (default 60)")
+      ->check(number_in(0, 1e6, true, false));
   scene_args->add_to(*cmd);
   view_args->add_to(*cmd);
   cmd->add_option("--supersample", *supersample, "S x S samples per pixel")->check(integer_in(1, 16));
   cmd->add_flag("--json", *json, "print the oracle's counts per view as JSON");
   cmd->add_option("--images", *images, "write order/exact/diff/violations PNGs of every view here");
+  cmd->add_option("--max-violating-pixels", *max_pixels,
+                  "pass (exit 0) when violating pixels are at most PCT percent of the covered pixels of all views")
+      ->check(number_in(0, 100, false, false));
+  cmd->add_option("--max-rmse", *max_rmse,
+                  "pass (exit 0) when every view's image RMSE against the exact composite is at most X")
+      ->check(number_in(0, 1e9, false, false));
+  cmd->add_option("--junit", *junit, "write JUnit XML here: one test case per view, the counts in its message");
   return [=]() {
+    const int sources = !algorithm->empty() + !order_path->empty() + !command->empty();
+    if (sources != 1)
+      throw InputError("--algorithm/--order/--command", "orderings", "give exactly one of --algorithm NAME, --order FILE or --command \"CMD ARGS\"");
+    if (cmd->get_option("--timeout")->count() && command->empty())
+      throw InputError("--timeout", "orderings", "applies to --command only");
+    std::optional<OrderFile> file;
+    if (!order_path->empty()) {
+      file = read_order_file(*order_path);
+      scene_from_order_file(*file, *scene_args);
+    }
     const DatasetSpec spec = scene_args->spec();
     view_args->validate(spec);
-    check_algorithm(*algorithm, spec);
+    if (!algorithm->empty()) check_algorithm(*algorithm, spec);
     std::error_code ec;
     if (!images->empty() && std::filesystem::exists(*images, ec) && !std::filesystem::is_directory(*images, ec))
       throw InputError("--images", "'" + *images + "'", "exists and is not a folder");
+    if (!junit->empty() && std::filesystem::is_directory(*junit, ec))
+      throw InputError("--junit", "'" + *junit + "'", "is a folder, not a file");
+    // The file's camera unless the command line chooses views.
+    bool view_options = false;
+    for (const char* o : {"--views", "--view-index", "--orbit", "--eye", "--target", "--up", "--fov", "--ortho",
+                          "--ortho-views", "--zoom", "--size"})
+      view_options = view_options || cmd->get_option(o)->count() > 0;
+    if (file && !view_options && !file->camera)
+      throw InputError(file->path, "camera", "is not in the file: give view options (--views, --eye/--target, ...)");
     const Scene scene = scene_args->load(spec);
-    const auto cams = view_args->cameras(spec, scene);
-    PreparedOrderer p = prepare_orderer(*algorithm, scene);
+    const auto cams = file && !view_options ? std::vector<std::pair<int, Camera>>{{file->view_index, *file->camera}}
+                                            : view_args->cameras(spec, scene);
+    PreparedOrderer p = file               ? prepare_fixed_order(*file, scene)
+                        : !command->empty() ? prepare_command(*command, *timeout, scene)
+                                            : prepare_orderer(*algorithm, scene);
+    const std::string label = file ? file->label : !command->empty() ? *command : *algorithm;
+    const bool gated = *max_pixels >= 0 || *max_rmse >= 0;
+    const bool want_error = !images->empty() || *max_rmse >= 0;
     OracleOptions oo;
     oo.supersample = *supersample;
     oo.violation_mask = !images->empty();
-    nlohmann::json out{{"algorithm", *algorithm}, {"dataset", spec.to_json()},
+    nlohmann::json out{{"algorithm", label}, {"dataset", spec.to_json()},
                        {"judged", p.orderer->claims().composites ? "composited" : "order"},
                        {"primitives", scene.num_primitives()}, {"supersample", *supersample},
                        {"views", nlohmann::json::array()}};
+    if (file) out["order_file"] = file->path;
+    if (!command->empty()) out["command"] = *command;
     int failing = 0;
-    int64_t cycles = 0;
+    int64_t cycles = 0, covered = 0, violating = 0;
+    double worst_rmse = 0;
+    std::vector<JunitCase> cases;
     for (const auto& [vi, cam] : cams) {
+      set_external_view_index(*p.orderer, vi);
       FrameMeasurement m = measure_frame(p, cam, 0, 1);
-      check_complete(scene, m.ordering, *algorithm);
-      const Verdict verdict = judge(*p.orderer, *algorithm, scene, cam, m.ordering, oo, "--supersample");
+      check_complete(scene, m.ordering, label);
+      const Verdict verdict = judge(*p.orderer, label, scene, cam, m.ordering, oo, "--supersample");
       const OracleResult& r = verdict.result;
       if (verdict.input_fault()) throw InputError(overlap_fault_line(source_name(spec), verdict.order_result(), vi));
       failing += r.ok() ? 0 : 1;
       cycles += m.ordering.cycles.cycles;
+      covered += r.covered_pixels;
+      violating += r.violating_pixels;
       nlohmann::json v = verdict.json();
       if (verdict.cell_order) v["oracle_cell_order"] = verdict.cell_order_json();
       v["view_index"] = vi;
       v["camera"] = cam.to_json();
       v["cycles"] = m.ordering.cycles.cycles;
       v["seconds"] = m.total_median();
-      if (!images->empty()) {
-        namespace fs = std::filesystem;
+      nlohmann::json phases = nlohmann::json::object();
+      for (const auto& [n, s] : m.repeats.back()) phases[n] = s;
+      v["phases"] = phases;
+      std::optional<ImageError> err;
+      if (want_error) {
         const ShownImages shown = shown_images(*p.orderer, scene, cam, m.ordering);
-        fs::create_directories(*images);
-        const std::string stem = (fs::path(*images) / ("view" + std::to_string(vi))).string();
-        write_png(shown.ordered, stem + "-order.png");
-        write_png(shown.exact, stem + "-exact.png");
-        write_png(difference_image(shown.ordered, shown.exact), stem + "-diff.png");
-        write_png(violation_image(shown.exact, r.violation_mask), stem + "-violations.png");
-        v["image_error"] = image_error(shown.ordered, shown.exact).to_json();
+        err = image_error(shown.ordered, shown.exact);
+        v["image_error"] = err->to_json();
+        worst_rmse = std::max(worst_rmse, err->rmse);
+        if (!images->empty()) {
+          namespace fs = std::filesystem;
+          fs::create_directories(*images);
+          const std::string stem = (fs::path(*images) / ("view" + std::to_string(vi))).string();
+          write_png(shown.ordered, stem + "-order.png");
+          write_png(shown.exact, stem + "-exact.png");
+          write_png(difference_image(shown.ordered, shown.exact), stem + "-diff.png");
+          write_png(violation_image(shown.exact, r.violation_mask), stem + "-violations.png");
+        }
       }
+      const double pct = r.covered_pixels ? 100.0 * r.violating_pixels / r.covered_pixels : 0.0;
+      std::string counts = "violating pixels " + std::to_string(r.violating_pixels) + " of " +
+                           std::to_string(r.covered_pixels) + " covered (" + percent_text(pct) + "), fragments " +
+                           std::to_string(r.violating_fragments) +
+                           (r.pairs_counted ? ", pairs " + std::to_string(r.violating_pairs) : "") + ", max_k " +
+                           std::to_string(r.max_k);
+      if (err) counts += ", rmse " + short_number(err->rmse);
+      // A view's case fails on its own numbers: over a threshold when thresholds are set.
+      const bool view_failed = gated ? ((*max_pixels >= 0 && pct > *max_pixels) || (err && err->rmse > *max_rmse))
+                                     : !r.ok();
+      cases.push_back({vi >= 0 ? "view " + std::to_string(vi) : "camera", "vobench.check." + label,
+                       m.total_median(), view_failed, counts});
       if (!*json) {
         const std::string pairs = r.pairs_counted ? "  pairs " + std::to_string(r.violating_pairs) : "";
         const std::string derived =
             verdict.cell_order ? "  (composited; derived cell order: violating pixels " +
                                      std::to_string(verdict.cell_order->violating_pixels) + ")"
                                : "";
-        std::printf("view %3d: %s  covered %lld  violating pixels %lld  fragments %lld%s  max_k %d%s%s\n",
+        const std::string rmse = err ? "  rmse " + short_number(err->rmse) : "";
+        std::printf("view %3d: %s  covered %lld  violating pixels %lld  fragments %lld%s  max_k %d%s%s%s\n",
                     vi, r.ok() ? "ok  " : "FAIL", (long long)r.covered_pixels,
                     (long long)r.violating_pixels, (long long)r.violating_fragments, pairs.c_str(), r.max_k,
                     m.ordering.cycles.cycles ? ("  cycles " + std::to_string(m.ordering.cycles.cycles)).c_str() : "",
-                    derived.c_str());
+                    rmse.c_str(), derived.c_str());
       }
       out["views"].push_back(v);
     }
+    const double pct = covered ? 100.0 * violating / covered : 0.0;
+    bool passed = failing == 0;
+    std::string gate_line;
+    if (gated) {
+      passed = true;
+      if (*max_pixels >= 0) {
+        const bool ok = pct <= *max_pixels;
+        passed = passed && ok;
+        gate_line += "violating pixels " + percent_text(pct) + " of covered (limit " + percent_text(*max_pixels) +
+                     "): " + (ok ? "pass" : "FAIL");
+      }
+      if (*max_rmse >= 0) {
+        const bool ok = worst_rmse <= *max_rmse;
+        passed = passed && ok;
+        gate_line += std::string(gate_line.empty() ? "" : "; ") + "worst rmse " + short_number(worst_rmse) +
+                     " (limit " + short_number(*max_rmse) + "): " + (ok ? "pass" : "FAIL");
+      }
+      out["thresholds"] = {{"max_violating_pixels", *max_pixels >= 0 ? nlohmann::json(*max_pixels) : nlohmann::json()},
+                           {"max_rmse", *max_rmse >= 0 ? nlohmann::json(*max_rmse) : nlohmann::json()}};
+      if (*max_rmse >= 0) out["worst_rmse"] = worst_rmse;
+    }
     out["failing_views"] = failing;
     out["cycles"] = cycles;
+    out["covered_pixels"] = covered;
+    out["violating_pixels"] = violating;
+    out["violating_pixel_percent"] = pct;
+    out["passed"] = passed;
+    if (!junit->empty()) write_junit(*junit, "vobench check " + label + " on " + spec.label(), cases);
     if (*json)
       std::cout << out.dump(2) << "\n";
-    else
-      std::printf("%s: %d of %zu views with violations (%s, %zu %s)\n", algorithm->c_str(), failing,
+    else {
+      std::printf("%s: %d of %zu views with violations (%s, %zu %s)\n", label.c_str(), failing,
                   cams.size(), spec.label().c_str(), scene.num_primitives(),
                   scene_kind_name(scene.kind()));
-    return failing ? 1 : 0;
+      if (gated) std::printf("%s\n", gate_line.c_str());
+    }
+    return passed ? 0 : 1;
   };
 }
 
