@@ -1,0 +1,21 @@
+// Python arguments into the harness's types: an order (numpy array or sequence of ids) and
+// generator parameters given as keyword arguments.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <pybind11/pybind11.h>
+
+namespace vob {
+
+// A 1-D array of primitive ids: an int32 numpy array is read in place (one copy, into the
+// vector the oracle takes); other integer arrays and sequences are converted when every id
+// fits in int32. InputError (-> ValueError) for other shapes, dtypes or values.
+std::vector<int32_t> order_ids(pybind11::handle order);
+
+// A keyword value as `--set k=v` text: True/False -> true/false, numbers and strings as
+// str() writes them (1e-06, 8, 'helix').
+std::string param_text(pybind11::handle value);
+
+}  // namespace vob
