@@ -58,6 +58,9 @@ Vec3 tuple_vec(py::handle h, const char* what) {
 Camera camera_from_dict(py::handle d) {
   const nlohmann::json j = python_to_json(d, "camera");
   if (!j.is_object()) throw InputError("camera", "value", "expected a dict with the keys of ORDER.json's camera");
+  for (const char* k : {"eye", "target", "up", "width", "height"})
+    if (!j.contains(k))
+      throw InputError("camera", k, "is missing (a camera has eye, target, up, width, height and fov or ortho_height)");
   try {
     return Camera::from_json(j);
   } catch (const nlohmann::json::exception& e) {
@@ -75,7 +78,8 @@ py::array owned_array(std::vector<T>&& v, std::vector<py::ssize_t> shape) {
   return py::array_t<T>(shape, heap->data(), owner);
 }
 
-py::object order(PyScene& s, const Camera& cam, const std::string& algorithm, bool details) {
+// The camera is copied before the GIL is released: Python may change the object meanwhile.
+py::object order(PyScene& s, const Camera cam, const std::string& algorithm, bool details) {
   FrameMeasurement m;
   double prepare_seconds = 0;
   {
@@ -100,7 +104,7 @@ py::object order(PyScene& s, const Camera& cam, const std::string& algorithm, bo
   return py::make_tuple(ids, info);
 }
 
-py::dict check(PyScene& s, const Camera& cam, py::handle order_obj, int supersample, bool violation_mask) {
+py::dict check(PyScene& s, const Camera cam, py::handle order_obj, int supersample, bool violation_mask) {
   if (supersample < 1 || supersample > 16)
     throw InputError("check", "supersample " + std::to_string(supersample), "must be in [1, 16]");
   Ordering ordering;
