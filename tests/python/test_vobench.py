@@ -8,6 +8,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import threading
 import unittest
 
 import numpy as np
@@ -142,6 +143,41 @@ class ModuleTest(unittest.TestCase):
             self.assertEqual(s.num_primitives, self.scene.num_primitives)
             cam = vobench.views(s, 6, 96, 80)[VIEW]
             self.assertEqual(vobench.check(s, cam, vobench.order(s, cam, "sxmpvo"))["violating_pixels"], 0)
+
+    def test_every_kind_matches_the_program(self):
+        for name, sets, algo in [("block", ["nx=12", "ny=10", "nz=8"], "btf"),
+                                 ("spheres", ["subdiv=1"], "triangle-centroid")]:
+            s = vobench.generate(name, **dict(kv.split("=") for kv in sets))
+            cam = vobench.views(s, 4, 64, 48)[1]
+            got = vobench.check(s, cam, vobench.order(s, cam, algo))
+            args = ["check", "-a", algo, "--dataset", name, "--views", "4", "--view-index", "1",
+                    "--size", "64x48", "--json"]
+            for kv in sets:
+                args += ["--set", kv]
+            p = subprocess.run([VOBENCH] + args, capture_output=True, text=True)
+            view = json.loads(p.stdout)["views"][0]
+            self.assertEqual(got, {k: v for k, v in view.items() if k not in VIEW_ONLY_KEYS}, name)
+        # Voxel orders list significant voxel ids, not grid positions 0..n-1.
+        s = vobench.generate("block", nx=12, ny=10, nz=8)
+        with self.assertRaisesRegex(ValueError, "significant voxels"):
+            vobench.check(s, cam, np.arange(s.num_primitives, dtype=np.int32))
+
+    def test_threads_share_a_scene(self):
+        # The GIL is released while ordering and checking; a scene's prepared orderers and
+        # derived structures are used by one thread at a time.
+        s = vobench.generate("helix", cells=2000)
+        alone = [vobench.check(s, c, vobench.order(s, c, "mpvonc")) for c in self.cams]
+        results = [None] * len(self.cams)
+
+        def work(i):
+            results[i] = vobench.check(s, self.cams[i], vobench.order(s, self.cams[i], "mpvonc"))
+
+        threads = [threading.Thread(target=work, args=(i,)) for i in range(len(self.cams))]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        self.assertEqual(results, alone)
 
     def test_registry_lists(self):
         self.assertIn("sxmpvo", vobench.algorithms("cells"))
