@@ -180,7 +180,23 @@ PYBIND11_MODULE(_vobench, m) {
       .def("__repr__", &scene_repr);
 
   py::class_<Camera>(m, "Camera", "a view: the camera keys of ORDER.json")
-      .def(py::init<>())
+      .def(py::init([](py::handle eye, py::handle target, py::handle up, double fov, py::object ortho_height,
+                       int width, int height) {
+             Camera c;
+             c.eye = tuple_vec(eye, "eye");
+             c.target = tuple_vec(target, "target");
+             c.up = tuple_vec(up, "up");
+             c.fov_deg = fov;
+             c.ortho = !ortho_height.is_none();
+             if (c.ortho) c.ortho_height = ortho_height.cast<double>();
+             c.width = width;
+             c.height = height;
+             c.validate();
+             return c;
+           }),
+           py::kw_only(), py::arg("eye") = py::make_tuple(0, 0, 5), py::arg("target") = py::make_tuple(0, 0, 0),
+           py::arg("up") = py::make_tuple(0, 1, 0), py::arg("fov") = 40.0, py::arg("ortho_height") = py::none(),
+           py::arg("width") = 512, py::arg("height") = 512)
       .def_property("eye", [](const Camera& c) { return vec_tuple(c.eye); },
                     [](Camera& c, py::handle v) { c.eye = tuple_vec(v, "eye"); })
       .def_property("target", [](const Camera& c) { return vec_tuple(c.target); },
@@ -194,6 +210,8 @@ PYBIND11_MODULE(_vobench, m) {
       .def_readwrite("height", &Camera::height)
       .def("to_dict", [](const Camera& c) { return json_to_python(c.to_json()); })
       .def_static("from_dict", &camera_from_dict, py::arg("d"))
+      .def(py::pickle([](const Camera& c) { return py::str(c.to_json().dump()); },
+                      [](const py::str& s) { return Camera::from_json(nlohmann::json::parse(s.cast<std::string>())); }))
       .def("__eq__", [](const Camera& a, const Camera& b) { return a.to_json() == b.to_json(); })
       .def("__repr__", &camera_repr);
 

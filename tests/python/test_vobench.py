@@ -4,6 +4,7 @@ Usage: test_vobench.py VOBENCH_BINARY README.md  (PYTHONPATH holds the built pac
 """
 import json
 import os
+import pickle
 import re
 import subprocess
 import sys
@@ -55,6 +56,12 @@ class ModuleTest(unittest.TestCase):
             self.assertEqual(vobench.Camera.from_dict(v["camera"]), cam)
         self.assertEqual((self.cams[0].width, self.cams[0].height), (96, 80))
         self.assertIn("vobench.Camera(", repr(self.cams[0]))
+        c = self.cams[3]
+        made = vobench.Camera(eye=c.eye, target=c.target, up=c.up, fov=c.fov, width=96, height=80)
+        self.assertEqual(made, c)
+        self.assertEqual(pickle.loads(pickle.dumps(c)), c)
+        with self.assertRaisesRegex(ValueError, "equals the target"):
+            vobench.Camera(eye=(1, 2, 3), target=(1, 2, 3))
 
     def test_exact_order_matches_the_program(self):
         cam = self.cams[VIEW]
