@@ -5,7 +5,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
-#include <map>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -20,24 +19,12 @@
 #include "harness/scene/input_error.h"
 #include "python/py_args.h"
 #include "python/py_json.h"
+#include "python/py_scene.h"
 
 namespace py = pybind11;
 
 namespace vob {
 namespace {
-
-// A scene with the spec it came from (datasets that bring their own views need the name)
-// and the orderers prepared on it: a second order() at another view pays only for the
-// order, as in `vobench check` over its views.
-struct PyScene {
-  DatasetSpec spec;
-  Scene scene;
-  // Held with the GIL released: prepared orderers and the scene's lazily derived
-  // structures are not safe for two threads at once.
-  std::mutex mu;
-  std::map<std::string, PreparedOrderer> prepared;
-};
-using ScenePtr = std::shared_ptr<PyScene>;
 
 ScenePtr make_py_scene(DatasetSpec spec) {
   auto s = std::make_shared<PyScene>();
@@ -168,8 +155,8 @@ PYBIND11_MODULE(_vobench, m) {
   // InputError -> vobench.InputError, a ValueError carrying the command line's one line.
   py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
 
-  py::class_<PyScene, ScenePtr>(m, "Scene", "a mesh (cells), triangle soup or voxel grid")
-      .def_property_readonly("kind", [](const PyScene& s) { return scene_kind_name(s.scene.kind()); })
+  py::class_<PyScene, ScenePtr> scene(m, "Scene", "a mesh (cells), triangle soup or voxel grid");
+  scene.def_property_readonly("kind", [](const PyScene& s) { return scene_kind_name(s.scene.kind()); })
       .def_property_readonly("num_primitives", [](const PyScene& s) { return s.scene.num_primitives(); })
       .def_property_readonly("bounds", [](const PyScene& s) {
         const Aabb b = s.scene.bounds();
@@ -178,6 +165,7 @@ PYBIND11_MODULE(_vobench, m) {
       .def_property_readonly("label", [](const PyScene& s) { return s.spec.label(); })
       .def("__len__", [](const PyScene& s) { return s.scene.num_primitives(); })
       .def("__repr__", &scene_repr);
+  bind_scene_geometry(scene);
 
   py::class_<Camera>(m, "Camera", "a view: the camera keys of ORDER.json")
       .def(py::init([](py::handle eye, py::handle target, py::handle up, double fov, py::object ortho_height,

@@ -186,6 +186,33 @@ class ModuleTest(unittest.TestCase):
             t.join()
         self.assertEqual(results, alone)
 
+    def test_geometry_views(self):
+        s = self.scene
+        c = s.centroids
+        self.assertEqual(c.shape, (s.num_primitives, 3))
+        self.assertFalse(c.flags.writeable or c.flags.owndata)
+        self.assertIs(c.base, s)  # the scene's memory, kept alive by the scene
+        types, offsets, conn = s.cells
+        self.assertEqual(set(types.tolist()), {10})  # tetrahedra
+        self.assertEqual(len(offsets), s.num_primitives + 1)
+        self.assertEqual(offsets[-1], len(conn))
+        mean = s.points[conn[offsets[5]:offsets[6]]].mean(axis=0)
+        self.assertTrue(np.allclose(mean, c[5]))
+        # A centroid sort in numpy is the built-in centroid orderer.
+        cam = self.cams[VIEW]
+        mine = np.argsort(-np.linalg.norm(c - cam.eye, axis=1), kind="stable").astype(np.int32)
+        self.assertTrue(np.array_equal(mine, vobench.order(s, cam, "centroid")))
+        tri = vobench.generate("sphere", subdiv=1)
+        self.assertEqual(tri.triangles.shape, (80, 3))
+        self.assertTrue(np.allclose(tri.centroids[7], tri.points[tri.triangles[7]].mean(axis=0)))
+        vox = vobench.generate("block", nx=12, ny=10, nz=8)
+        self.assertEqual(vox.voxel_ids.shape, (vox.num_primitives,))
+        self.assertEqual(vox.centroids.shape, (vox.num_primitives, 3))
+        with self.assertRaisesRegex(ValueError, "voxels have centroids"):
+            vox.points
+        with self.assertRaisesRegex(ValueError, "applies to triangles"):
+            s.triangles
+
     def test_registry_lists(self):
         self.assertIn("sxmpvo", vobench.algorithms("cells"))
         self.assertNotIn("btf", vobench.algorithms("cells"))

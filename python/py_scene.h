@@ -1,0 +1,31 @@
+// The Python Scene: a scene with the spec it came from and the orderers prepared on it,
+// and read-only numpy views of its geometry for sorters written in numpy.
+#pragma once
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <pybind11/pybind11.h>
+
+#include "harness/bench/measure.h"
+#include "harness/bench/suite.h"
+
+namespace vob {
+
+// Datasets that bring their own views need the spec's name; a second order() at another
+// view pays only for the order, as in `vobench check` over its views.
+struct PyScene {
+  DatasetSpec spec;
+  Scene scene;
+  // Held with the GIL released: prepared orderers and the scene's lazily derived
+  // structures are not safe for two threads at once.
+  std::mutex mu;
+  std::map<std::string, PreparedOrderer> prepared;
+};
+using ScenePtr = std::shared_ptr<PyScene>;
+
+// Adds points, cells, triangles, voxel_ids and centroids to the bound Scene class.
+void bind_scene_geometry(pybind11::class_<PyScene, ScenePtr>& cls);
+
+}  // namespace vob
