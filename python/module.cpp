@@ -218,6 +218,11 @@ PYBIND11_MODULE(_vobench, m) {
           return make_py_scene(spec);
         },
         py::arg("name"), "a built-in dataset (`vobench generate --dataset NAME --set k=v`)");
+  m.def("cell_mesh", &cell_scene, py::arg("points"), py::arg("types"), py::arg("offsets"),
+        py::arg("connectivity"), py::arg("scalars") = py::none(),
+        "a cell scene from arrays, as Scene.cells gives them (copied, then validated)");
+  m.def("triangle_soup", &triangle_scene, py::arg("points"), py::arg("triangles"),
+        "a triangle scene from (n, 3) points and (m, 3) point ids (copied, then validated)");
   m.def("views", &views, py::arg("scene"), py::arg("n") = py::none(), py::arg("width") = 512,
         py::arg("height") = 512, py::kw_only(), py::arg("ortho") = false, py::arg("zoom") = 1.0,
         "the view set of `vobench check --views n --size WxH` (its own views for hard cases)");

@@ -13,6 +13,11 @@ namespace vob {
 // vector the oracle takes); other integer arrays and sequences are converted when every id
 // fits in int32. InputError (-> ValueError) for other shapes, dtypes or values.
 std::vector<int32_t> order_ids(pybind11::handle order);
+// The same for any integer array flattened (triangles (n, 3), connectivity, offsets);
+// `what` names it in messages.
+std::vector<int32_t> int32_values(pybind11::handle values, const std::string& what);
+// A float array of shape (n, 3) (or (n,) with `columns` 0) as doubles; InputError else.
+std::vector<double> double_values(pybind11::handle values, const std::string& what, int columns);
 
 // A keyword value as `--set k=v` text: True/False -> true/false, numbers and strings as
 // str() writes them (1e-06, 8, 'helix').

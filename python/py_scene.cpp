@@ -2,7 +2,9 @@
 
 #include <pybind11/numpy.h>
 
+#include "harness/scene/cell_types.h"
 #include "harness/scene/input_error.h"
+#include "python/py_args.h"
 
 namespace py = pybind11;
 
@@ -64,7 +66,67 @@ py::array centroids(py::handle self) {
   if (!out.empty()) std::memcpy(a.mutable_data(), &out[0].x, out.size() * sizeof(Vec3));
   return a;
 }
+
+// Array scenes are named "arrays" in messages and labels; views() gives them the Fibonacci set.
+constexpr const char* kArrays = "arrays";
+
+std::vector<Vec3> vec3s(const std::vector<double>& xyz) {
+  std::vector<Vec3> out(xyz.size() / 3);
+  for (size_t i = 0; i < out.size(); ++i) out[i] = {xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]};
+  return out;
+}
+
+ScenePtr wrap(Scene scene) {
+  auto s = std::make_shared<PyScene>();
+  s->spec.input = kArrays;
+  s->scene = std::move(scene);
+  return s;
+}
 }  // namespace
+
+ScenePtr cell_scene(py::handle points, py::handle types, py::handle offsets, py::handle connectivity,
+                    py::handle scalars) {
+  CellMesh m;
+  m.points = vec3s(double_values(points, "points", 3));
+  const std::vector<int32_t> t = int32_values(types, "types");
+  m.offsets = int32_values(offsets, "offsets");
+  m.conn = int32_values(connectivity, "connectivity");
+  if (!scalars.is_none()) m.scalars = double_values(scalars, "scalars", 0);
+  // What validate_cell_mesh takes for granted: offsets that index the connectivity.
+  if (m.offsets.size() != t.size() + 1)
+    throw InputError(kArrays, "offsets", "expected " + std::to_string(t.size() + 1) + " (cells + 1), got " +
+                                             std::to_string(m.offsets.size()));
+  if (m.offsets.front() != 0 || m.offsets.back() != int64_t(m.conn.size()))
+    throw InputError(kArrays, "offsets", "must start at 0 and end at the connectivity's length " +
+                                             std::to_string(m.conn.size()));
+  for (size_t c = 0; c < t.size(); ++c) {
+    if (m.offsets[c + 1] < m.offsets[c])
+      throw InputError(kArrays, "offsets", "decrease at cell " + std::to_string(c));
+    if (!is_supported_cell_code(t[c]))
+      throw InputError(kArrays, "cell " + std::to_string(c), "unsupported cell type " + std::to_string(t[c]));
+    m.types.push_back(static_cast<CellType>(t[c]));
+  }
+  py::gil_scoped_release nogil;
+  validate_cell_mesh(m, kArrays);
+  ScenePtr s = wrap(Scene::from_mesh(kArrays, std::move(m)));
+  s->scene.faces();  // as a loaded file: a face shared by three cells is refused here
+  return s;
+}
+
+ScenePtr triangle_scene(py::handle points, py::handle triangles) {
+  TriangleSoup soup;
+  soup.points = vec3s(double_values(points, "points", 3));
+  const py::array tris = py::array::ensure(triangles);
+  if (!tris || tris.ndim() != 2 || tris.shape(1) != 3) {
+    PyErr_Clear();
+    throw InputError(kArrays, "triangles", "expected an integer array of shape (n, 3)");
+  }
+  const std::vector<int32_t> ids = int32_values(tris, "triangles");
+  for (size_t i = 0; i + 2 < ids.size(); i += 3) soup.tris.push_back({ids[i], ids[i + 1], ids[i + 2]});
+  py::gil_scoped_release nogil;
+  validate_triangle_soup(soup, kArrays);
+  return wrap(Scene::from_soup(kArrays, std::move(soup)));
+}
 
 void bind_scene_geometry(py::class_<PyScene, ScenePtr>& cls) {
   cls.def_property_readonly("points", [](py::handle self) {

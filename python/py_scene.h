@@ -25,6 +25,13 @@ struct PyScene {
 };
 using ScenePtr = std::shared_ptr<PyScene>;
 
+// Scenes from numpy arrays (copied into the scene, then validated as a file's would be):
+// cells as `Scene.cells` gives them (VTK types, offsets [cells+1], connectivity), with
+// optional point scalars; triangles as (n, 3) point ids.
+ScenePtr cell_scene(pybind11::handle points, pybind11::handle types, pybind11::handle offsets,
+                    pybind11::handle connectivity, pybind11::handle scalars);
+ScenePtr triangle_scene(pybind11::handle points, pybind11::handle triangles);
+
 // Adds points, cells, triangles, voxel_ids and centroids to the bound Scene class.
 void bind_scene_geometry(pybind11::class_<PyScene, ScenePtr>& cls);
 

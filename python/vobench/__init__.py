@@ -10,8 +10,8 @@ The compiled module (_vobench) links libvobench.so: the same orderers, datasets,
 sets and oracle as the vobench program. Bad input raises vobench.InputError, a
 ValueError whose message is the one line the program prints.
 """
-from ._vobench import (Camera, InputError, Scene, algorithms, check, datasets, generate, load,
-                       order, views)
+from ._vobench import (Camera, InputError, Scene, algorithms, cell_mesh, check, datasets, generate,
+                       load, order, triangle_soup, views)
 
-__all__ = ["Camera", "InputError", "Scene", "algorithms", "check", "datasets", "generate", "load",
-           "order", "views"]
+__all__ = ["Camera", "InputError", "Scene", "algorithms", "cell_mesh", "check", "datasets",
+           "generate", "load", "order", "triangle_soup", "views"]

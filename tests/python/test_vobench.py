@@ -213,6 +213,29 @@ class ModuleTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "applies to triangles"):
             s.triangles
 
+    def test_scenes_from_arrays(self):
+        s = self.scene
+        a = vobench.cell_mesh(s.points, *s.cells)
+        self.assertEqual((a.kind, a.num_primitives, a.bounds), (s.kind, s.num_primitives, s.bounds))
+        cam = vobench.views(a, 6, 96, 80)[VIEW]
+        self.assertEqual(cam, self.cams[VIEW])  # the same box, the same view set
+        ids = vobench.order(a, cam, "sxmpvo")
+        self.assertEqual(vobench.check(a, cam, ids), vobench.check(s, cam, vobench.order(s, cam, "sxmpvo")))
+        t = vobench.generate("sphere", subdiv=1)
+        b = vobench.triangle_soup(t.points, t.triangles)
+        self.assertEqual(b.num_primitives, 80)
+        types, offsets, conn = s.cells
+        for call, words in [
+            (lambda: vobench.cell_mesh(s.points, types, offsets[:-1], conn), "offsets"),
+            (lambda: vobench.cell_mesh(s.points, types + 1, offsets, conn), "unsupported cell type 11"),
+            (lambda: vobench.cell_mesh(s.points, types, offsets, np.where(conn == 0, 10**6, conn)), "out of range"),
+            (lambda: vobench.cell_mesh(s.points * np.nan, types, offsets, conn), "not finite"),
+            (lambda: vobench.cell_mesh(s.points[:, :2], types, offsets, conn), "(n, 3)"),
+            (lambda: vobench.triangle_soup(t.points, t.triangles[:, :2]), "(n, 3)"),
+        ]:
+            with self.assertRaisesRegex(ValueError, re.escape(words)):
+                call()
+
     def test_registry_lists(self):
         self.assertIn("sxmpvo", vobench.algorithms("cells"))
         self.assertNotIn("btf", vobench.algorithms("cells"))
