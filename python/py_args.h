@@ -1,5 +1,6 @@
-// Python arguments into the harness's types: an order (numpy array or sequence of ids) and
-// generator parameters given as keyword arguments.
+// Python arguments into the harness's types: orders and other id arrays, coordinates, and
+// generator parameters given as keyword arguments. Nothing is wrapped around or truncated:
+// a value that does not fit is an InputError (-> ValueError) naming the argument.
 #pragma once
 #include <cstdint>
 #include <string>
