@@ -2,7 +2,7 @@
 then a clean python3 (only the moved dist-packages on its path) imports vobench, orders and
 checks a generated mesh, with libvobench.so loaded from the moved prefix.
 
-Usage: check_installed.py CMAKE BUILD_DIR WORK_DIR LIBDIR
+Usage: check_installed.py CMAKE BUILD_DIR WORK_DIR PYTHON_INSTALL_DIR
 Exit 77 (skipped) when the install has no libvobench.so at all (no install rule for it).
 """
 import os
@@ -10,7 +10,7 @@ import shutil
 import subprocess
 import sys
 
-cmake, build, work, libdir = sys.argv[1:5]
+cmake, build, work, pydir = sys.argv[1:5]
 shutil.rmtree(work, ignore_errors=True)
 first, moved = os.path.join(work, "prefix"), os.path.join(work, "moved")
 subprocess.run([cmake, "--install", build, "--prefix", first], check=True, stdout=subprocess.DEVNULL)
@@ -20,7 +20,7 @@ if not any("libvobench.so" in files for _, _, files in os.walk(first)):
     print("skipped: the install has no libvobench.so")
     sys.exit(77)
 os.rename(first, moved)
-site = os.path.join(moved, libdir, "python3", "dist-packages")
+site = os.path.join(moved, pydir)
 code = r"""
 import vobench
 s = vobench.generate("helix", cells=2000)
