@@ -119,7 +119,7 @@ py::dict check(PyScene& s, const Camera cam, py::handle order_obj, int supersamp
   return out;
 }
 
-py::list views(const PyScene& s, py::object n, int width, int height, bool ortho, double zoom) {
+py::list views(PyScene& s, py::object n, int width, int height, bool ortho, double zoom) {
   if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
     throw InputError("views", std::to_string(width) + "x" + std::to_string(height),
                      "expected 1 <= width, height <= " + std::to_string(kMaxImageSide));
@@ -131,18 +131,24 @@ py::list views(const PyScene& s, py::object n, int width, int height, bool ortho
   const int count = n.is_none() ? 14 : n.cast<int>();
   if (count < 1 || count > kMaxViews)
     throw InputError("views", "n " + std::to_string(count), "must be in [1, " + std::to_string(kMaxViews) + "]");
+  auto cams = with_scene(s, [&](const Scene& sc) {
+    auto v = dataset_views(s.spec, sc, count, {}, width, height, ortho, zoom);
+    for (auto& [i, cam] : v) cam.validate();
+    return v;
+  });
   py::list out;
-  for (auto& [i, cam] : dataset_views(s.spec, s.scene, count, {}, width, height, ortho, zoom)) {
-    cam.validate();
-    out.append(py::cast(cam));
-  }
+  for (auto& [i, cam] : cams) out.append(py::cast(cam));
   return out;
 }
 
-std::string scene_repr(const PyScene& s) {
+size_t primitives(PyScene& s) {
+  return with_scene(s, [](const Scene& sc) { return sc.num_primitives(); });  // voxels: derived
+}
+
+std::string scene_repr(PyScene& s) {
   std::ostringstream o;
   o << "vobench.Scene(" << s.spec.label() << ", " << scene_kind_name(s.scene.kind()) << ", "
-    << s.scene.num_primitives() << " primitives)";
+    << primitives(s) << " primitives)";
   return o.str();
 }
 
@@ -157,13 +163,13 @@ PYBIND11_MODULE(_vobench, m) {
 
   py::class_<PyScene, ScenePtr> scene(m, "Scene", "a mesh (cells), triangle soup or voxel grid");
   scene.def_property_readonly("kind", [](const PyScene& s) { return scene_kind_name(s.scene.kind()); })
-      .def_property_readonly("num_primitives", [](const PyScene& s) { return s.scene.num_primitives(); })
+      .def_property_readonly("num_primitives", &primitives)
       .def_property_readonly("bounds", [](const PyScene& s) {
         const Aabb b = s.scene.bounds();
         return py::make_tuple(vec_tuple(b.lo), vec_tuple(b.hi));
       })
       .def_property_readonly("label", [](const PyScene& s) { return s.spec.label(); })
-      .def("__len__", [](const PyScene& s) { return s.scene.num_primitives(); })
+      .def("__len__", &primitives)
       .def("__repr__", &scene_repr);
   bind_scene_geometry(scene);
 

@@ -38,13 +38,8 @@ const PyScene& of_kind(py::handle self, SceneKind kind, const char* what) {
 py::array centroids(py::handle self) {
   PyScene& s = self.cast<PyScene&>();
   if (s.scene.kind() == SceneKind::Cells) {
-    const std::vector<Vec3>* c = nullptr;
-    {
-      py::gil_scoped_release nogil;
-      std::lock_guard lock(s.mu);
-      c = &s.scene.cell_centroids().points;
-    }
-    return points_view(self, *c);
+    const std::vector<Vec3>& c = *with_scene(s, [](const Scene& sc) { return &sc.cell_centroids().points; });
+    return points_view(self, c);
   }
   std::vector<Vec3> out;
   if (s.scene.kind() == SceneKind::Triangles) {
@@ -53,12 +48,7 @@ py::array centroids(py::handle self) {
     for (const auto& tri : t.tris)
       out.push_back((t.points[tri[0]] + t.points[tri[1]] + t.points[tri[2]]) * (1.0 / 3.0));
   } else {
-    const std::vector<int32_t>* ids = nullptr;
-    {
-      py::gil_scoped_release nogil;
-      std::lock_guard lock(s.mu);
-      ids = &s.scene.significant_voxels();
-    }
+    const std::vector<int32_t>* ids = with_scene(s, [](const Scene& sc) { return &sc.significant_voxels(); });
     out.reserve(ids->size());
     for (int32_t id : *ids) out.push_back(s.scene.grid().centre_of(id));
   }
@@ -106,10 +96,13 @@ ScenePtr cell_scene(py::handle points, py::handle types, py::handle offsets, py:
       throw InputError(kArrays, "cell " + std::to_string(c), "unsupported cell type " + std::to_string(t[c]));
     m.types.push_back(static_cast<CellType>(t[c]));
   }
-  py::gil_scoped_release nogil;
-  validate_cell_mesh(m, kArrays);
-  ScenePtr s = wrap(Scene::from_mesh(kArrays, std::move(m)));
-  s->scene.faces();  // as a loaded file: a face shared by three cells is refused here
+  ScenePtr s;
+  {
+    py::gil_scoped_release nogil;
+    validate_cell_mesh(m, kArrays);
+    s = wrap(Scene::from_mesh(kArrays, std::move(m)));
+    s->scene.faces();  // as a loaded file: a face shared by three cells is refused here
+  }
   return s;
 }
 
@@ -148,12 +141,7 @@ void bind_scene_geometry(py::class_<PyScene, ScenePtr>& cls) {
       }, "(triangles, 3) int32 point ids, read-only")
       .def_property_readonly("voxel_ids", [](py::handle self) {
         PyScene& s = const_cast<PyScene&>(of_kind(self, SceneKind::Voxels, "voxel_ids"));
-        const std::vector<int32_t>* ids = nullptr;
-        {
-          py::gil_scoped_release nogil;
-          std::lock_guard lock(s.mu);
-          ids = &s.scene.significant_voxels();
-        }
+        const std::vector<int32_t>* ids = with_scene(s, [](const Scene& sc) { return &sc.significant_voxels(); });
         return view(self, ids->data(), {py::ssize_t(ids->size())});
       }, "the significant voxels' ids (the primitives an order lists), int32, read-only")
       .def_property_readonly("centroids", &centroids,

@@ -25,6 +25,15 @@ struct PyScene {
 };
 using ScenePtr = std::shared_ptr<PyScene>;
 
+// Runs f() on the scene with the GIL released and the scene's mutex held: anything that
+// may build a derived structure (faces, centroids, significant voxels) goes through here.
+template <typename F>
+auto with_scene(PyScene& s, F&& f) {
+  pybind11::gil_scoped_release nogil;
+  std::lock_guard lock(s.mu);
+  return f(s.scene);
+}
+
 // Scenes from numpy arrays (copied into the scene, then validated as a file's would be):
 // cells as `Scene.cells` gives them (VTK types, offsets [cells+1], connectivity), with
 // optional point scalars; triangles as (n, 3) point ids.
