@@ -4,6 +4,7 @@
 // vobench.InputError (a ValueError) with the one line the command line prints.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
 
 #include <memory>
 #include <mutex>
@@ -170,6 +171,15 @@ PYBIND11_MODULE(_vobench, m) {
       })
       .def_property_readonly("label", [](const PyScene& s) { return s.spec.label(); })
       .def("__len__", &primitives)
+      .def_property_readonly("prepared", [](PyScene& s) {
+        return with_scene(s, [&](const Scene&) {
+          std::vector<std::string> names;
+          for (const auto& [spec, p] : s.prepared) names.push_back(spec);
+          return names;
+        });
+      }, "the orderers prepared on this scene by order() (kept for the next view)")
+      .def("release_orderers", [](PyScene& s) { with_scene(s, [&](const Scene&) { s.prepared.clear(); }); },
+           "frees the prepared orderers (order() prepares again)")
       .def("__repr__", &scene_repr);
   bind_scene_geometry(scene);
 

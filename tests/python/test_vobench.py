@@ -106,6 +106,12 @@ class ModuleTest(unittest.TestCase):
         self.assertTrue(np.array_equal(ids, ids2))
         self.assertGreater(info["seconds"], 0)
         self.assertIn("prepare_seconds", info)
+        self.assertIn("sxmpvo", self.scene.prepared)
+        fresh = vobench.generate("helix", cells=2000)
+        vobench.order(fresh, self.cams[0], "centroid")
+        self.assertEqual(fresh.prepared, ["centroid"])
+        fresh.release_orderers()
+        self.assertEqual(fresh.prepared, [])
 
     def test_errors_are_value_errors(self):
         cam = self.cams[0]
