@@ -1,4 +1,4 @@
-"""The installed Python package: `cmake --install` to a temporary prefix, the prefix moved,
+"""The installed Python package: `cmake --install --component vobench` to a temporary prefix, the prefix moved,
 then a clean python3 (only the moved dist-packages on its path) imports vobench, orders and
 checks a generated mesh, with libvobench.so loaded from the moved prefix.
 
@@ -13,7 +13,8 @@ import sys
 cmake, build, work, pydir = sys.argv[1:5]
 shutil.rmtree(work, ignore_errors=True)
 first, moved = os.path.join(work, "prefix"), os.path.join(work, "moved")
-subprocess.run([cmake, "--install", build, "--prefix", first], check=True, stdout=subprocess.DEVNULL)
+subprocess.run([cmake, "--install", build, "--prefix", first, "--component", "vobench"], check=True,
+               stdout=subprocess.DEVNULL)
 # Skipped only when the library is installed nowhere; installed elsewhere than LIBDIR, the
 # module's RPATH misses it and the import below fails, as it should.
 if not any("libvobench.so" in files for _, _, files in os.walk(first)):
