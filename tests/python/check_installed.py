@@ -1,6 +1,7 @@
-"""The installed Python package: `cmake --install --component vobench` to a temporary prefix, the prefix moved,
-then a clean python3 (only the moved dist-packages on its path) imports vobench, orders and
-checks a generated mesh, with libvobench.so loaded from the moved prefix.
+"""The installed Python package: `cmake --install --component vobench` to a temporary
+prefix, the prefix moved, then a clean python3 (only the moved dist-packages on its path)
+imports vobench, orders and checks a generated mesh, with libvobench.so loaded from the
+moved prefix.
 
 Usage: check_installed.py CMAKE BUILD_DIR WORK_DIR PYTHON_INSTALL_DIR
 Exit 77 (skipped) when the install has no libvobench.so at all (no install rule for it).
