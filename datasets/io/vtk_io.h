@@ -2,6 +2,8 @@
 //   .vtu  XML unstructured grid -> cells (tetra, pyramid, wedge, hexahedron); vertices,
 //         lines and surface cells beside them are skipped (see read_vtk_file's note),
 //         other volume cells (quadratic, polyhedron, ...) are refused.
+//   .pvtu parallel XML unstructured grid: its pieces, read as one mesh (points repeated at
+//         bit-identical coordinates on piece borders become one point).
 //   .vtk  legacy: an unstructured grid -> cells; structured points -> voxels.
 //   .vti  XML image data -> voxels.
 // Point scalars: the active scalars, else the first point-data array (component 0).
