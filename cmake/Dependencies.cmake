@@ -8,8 +8,8 @@ macro(vob_require found what package)
 endmacro()
 
 find_package(VTK 9.1 QUIET COMPONENTS CommonCore CommonDataModel IOXML IOLegacy IOImage RenderingCore
-             IOExodus IOGeometry IOPLY IOParallelXML)
-vob_require(VTK_FOUND "VTK 9.1 (CommonCore, CommonDataModel, IOXML, IOLegacy, IOImage, RenderingCore, IOExodus, IOGeometry, IOPLY, IOParallelXML)" libvtk9-dev)
+             IOExodus IOGeometry IOPLY IOParallelXML FiltersParallel)
+vob_require(VTK_FOUND "VTK 9.1 (CommonCore, CommonDataModel, IOXML, IOLegacy, IOImage, RenderingCore, IOExodus, IOGeometry, IOPLY, IOParallelXML, FiltersParallel)" libvtk9-dev)
 
 # gmsh's SDK (.msh files) has no CMake package: its header and library.
 find_path(GMSH_INCLUDE_DIR gmsh.h)

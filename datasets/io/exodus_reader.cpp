@@ -7,11 +7,56 @@
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+
 #include "datasets/io/vtk_shared.h"
 
 namespace vob {
 
+namespace {
+// The Exodus and netCDF libraries under VTK print their errors straight to stderr; while a
+// file is read, stderr goes to /dev/null (VTK's own messages are captured as usual).
+class QuietStderr {
+ public:
+  QuietStderr() {
+    std::fflush(stderr);
+    saved_ = dup(2);
+    const int null = open("/dev/null", O_WRONLY);
+    if (saved_ >= 0 && null >= 0) dup2(null, 2);
+    if (null >= 0) close(null);
+  }
+  ~QuietStderr() {
+    std::fflush(stderr);
+    if (saved_ >= 0) {
+      dup2(saved_, 2);
+      close(saved_);
+    }
+  }
+
+ private:
+  int saved_ = -1;
+};
+
+// Exodus II files are netCDF (classic "CDF\1", 64-bit "CDF\2", CDF-5 "CDF\5") or netCDF-4
+// (HDF5, "\x89HDF").
+void check_magic(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char m[4] = {};
+  in.read(m, 4);
+  const bool cdf = std::memcmp(m, "CDF", 3) == 0 && (m[3] == 1 || m[3] == 2 || m[3] == 5);
+  const bool hdf = std::memcmp(m, "\x89HDF", 4) == 0;
+  if (!cdf && !hdf) throw InputError(path, "header", "is not a netCDF or HDF5 file (not Exodus II)");
+}
+}  // namespace
+
 CellMesh read_exodus(const std::string& path, const std::string& variable, std::string* note) {
+  check_magic(path);
+  QuietStderr quiet;
   vtkNew<vtkExodusIIReader> r;
   {
     ScopedCapture capture;

@@ -7,12 +7,38 @@
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
 #include "datasets/io/file_util.h"
+#include "datasets/io/ply_prescan.h"
 #include "datasets/io/vtk_shared.h"
 
 namespace vob {
 
 namespace {
+// Binary STL: 80 header bytes, a triangle count, 50 bytes per triangle. VTK reads a cut
+// file silently as fewer triangles, so the size must match the count exactly; a file that
+// does not match is ASCII only if it starts with "solid" and its start is text.
+void check_stl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char head[84] = {};
+  in.read(reinterpret_cast<char*>(head), 84);
+  const auto got = in.gcount();
+  const uintmax_t size = std::filesystem::file_size(path);
+  const uint32_t n = uint32_t(head[80]) | uint32_t(head[81]) << 8 | uint32_t(head[82]) << 16 | uint32_t(head[83]) << 24;
+  if (got == 84 && size == 84 + 50 * uintmax_t(n)) return;  // binary, complete
+  bool text = got >= 5 && std::memcmp(head, "solid", 5) == 0;
+  for (std::streamsize i = 0; text && i < got; ++i)
+    text = head[i] == '\n' || head[i] == '\r' || head[i] == '\t' || (head[i] >= 32 && head[i] < 127);
+  if (text) return;
+  if (got < 84) throw InputError(path, "header", "file ends inside the 84-byte binary STL header");
+  throw InputError(path, "triangles", "binary STL declares " + std::to_string(n) + " triangles (" +
+                                          std::to_string(84 + 50 * uintmax_t(n)) + " bytes) but the file has " +
+                                          std::to_string(size) + " bytes");
+}
+
 template <class Reader>
 vtkSmartPointer<vtkPolyData> read_with(const std::string& path) {
   vtkNew<Reader> r;
@@ -27,10 +53,10 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
   const std::string ext = file_extension(path);
   vtkSmartPointer<vtkPolyData> pd;
   if (ext == ".stl") {
+    check_stl(path);
     pd = read_with<vtkSTLReader>(path);
   } else if (ext == ".ply") {
-    vtkNew<vtkPLYReader> probe;
-    if (!probe->CanReadFile(path.c_str())) throw InputError(path, "header", "is not a PLY file (no 'ply' magic line)");
+    prescan_ply(path);
     pd = read_with<vtkPLYReader>(path);
   } else if (ext == ".obj") {
     pd = read_with<vtkOBJReader>(path);
