@@ -19,6 +19,7 @@
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 #include <vtkStructuredPoints.h>
+#include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkUnstructuredGridWriter.h>
@@ -198,9 +199,21 @@ Scene read_vtk_file(const std::string& path, std::string* note) {
   throw InputError(path, "file", "not a VTK file extension (.vtu .pvtu .vtk .vti)");
 }
 
-void write_vtu(const CellMesh& m, const std::string& path) {
+void write_vtu(const CellMesh& m, const std::string& path) { write_vtu(m, path, {}); }
+
+void write_vtu(const CellMesh& m, const std::string& path, const CellArrays& cell_arrays) {
   vtkNew<vtkXMLUnstructuredGridWriter> w;
   auto ug = to_unstructured(m);
+  for (const auto& [name, values] : cell_arrays) {
+    if (values.size() != m.num_cells())
+      throw InputError(path, "cell array " + name, "has " + std::to_string(values.size()) + " values for " +
+                                                       std::to_string(m.num_cells()) + " cells");
+    vtkNew<vtkTypeInt64Array> a;
+    a->SetName(name.c_str());
+    a->SetNumberOfTuples(vtkIdType(values.size()));
+    for (size_t i = 0; i < values.size(); ++i) a->SetValue(vtkIdType(i), values[i]);
+    ug->GetCellData()->AddArray(a);
+  }
   w->SetInputData(ug);
   w->SetDataModeToAppended();
   w->EncodeAppendedDataOff();  // raw binary: doubles round-trip exactly
@@ -212,6 +225,23 @@ void write_vtk_legacy(const CellMesh& m, const std::string& path) {
   auto ug = to_unstructured(m);
   w->SetInputData(ug);
   w->SetFileTypeToBinary();
+  write_with(w.Get(), path);
+}
+
+void write_mask_vti(const std::vector<uint8_t>& mask, int width, int height, const std::string& name,
+                    const std::string& path) {
+  if (mask.size() != size_t(width) * size_t(height))
+    throw InputError(path, "image", "mask of " + std::to_string(mask.size()) + " pixels is not " +
+                                        std::to_string(width) + "x" + std::to_string(height));
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(width, height, 1);
+  vtkNew<vtkUnsignedCharArray> v;
+  v->SetName(name.c_str());
+  v->SetNumberOfTuples(vtkIdType(mask.size()));
+  for (size_t i = 0; i < mask.size(); ++i) v->SetValue(vtkIdType(i), mask[i]);
+  img->GetPointData()->SetScalars(v);
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(img);
   write_with(w.Get(), path);
 }
 

@@ -13,6 +13,7 @@
 #include "harness/bench/verdict.h"
 #include "harness/oracle/oracle.h"
 #include "harness/cli/commands.h"
+#include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/input_error.h"
@@ -45,7 +46,7 @@ Command add_check_command(CLI::App& app) {
   view_args->add_to(*cmd);
   cmd->add_option("--supersample", *supersample, "S x S samples per pixel")->check(integer_in(1, 16));
   cmd->add_flag("--json", *json, "print the oracle's counts per view as JSON");
-  cmd->add_option("--images", *images, "write order/exact/diff/violations PNGs of every view here");
+  cmd->add_option("--images", *images, "write order/exact/diff/violations PNGs of every view here, and for ParaView the violations as .vti and the camera as .pvcc");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
     view_args->validate(spec);
@@ -88,6 +89,8 @@ Command add_check_command(CLI::App& app) {
         write_png(shown.exact, stem + "-exact.png");
         write_png(difference_image(shown.ordered, shown.exact), stem + "-diff.png");
         write_png(violation_image(shown.exact, r.violation_mask), stem + "-violations.png");
+        write_violation_vti(r, stem + "-violations.vti");  // ParaView: the mask and the camera
+        write_camera_pvcc(cam, stem + ".pvcc");
         v["image_error"] = image_error(shown.ordered, shown.exact).to_json();
       }
       if (!*json) {
