@@ -59,10 +59,24 @@ else:
 
 run([maker, "write", work]).check_returncode()
 counts.update(json.loads((work / "counts.json").read_text()))
-r = run([maker, "scalars", work / "zoo.exo"])
-print("zoo.exo scalars:", r.stdout.strip())
-if "scalars 0" in r.stdout or r.returncode != 0:
-    failures.append(f"zoo.exo: the nodal variable was not read as scalars: {r.stdout!r} {r.stderr!r}")
+# zoo.exo holds nodal variables temperature = 1 + x and pressure = 100 + y: the first is the
+# default, the other is chosen by name (API and --input-variable), a wrong name is refused.
+first = run([maker, "scalars", work / "zoo.exo"]).stdout.strip()
+second = run([maker, "scalars", work / "zoo.exo", "pressure"]).stdout.strip()
+print("zoo.exo scalars:", first, "| pressure:", second)
+lo = [float(x) for x in re.findall(r"min (\S+) max (\S+)", first)[0]]
+lo2 = [float(x) for x in re.findall(r"min (\S+) max (\S+)", second)[0]]
+if "scalars 0" in first or not (lo[0] < 50 and lo2[0] > 50):
+    failures.append(f"zoo.exo: nodal variables not read as asked: {first!r} {second!r}")
+r = run([vobench, "check", "-a", "sxmpvo", "-i", work / "zoo.exo", "--input-variable", "pressure",
+         "--views", "1", "--size", "32x32"])
+if r.returncode != 0:
+    failures.append(f"zoo.exo --input-variable pressure: exit {r.returncode}: {r.stderr.strip()}")
+r = run([vobench, "check", "-a", "sxmpvo", "-i", work / "zoo.exo", "--input-variable", "nope",
+         "--views", "1", "--size", "32x32"])
+print("zoo.exo --input-variable nope:", r.returncode, r.stderr.strip())
+if r.returncode != 2 or len(r.stderr.strip().splitlines()) != 1 or "'nope'" not in r.stderr:
+    failures.append(f"zoo.exo --input-variable nope: expected exit 2 and one line, got {r.returncode} {r.stderr!r}")
 
 ORDERER = {"cells": "sxmpvo", "triangles": "stencil-layers", "voxels": "distance-sort"}
 

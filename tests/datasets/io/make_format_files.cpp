@@ -2,7 +2,8 @@
 // with VTK's own writers (Exodus II, .pvtu in 3 pieces, STL, PLY, OBJ) or by hand plus zlib
 // (.inr.gz: INRIMAGE has no VTK writer), and counts.json with what each must read back as.
 //   make_format_files write OUTDIR      files + counts.json
-//   make_format_files scalars FILE      "points N scalars N min MAX" of the loaded scene
+//   make_format_files scalars FILE [VAR] "points N scalars N min MIN max MAX" of the loaded
+//                                       scene (VAR: the Exodus nodal variable)
 #include <zlib.h>
 
 #include <cstdio>
@@ -47,6 +48,10 @@ vtkSmartPointer<vtkUnstructuredGrid> grid(const CellMesh& m) {
   s->SetName("temperature");
   for (size_t i = 0; i < m.num_points(); ++i) s->InsertNextValue(1.0 + m.points[i].x);  // known values
   ug->GetPointData()->AddArray(s);
+  vtkNew<vtkDoubleArray> q;
+  q->SetName("pressure");
+  for (size_t i = 0; i < m.num_points(); ++i) q->InsertNextValue(100.0 + m.points[i].y);
+  ug->GetPointData()->AddArray(q);
   return ug;
 }
 
@@ -91,10 +96,12 @@ void write_inr_gz(const VoxelGrid& g, const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 3) return 64;
+  if (argc != 3 && argc != 4) return 64;
   const std::string mode = argv[1], arg = argv[2];
   if (mode == "scalars") {
-    const Scene s = load_input(arg);
+    InputOptions opt;
+    if (argc == 4) opt.variable = argv[3];
+    const Scene s = load_input(arg, opt);
     const CellMesh& m = s.mesh();
     double lo = 1e300, hi = -1e300;
     for (double v : m.scalars) lo = std::min(lo, v), hi = std::max(hi, v);
