@@ -6,6 +6,7 @@
 #include <mutex>
 #include <unordered_map>
 
+#include "datasets/io/msh_prescan.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -171,6 +172,7 @@ CellMesh read_locked(const std::string& path, std::string* note) {
 }  // namespace
 
 CellMesh read_gmsh(const std::string& path, std::string* note) {
+  prescan_msh(path);
   std::lock_guard<std::mutex> lock(gmsh_mutex);
   try {
     return read_locked(path, note);

@@ -114,6 +114,7 @@ data = {n: (work / n).read_bytes() for n in counts if (work / n).exists()}
 broken = {
     "cut.msh": data.get(f"{geo.stem}-msh41.msh", b"")[:2000],
     "cut-bin.msh": data.get(f"{geo.stem}-msh22-bin.msh", b"")[:3000],
+    "huge.msh": b"$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1000000000 1 1000000000\n3 1 0 1000000000\n",
     "cut.exo": data["zoo.exo"][:40000],
     "text.e": b"not an exodus file\n",
     "cut.stl": data["spheres.stl"][:20000],
