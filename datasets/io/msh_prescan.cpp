@@ -37,12 +37,17 @@ void prescan_msh(const std::string& path) {
   in.seekg(0);
   std::string buf;
   uintmax_t base = 0;  // file offset of buf[0]
+  bool open_nodes = false, open_elements = false, end_nodes = false, end_elements = false;
   for (;;) {
     std::string chunk(kChunk, '\0');
     in.read(chunk.data(), std::streamsize(kChunk));
     chunk.resize(size_t(in.gcount()));
     if (chunk.empty()) break;
     buf += chunk;
+    open_nodes = open_nodes || buf.find("\n$Nodes") != std::string::npos;
+    open_elements = open_elements || buf.find("\n$Elements") != std::string::npos;
+    end_nodes = end_nodes || buf.find("\n$EndNodes") != std::string::npos;
+    end_elements = end_elements || buf.find("\n$EndElements") != std::string::npos;
     for (const char* marker : {"\n$Nodes\n", "\n$Elements\n"}) {
       for (size_t at = buf.find(marker); at != std::string::npos; at = buf.find(marker, at + 1)) {
         const size_t after = at + std::strlen(marker);
@@ -72,6 +77,10 @@ void prescan_msh(const std::string& path) {
     base += buf.size() - keep;
     buf.erase(0, buf.size() - keep);
   }
+  // gmsh accepts a file cut inside the closing tag; a cut file is refused here.
+  if (open_nodes && !end_nodes) throw InputError(path, "Nodes", "no $EndNodes: the file ends inside the section");
+  if (open_elements && !end_elements)
+    throw InputError(path, "Elements", "no $EndElements: the file ends inside the section");
 }
 
 }  // namespace vob

@@ -90,14 +90,38 @@ void prescan_ply(const std::string& path) {
     if (e.count > bytes) throw InputError(path, "element " + e.name, std::to_string(e.count) + " instances do not fit in the file");
   const bool ascii = format == "ascii";
   const bool swap = format == "binary_big_endian";  // hosts here are little endian
-  std::string token;
-  auto ascii_number = [&](const std::string& where) {
-    if (!(in >> token)) throw InputError(path, where, "file ends early");
-    char* end = nullptr;
-    const double v = std::strtod(token.c_str(), &end);
-    if (*end != '\0' || !std::isfinite(v)) throw InputError(path, where, "'" + token + "' is not a finite number");
-    return v;
-  };
+  if (ascii) {
+    // VTK reads an ASCII element instance as one line of words: each line must hold exactly
+    // the instance's numbers (a list: its count, then that many).
+    std::string text;
+    for (const Element& e : elements)
+      for (long long i = 0; i < e.count; ++i) {
+        const std::string where = e.name + " " + std::to_string(i);
+        do {
+          if (!std::getline(in, text)) throw InputError(path, where, "file ends early");
+        } while (text.find_first_not_of(" \t\r") == std::string::npos);
+        std::istringstream words(text);
+        std::string token;
+        auto number = [&]() {
+          if (!(words >> token)) throw InputError(path, where, "line has too few numbers");
+          char* end = nullptr;
+          const double v = std::strtod(token.c_str(), &end);
+          if (*end != '\0' || !std::isfinite(v)) throw InputError(path, where, "'" + token + "' is not a finite number");
+          return v;
+        };
+        for (const Property& p : e.props) {
+          double n = 1;
+          if (p.count_size) {
+            n = number();
+            if (n < 0 || n != std::floor(n) || n > double(bytes))
+              throw InputError(path, where, "list count '" + token + "' is not a valid count");
+          }
+          for (long long k = 0; k < static_cast<long long>(n); ++k) number();
+        }
+        if (words >> token) throw InputError(path, where, "line has more numbers than the header declares");
+      }
+    return;
+  }
   std::vector<char> buf(8);
   auto binary_count = [&](const Property& p, const std::string& where) -> long long {
     if (!in.read(buf.data(), p.count_size)) throw InputError(path, where, "file ends early");
@@ -113,20 +137,11 @@ void prescan_ply(const std::string& path) {
       for (const Property& p : e.props) {
         long long n = 1;
         if (p.count_size) {
-          if (ascii) {
-            const double c = ascii_number(where);
-            if (c < 0 || c != std::floor(c) || c > bytes) throw InputError(path, where, "list count '" + token + "' is not a valid count");
-            n = static_cast<long long>(c);
-          } else {
-            n = binary_count(p, where);
-            if (n < 0 || n > bytes) throw InputError(path, where, "list count " + std::to_string(n) + " is not a valid count");
-          }
+          n = binary_count(p, where);
+          if (n < 0 || n > bytes) throw InputError(path, where, "list count " + std::to_string(n) + " is not a valid count");
         }
-        if (ascii) {
-          for (long long k = 0; k < n; ++k) ascii_number(where);
-        } else if (!in.seekg(n * p.size, std::ios::cur) || in.tellg() - start > bytes) {
+        if (!in.seekg(n * p.size, std::ios::cur) || in.tellg() - start > bytes)
           throw InputError(path, where, "file ends early");
-        }
       }
     }
 }

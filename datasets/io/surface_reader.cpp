@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "datasets/io/file_util.h"
 #include "datasets/io/ply_prescan.h"
@@ -20,19 +21,31 @@ namespace vob {
 namespace {
 // Binary STL: 80 header bytes, a triangle count, 50 bytes per triangle. VTK reads a cut
 // file silently as fewer triangles, so the size must match the count exactly; a file that
-// does not match is ASCII only if it starts with "solid" and its start is text.
-void check_stl(const std::string& path) {
+// does not match is ASCII only if it starts with "solid" and its start is text. Returns the
+// number of triangles the file holds (ASCII: its "facet" lines), which VTK must give back:
+// its merging drops degenerate triangles without a word.
+size_t check_stl(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   unsigned char head[84] = {};
   in.read(reinterpret_cast<char*>(head), 84);
   const auto got = in.gcount();
   const uintmax_t size = std::filesystem::file_size(path);
   const uint32_t n = uint32_t(head[80]) | uint32_t(head[81]) << 8 | uint32_t(head[82]) << 16 | uint32_t(head[83]) << 24;
-  if (got == 84 && size == 84 + 50 * uintmax_t(n)) return;  // binary, complete
+  if (got == 84 && size == 84 + 50 * uintmax_t(n)) return n;  // binary, complete
   bool text = got >= 5 && std::memcmp(head, "solid", 5) == 0;
   for (std::streamsize i = 0; text && i < got; ++i)
     text = head[i] == '\n' || head[i] == '\r' || head[i] == '\t' || (head[i] >= 32 && head[i] < 127);
-  if (text) return;
+  if (text) {
+    in.clear();
+    in.seekg(0);
+    size_t facets = 0;
+    std::string word, line;
+    while (std::getline(in, line)) {
+      std::istringstream ls(line);
+      facets += (ls >> word) && word == "facet";
+    }
+    return facets;
+  }
   if (got < 84) throw InputError(path, "header", "file ends inside the 84-byte binary STL header");
   throw InputError(path, "triangles", "binary STL declares " + std::to_string(n) + " triangles (" +
                                           std::to_string(84 + 50 * uintmax_t(n)) + " bytes) but the file has " +
@@ -52,9 +65,14 @@ vtkSmartPointer<vtkPolyData> read_with(const std::string& path) {
 TriangleSoup read_surface(const std::string& path, std::string* note) {
   const std::string ext = file_extension(path);
   vtkSmartPointer<vtkPolyData> pd;
+  size_t stl_triangles = 0;
   if (ext == ".stl") {
-    check_stl(path);
+    stl_triangles = check_stl(path);
     pd = read_with<vtkSTLReader>(path);
+    if (size_t(pd->GetNumberOfPolys()) != stl_triangles)
+      throw InputError(path, "triangles", "VTK read " + std::to_string(pd->GetNumberOfPolys()) + " of the file's " +
+                                              std::to_string(stl_triangles) +
+                                              " (it drops triangles with two corners at one point: degenerate)");
   } else if (ext == ".ply") {
     prescan_ply(path);
     pd = read_with<vtkPLYReader>(path);
