@@ -164,8 +164,12 @@ Scene read_vtk_file(const std::string& path, std::string* note) {
   if (ext == ".pvtu") {
     prescan_vtk_xml(path, "PUnstructuredGrid");
     for (const std::string& piece : pvtu_pieces(path)) {
-      require_readable_file(piece);
-      prescan_vtk_xml(piece, "UnstructuredGrid");
+      try {  // the line names the .pvtu and its piece
+        require_readable_file(piece);
+        prescan_vtk_xml(piece, "UnstructuredGrid");
+      } catch (const InputError& e) {
+        throw InputError(path + ": piece " + e.what());
+      }
     }
     vtkNew<vtkXMLPUnstructuredGridReader> r;
     r->SetFileName(path.c_str());

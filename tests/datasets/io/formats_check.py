@@ -61,6 +61,12 @@ else:
 
 run([maker, "write", work]).check_returncode()
 counts.update(json.loads((work / "counts.json").read_text()))
+for name, n in json.loads((work / "points.json").read_text()).items():
+    r = run([maker, "scalars", work / name])
+    print(f"{name}: {r.stdout.strip()} (the mesh had {n} points)")
+    if f"points {n} scalars {n} " not in r.stdout:
+        failures.append(f"{name}: expected {n} points with scalars, got {r.stdout!r} {r.stderr!r}")
+
 # zoo.exo holds nodal variables temperature = 1 + x and pressure = 100 + y: the first is the
 # default, the other is chosen by name (API and --input-variable), a wrong name is refused.
 first = run([maker, "scalars", work / "zoo.exo"]).stdout.strip()

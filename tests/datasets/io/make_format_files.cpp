@@ -166,5 +166,7 @@ int main(int argc, char** argv) {
   write_inr_gz(vox.grid(), dir + "/sparse.inr.gz");
   counts["sparse.inr.gz"] = vox.num_primitives();
   std::ofstream(dir + "/counts.json") << counts.dump(1) << "\n";
+  // The pieces repeat their border points; read back, the .pvtu must have the mesh's points.
+  std::ofstream(dir + "/points.json") << nlohmann::json{{"helix.pvtu", helix.mesh().num_points()}}.dump() << "\n";
   return 0;
 }
