@@ -7,8 +7,18 @@ macro(vob_require found what package)
   endif()
 endmacro()
 
-find_package(VTK 9.1 QUIET COMPONENTS CommonCore CommonDataModel IOXML IOLegacy IOImage RenderingCore)
-vob_require(VTK_FOUND "VTK 9.1 (CommonCore, CommonDataModel, IOXML, IOLegacy, IOImage, RenderingCore)" libvtk9-dev)
+find_package(VTK 9.1 QUIET COMPONENTS CommonCore CommonDataModel IOXML IOLegacy IOImage RenderingCore
+             IOExodus IOGeometry IOPLY IOParallelXML FiltersParallel)
+vob_require(VTK_FOUND "VTK 9.1 (CommonCore, CommonDataModel, IOXML, IOLegacy, IOImage, RenderingCore, IOExodus, IOGeometry, IOPLY, IOParallelXML, FiltersParallel)" libvtk9-dev)
+
+# gmsh's SDK (.msh files) has no CMake package: its header and library.
+find_path(GMSH_INCLUDE_DIR gmsh.h)
+find_library(GMSH_LIBRARY gmsh)
+vob_require(GMSH_LIBRARY "the gmsh SDK (gmsh.h, libgmsh)" libgmsh-dev)
+vob_require(GMSH_INCLUDE_DIR "the gmsh SDK (gmsh.h, libgmsh)" libgmsh-dev)
+
+find_package(ZLIB QUIET)
+vob_require(ZLIB_FOUND "zlib" zlib1g-dev)
 
 find_package(CGAL QUIET)
 vob_require(CGAL_FOUND "CGAL" libcgal-dev)

@@ -32,10 +32,13 @@ const DatasetInfo& find_dataset(const std::string& name);  // InputError if unkn
 void check_dataset_params(const std::string& name, Params params);
 
 struct InputOptions {
-  bool tetrahedralize = false;  // .off: mesh the closed surface with TetGen (else triangles)
+  bool tetrahedralize = false;  // surfaces (.off .stl .ply .obj): mesh the closed surface
+                                // with TetGen (else triangles)
   std::string tetgen_switches;  // extra switches for tetgen (empty: a sensible default)
+  std::string variable;         // Exodus: the nodal variable read as scalar (empty: the first)
 };
-// Reads .vtu/.vtk/.vti (VTK), .node (+ .ele beside it; TetGen), .inr, .off. Validates.
+// Reads .vtu/.pvtu/.vtk/.vti (VTK), .node (+ .ele beside it; TetGen), .inr/.inr.gz, .off,
+// .stl/.ply/.obj (VTK), .msh (gmsh SDK), .exo/.e (VTK's Exodus II reader). Validates.
 Scene load_input(const std::string& path, const InputOptions& opt = {});
 
 // Writes a scene: cells to .vtu or .vtk, triangles to .off, voxels to .vti; atomically

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "datasets/io/gzip_file.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -34,9 +35,8 @@ T load(const unsigned char* p, bool swap) {
 }
 }  // namespace
 
-VoxelGrid read_inr(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "file", std::string("cannot be opened: ") + std::strerror(errno));
+namespace {
+VoxelGrid parse_inr(std::istream& in, const std::string& path) {
   // Header: whole 256-byte blocks until one ends with "##}\n".
   std::string header;
   char block[256];
@@ -138,6 +138,18 @@ VoxelGrid read_inr(const std::string& path) {
     g.values[i] = static_cast<float>(v);
   }
   return g;
+}
+}  // namespace
+
+VoxelGrid read_inr(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "file", std::string("cannot be opened: ") + std::strerror(errno));
+  return parse_inr(in, path);
+}
+
+VoxelGrid read_inr_gz(const std::string& path) {
+  std::istringstream in(gunzip_file(path));
+  return parse_inr(in, path);
 }
 
 }  // namespace vob

@@ -1,4 +1,4 @@
-// INRIMAGE-4 volumes (.inr; not .inr.gz): a text header of 256-byte blocks from
+// INRIMAGE-4 volumes (.inr, and gzipped .inr.gz): a text header of 256-byte blocks from
 // "#INRIMAGE-4#{" to "##}", then raw samples, x fastest. Supported: VDIM=1;
 // TYPE=unsigned fixed / signed fixed (PIXSIZE 8, 16, 32 bits) or float (32, 64 bits);
 // CPU=decm|pc|alpha (little endian) or sun|sgi (big endian); XDIM/YDIM/ZDIM; VX/VY/VZ
@@ -12,5 +12,6 @@
 namespace vob {
 
 VoxelGrid read_inr(const std::string& path);
+VoxelGrid read_inr_gz(const std::string& path);  // the whole file inflated with zlib first
 
 }  // namespace vob

@@ -1,15 +1,20 @@
 // load_input and write_scene: dispatch on the file extension; loads are validated (DESIGN.md:
 // finite coordinates, indices in range, non-degenerate positively oriented cells, no face
 // shared by more than two cells). Nothing is repaired.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <new>
 #include <stdexcept>
 
 #include "datasets/datasets.h"
+#include "datasets/io/exodus_reader.h"
 #include "datasets/io/file_util.h"
+#include "datasets/io/gmsh_reader.h"
 #include "datasets/io/inr_reader.h"
 #include "datasets/io/off_io.h"
+#include "datasets/io/surface_reader.h"
 #include "datasets/io/tetgen_bridge.h"
 #include "datasets/io/tetgen_files.h"
 #include "datasets/io/vtk_io.h"
@@ -29,6 +34,23 @@ Scene validated(Scene s, const std::string& path) {
   }
   return s;
 }
+
+// A reader's note ("skipped ...") is told only once the whole read and validation
+// succeeded, so a refused file still gets exactly one line.
+Scene told(Scene s, const std::string& path, const std::string& note) {
+  if (!note.empty()) std::fprintf(stderr, "vobench: note: %s: %s\n", path.c_str(), note.c_str());
+  return s;
+}
+
+bool is_surface(const std::string& ext) {
+  return ext == ".off" || ext == ".stl" || ext == ".ply" || ext == ".obj";
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() &&
+         std::equal(tail.rbegin(), tail.rend(), s.rbegin(),
+                    [](char a, char b) { return std::tolower((unsigned char)a) == b; });
+}
 }  // namespace
 
 namespace {
@@ -37,15 +59,21 @@ Scene load_unguarded(const std::string& path, const InputOptions& opt) {
   const std::string ext = file_extension(path);
   const std::string name = std::filesystem::path(path).stem().string();
   nlohmann::json params{{"input", path}};
-  if (opt.tetrahedralize && ext != ".off")
-    throw InputError(path, "file", "--tetrahedralize applies to .off surfaces only");
-  if (ext == ".vtu" || ext == ".vtk" || ext == ".vti") {
-    std::string note;
-    Scene s = validated(read_vtk_file(path, &note), path);
-    // Told only now that the whole read succeeded, so a refused file still gets one line.
-    if (!note.empty()) std::fprintf(stderr, "vobench: note: %s: %s\n", path.c_str(), note.c_str());
-    return s;
+  if (opt.tetrahedralize && !is_surface(ext))
+    throw InputError(path, "file", "--tetrahedralize applies to surfaces (.off .stl .ply .obj) only");
+  if (!opt.variable.empty() && ext != ".exo" && ext != ".e")
+    throw InputError(path, "file", "an input variable applies to Exodus II files (.exo .e) only");
+  std::string note;
+  if (ext == ".vtu" || ext == ".pvtu" || ext == ".vtk" || ext == ".vti")
+    return told(validated(read_vtk_file(path, &note), path), path, note);
+  if (ext == ".msh")
+    return told(validated(Scene::from_mesh(name, read_gmsh(path, &note), params), path), path, note);
+  if (ext == ".exo" || ext == ".e") {
+    if (!opt.variable.empty()) params["variable"] = opt.variable;
+    return told(validated(Scene::from_mesh(name, read_exodus(path, opt.variable, &note), params), path), path, note);
   }
+  if (ends_with(path, ".inr.gz"))
+    return validated(Scene::from_grid(std::filesystem::path(name).stem().string(), read_inr_gz(path), params), path);
   if (ext == ".node" || ext == ".ele") {
     const std::string node = ext == ".node" ? path : tetgen_partner(path, ".node");
     const std::string ele = tetgen_partner(node, ".ele");
@@ -54,18 +82,18 @@ Scene load_unguarded(const std::string& path, const InputOptions& opt) {
     return validated(Scene::from_mesh(name, read_tetgen(node, ele), params), path);
   }
   if (ext == ".inr") return validated(Scene::from_grid(name, read_inr(path), params), path);
-  if (ext == ".off") {
-    TriangleSoup soup = read_off(path);
+  if (is_surface(ext)) {
+    TriangleSoup soup = ext == ".off" ? read_off(path) : read_surface(path, &note);
     validate_triangle_soup(soup, path);
-    if (!opt.tetrahedralize) return Scene::from_soup(name, std::move(soup), params);
+    if (!opt.tetrahedralize) return told(Scene::from_soup(name, std::move(soup), params), path, note);
     check_closed_surface(soup, path);
     params["tetgen"] = opt.tetgen_switches.empty() ? kDefaultTetgenSwitches : opt.tetgen_switches;
-    return validated(Scene::from_mesh(name, tetrahedralize_surface(soup, path, opt.tetgen_switches), params), path);
+    return told(validated(Scene::from_mesh(name, tetrahedralize_surface(soup, path, opt.tetgen_switches), params), path), path, note);
   }
   if (ext == ".gz")
-    throw InputError(path, "file", "compressed input is not supported; decompress it first");
+    throw InputError(path, "file", "of gzipped files only .inr.gz is read; decompress it first");
   throw InputError(path, "file", "unknown extension '" + ext +
-                                     "' (expected .vtu .vtk .vti .node .ele .inr .off)");
+                                     "' (expected .vtu .pvtu .vtk .vti .node .ele .inr .inr.gz .off .stl .ply .obj .msh .exo .e)");
 }
 }  // namespace
 

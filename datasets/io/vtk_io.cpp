@@ -1,219 +1,42 @@
 #include "datasets/io/vtk_io.h"
 
 #include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
 #include <map>
-#include <mutex>
 
-#include <vtkCallbackCommand.h>
 #include <vtkCellData.h>
-#include <vtkCellTypes.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkFloatArray.h>
-#include <vtkGenericCell.h>
 #include <vtkGenericDataObjectReader.h>
 #include <vtkImageData.h>
-#include <vtkLogger.h>
 #include <vtkNew.h>
-#include <vtkObjectFactory.h>
-#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 #include <vtkStructuredPoints.h>
+#include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkUnstructuredGridWriter.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "datasets/io/file_util.h"
 #include "datasets/io/vtk_prescan.h"
+#include "datasets/io/vtk_shared.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
 
 namespace {
-// VTK reports problems through the global output window (and, when an algorithm has an
-// observer, as ErrorEvent on it). While a file is read or written, a capturing window
-// collects them instead of printing, and the first error becomes one InputError line.
-class CaptureWindow : public vtkOutputWindow {
- public:
-  static CaptureWindow* New();
-  vtkTypeMacro(CaptureWindow, vtkOutputWindow);
-  void DisplayText(const char* t) override { keep(t); }
-  void DisplayErrorText(const char* t) override { keep(t); }
-  // A warning on reading is a problem with the file too (VTK reports a short binary read
-  // as one), so it is kept like an error.
-  void DisplayWarningText(const char* t) override { keep(t); }
-  void DisplayGenericWarningText(const char* t) override { keep(t); }
-  void DisplayDebugText(const char*) override {}
-  // VTK messages read "ERROR: In file, line N\nClass (0x...): text" (or "Warning: In ..."):
-  // keep the text.
-  void keep(const char* t) {
-    if (!first.empty() || !t) return;
-    std::string msg = t;
-    std::string best;
-    size_t start = 0;
-    while (start <= msg.size()) {
-      size_t end = msg.find('\n', start);
-      if (end == std::string::npos) end = msg.size();
-      std::string line = msg.substr(start, end - start);
-      start = end + 1;
-      if (line.empty() || line.rfind("ERROR: In ", 0) == 0 || line.rfind("Warning: In ", 0) == 0 ||
-          line.rfind("Generic Warning: In ", 0) == 0)
-        continue;
-      if (const auto p = line.find("): "); p != std::string::npos && line.find(" (0x") < p)
-        line = line.substr(p + 3);
-      best = line;
-      break;
-    }
-    first = best.empty() ? msg : best;
-  }
-  std::string first;
-};
-vtkStandardNewMacro(CaptureWindow);
-
-// The output window and the logger level are process-wide: one capture at a time.
-std::mutex capture_mutex;
-
-class ScopedCapture {
- public:
-  // VTK also logs errors to stderr through vtkLogger; that is muted meanwhile. vtkLogger
-  // has no getter for the stderr level: the cutoff equals it unless log callbacks exist.
-  ScopedCapture()
-      : lock_(capture_mutex),
-        prev_(vtkOutputWindow::GetInstance()),
-        level_(vtkLogger::GetCurrentVerbosityCutoff()) {
-    vtkOutputWindow::SetInstance(win_);
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  }
-  ~ScopedCapture() {
-    if (algo_) {  // the window dies with us; so must the links
-      algo_->RemoveObserver(tag_);
-      algo_->RemoveObserver(warning_tag_);
-    }
-    vtkLogger::SetStderrVerbosity(level_);
-    vtkOutputWindow::SetInstance(prev_);
-  }
-  void forward(vtkObject* algo) {
-    cb_->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
-      static_cast<CaptureWindow*>(self)->keep(static_cast<const char*>(data));
-    });
-    cb_->SetClientData(win_.Get());
-    algo_ = algo;
-    tag_ = algo->AddObserver(vtkCommand::ErrorEvent, cb_);
-    warning_tag_ = algo->AddObserver(vtkCommand::WarningEvent, cb_);
-  }
-  const std::string& first() const { return win_->first; }
-
- private:
-  std::lock_guard<std::mutex> lock_;
-  vtkSmartPointer<vtkOutputWindow> prev_;
-  vtkLogger::Verbosity level_;
-  vtkNew<CaptureWindow> win_;
-  vtkNew<vtkCallbackCommand> cb_;
-  vtkObject* algo_ = nullptr;
-  unsigned long tag_ = 0, warning_tag_ = 0;
-};
-
-template <class Algo>
-void run_checked(Algo* algo, const std::string& path, const char* what) {
-  ScopedCapture capture;
-  capture.forward(algo);
-  algo->Update();
-  if (!capture.first().empty()) throw InputError(path, what, "VTK: " + capture.first());
-}
-
-vtkDataArray* pick_array(vtkDataSetAttributes* a) {
-  if (!a) return nullptr;
-  if (vtkDataArray* s = a->GetScalars()) return s;
-  for (int i = 0; i < a->GetNumberOfArrays(); ++i)
-    if (vtkDataArray* d = a->GetArray(i)) return d;
-  return nullptr;
-}
-
-// Dimension of a VTK cell type as VTK itself defines it (-1 for a code VTK does not know).
-int cell_dimension(int type) {
-  const char* cls = vtkCellTypes::GetClassNameFromTypeId(type);
-  if (!cls || std::string(cls) == "UnknownClass") return -1;
-  vtkSmartPointer<vtkCell> cell;
-  cell.TakeReference(vtkGenericCell::InstantiateCell(type));
-  return cell ? cell->GetCellDimension() : -1;
-}
-
-std::string type_label(int type) {
-  const char* cls = vtkCellTypes::GetClassNameFromTypeId(type);
-  return "type " + std::to_string(type) + " (" + (cls ? cls : "unknown") + ")";
-}
-
-// The volume cells of `ug`. Vertices, lines and surface cells beside them (gmsh writes its
-// boundary and edge elements into the same file) are skipped and counted in `skipped` by
-// class name; a volume cell other than the four linear types is refused. Points are kept
-// as numbered in the file, so point data stays aligned with them.
-CellMesh from_unstructured(vtkUnstructuredGrid* ug, const std::string& path,
-                           std::map<std::string, size_t>& skipped) {
-  CellMesh m;
-  const vtkIdType np = ug->GetNumberOfPoints(), nc = ug->GetNumberOfCells();
-  if (np >= (vtkIdType(1) << 31)) throw InputError(path, "points", "more than 2^31 points");
-  m.points.resize(np);
-  for (vtkIdType i = 0; i < np; ++i) {
-    double p[3];
-    ug->GetPoint(i, p);
-    m.points[i] = {p[0], p[1], p[2]};
-  }
-  if (vtkDataArray* s = pick_array(ug->GetPointData())) {
-    if (s->GetNumberOfTuples() != np)
-      throw InputError(path, std::string("point data ") + (s->GetName() ? s->GetName() : "?"),
-                       "has " + std::to_string(s->GetNumberOfTuples()) + " values for " +
-                           std::to_string(np) + " points");
-    m.scalars.resize(np);
-    for (vtkIdType i = 0; i < np; ++i) m.scalars[i] = s->GetComponent(i, 0);
-  }
-  std::map<int, int> dimension;  // per type code, asked of VTK once
-  for (vtkIdType c = 0; c < nc; ++c) {
-    const int type = ug->GetCellType(c);
-    if (!is_supported_cell_code(type)) {
-      auto [it, fresh] = dimension.try_emplace(type, 0);
-      if (fresh) it->second = cell_dimension(type);
-      if (it->second < 0)
-        throw InputError(path, "cell " + std::to_string(c), type_label(type) + " is not a VTK cell type");
-      if (it->second < 3) {
-        const char* cls = vtkCellTypes::GetClassNameFromTypeId(type);
-        ++skipped[cls ? cls : type_label(type)];
-        continue;
-      }
-      throw InputError(path, "cell " + std::to_string(c),
-                       type_label(type) +
-                           " is not supported (volume cells must be linear tetra, pyramid, wedge or hexahedron)");
-    }
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    ug->GetCellPoints(c, n, ids);
-    const auto t = static_cast<CellType>(type);
-    if (n != cell_vertex_count(t))
-      throw InputError(path, "cell " + std::to_string(c),
-                       std::string(cell_type_name(t)) + " with " + std::to_string(n) + " points");
-    for (vtkIdType q = 0; q < n; ++q) {
-      if (ids[q] < 0 || ids[q] >= np)
-        throw InputError(path, "cell " + std::to_string(c),
-                         "point index " + std::to_string(ids[q]) + " is out of range");
-      m.conn.push_back(static_cast<int32_t>(ids[q]));
-    }
-    m.types.push_back(t);
-    m.offsets.push_back(static_cast<int32_t>(m.conn.size()));
-  }
-  if (m.num_cells() == 0)
-    throw InputError(path, "cells", nc == 0 ? "the file has no cells"
-                                            : "none of the " + std::to_string(nc) +
-                                                  " cells is a volume cell (tetra, pyramid, wedge, hexahedron)");
-  return m;
-}
-
 VoxelGrid from_image(vtkImageData* img, const std::string& path) {
   VoxelGrid g;
   int dims[3];
@@ -246,19 +69,6 @@ VoxelGrid from_image(vtkImageData* img, const std::string& path) {
   return g;
 }
 
-// "skipped 40 cells of lower dimension (vtkLine 12, vtkTriangle 28)", or "" for none.
-std::string skipped_note(const std::map<std::string, size_t>& skipped) {
-  size_t total = 0;
-  std::string list;
-  for (const auto& [name, n] : skipped) {
-    total += n;
-    list += (list.empty() ? "" : ", ") + name + " " + std::to_string(n);
-  }
-  if (total == 0) return "";
-  return "read the volume cells only; skipped " + std::to_string(total) +
-         " cells of lower dimension (" + list + ")";
-}
-
 std::string stem(const std::string& path) { return std::filesystem::path(path).stem().string(); }
 
 vtkSmartPointer<vtkUnstructuredGrid> to_unstructured(const CellMesh& m) {
@@ -282,6 +92,41 @@ vtkSmartPointer<vtkUnstructuredGrid> to_unstructured(const CellMesh& m) {
     ug->GetPointData()->SetScalars(s);
   }
   return ug;
+}
+
+// The piece files a .pvtu names (<Piece Source="..."/>), relative to its folder.
+std::vector<std::string> pvtu_pieces(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string t = text.str();
+  static const std::regex piece("<Piece[^>]*\\sSource=\"([^\"]*)\"");
+  std::vector<std::string> out;
+  for (auto it = std::sregex_iterator(t.begin(), t.end(), piece); it != std::sregex_iterator(); ++it)
+    out.push_back((std::filesystem::path(path).parent_path() / (*it)[1].str()).string());
+  if (out.empty()) throw InputError(path, "Piece", "the file names no piece (<Piece Source=\"...\"/>)");
+  return out;
+}
+
+// Pieces repeat the points on their shared borders: points at bit-identical coordinates
+// become one (the first), so faces between pieces are shared faces, as in one .vtu.
+void merge_piece_points(CellMesh& m) {
+  std::map<std::tuple<double, double, double>, int32_t> first;
+  std::vector<int32_t> to(m.points.size());
+  std::vector<Vec3> pts;
+  std::vector<double> sc;
+  for (size_t i = 0; i < m.points.size(); ++i) {
+    const Vec3& p = m.points[i];
+    const auto [it, fresh] = first.try_emplace({p.x, p.y, p.z}, int32_t(pts.size()));
+    if (fresh) {
+      pts.push_back(p);
+      if (!m.scalars.empty()) sc.push_back(m.scalars[i]);
+    }
+    to[i] = it->second;
+  }
+  for (int32_t& c : m.conn) c = to[c];
+  m.points = std::move(pts);
+  m.scalars = std::move(sc);
 }
 
 template <class Writer>
@@ -314,7 +159,25 @@ Scene read_vtk_file(const std::string& path, std::string* note) {
     r->SetFileName(path.c_str());
     run_checked(r.Get(), path, "file");
     if (!r->GetOutput()) throw InputError(path, "file", "VTK read no unstructured grid");
-    return noted(Scene::from_mesh(stem(path), from_unstructured(r->GetOutput(), path, skipped), params));
+    return noted(Scene::from_mesh(stem(path), cells_from_unstructured(r->GetOutput(), path, skipped), params));
+  }
+  if (ext == ".pvtu") {
+    prescan_vtk_xml(path, "PUnstructuredGrid");
+    for (const std::string& piece : pvtu_pieces(path)) {
+      try {  // the line names the .pvtu and its piece
+        require_readable_file(piece);
+        prescan_vtk_xml(piece, "UnstructuredGrid");
+      } catch (const InputError& e) {
+        throw InputError(path + ": piece " + e.what());
+      }
+    }
+    vtkNew<vtkXMLPUnstructuredGridReader> r;
+    r->SetFileName(path.c_str());
+    run_checked(r.Get(), path, "file");
+    if (!r->GetOutput()) throw InputError(path, "file", "VTK read no unstructured grid");
+    CellMesh m = cells_from_unstructured(r->GetOutput(), path, skipped);
+    merge_piece_points(m);
+    return noted(Scene::from_mesh(stem(path), std::move(m), params));
   }
   if (ext == ".vti") {
     vtkNew<vtkXMLImageDataReader> r;
@@ -330,19 +193,31 @@ Scene read_vtk_file(const std::string& path, std::string* note) {
     if (r->GetErrorCode() != 0)
       throw InputError(path, "file", std::string("VTK: ") + vtkErrorCode::GetStringFromErrorCode(r->GetErrorCode()));
     if (auto* ug = vtkUnstructuredGrid::SafeDownCast(r->GetOutput()))
-      return noted(Scene::from_mesh(stem(path), from_unstructured(ug, path, skipped), params));
+      return noted(Scene::from_mesh(stem(path), cells_from_unstructured(ug, path, skipped), params));
     if (auto* img = vtkImageData::SafeDownCast(r->GetOutput()))
       return Scene::from_grid(stem(path), from_image(img, path), params);
     const char* what = r->GetOutput() ? r->GetOutput()->GetClassName() : "nothing";
     throw InputError(path, "dataset", std::string("legacy VTK ") + what +
                                           " is not supported (unstructured grid or structured points only)");
   }
-  throw InputError(path, "file", "not a VTK file extension (.vtu .vtk .vti)");
+  throw InputError(path, "file", "not a VTK file extension (.vtu .pvtu .vtk .vti)");
 }
 
-void write_vtu(const CellMesh& m, const std::string& path) {
+void write_vtu(const CellMesh& m, const std::string& path) { write_vtu(m, path, {}); }
+
+void write_vtu(const CellMesh& m, const std::string& path, const CellArrays& cell_arrays) {
   vtkNew<vtkXMLUnstructuredGridWriter> w;
   auto ug = to_unstructured(m);
+  for (const auto& [name, values] : cell_arrays) {
+    if (values.size() != m.num_cells())
+      throw InputError(path, "cell array " + name, "has " + std::to_string(values.size()) + " values for " +
+                                                       std::to_string(m.num_cells()) + " cells");
+    vtkNew<vtkTypeInt64Array> a;
+    a->SetName(name.c_str());
+    a->SetNumberOfTuples(vtkIdType(values.size()));
+    for (size_t i = 0; i < values.size(); ++i) a->SetValue(vtkIdType(i), values[i]);
+    ug->GetCellData()->AddArray(a);
+  }
   w->SetInputData(ug);
   w->SetDataModeToAppended();
   w->EncodeAppendedDataOff();  // raw binary: doubles round-trip exactly
@@ -354,6 +229,23 @@ void write_vtk_legacy(const CellMesh& m, const std::string& path) {
   auto ug = to_unstructured(m);
   w->SetInputData(ug);
   w->SetFileTypeToBinary();
+  write_with(w.Get(), path);
+}
+
+void write_mask_vti(const std::vector<uint8_t>& mask, int width, int height, const std::string& name,
+                    const std::string& path) {
+  if (mask.size() != size_t(width) * size_t(height))
+    throw InputError(path, "image", "mask of " + std::to_string(mask.size()) + " pixels is not " +
+                                        std::to_string(width) + "x" + std::to_string(height));
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(width, height, 1);
+  vtkNew<vtkUnsignedCharArray> v;
+  v->SetName(name.c_str());
+  v->SetNumberOfTuples(vtkIdType(mask.size()));
+  for (size_t i = 0; i < mask.size(); ++i) v->SetValue(vtkIdType(i), mask[i]);
+  img->GetPointData()->SetScalars(v);
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(img);
   write_with(w.Get(), path);
 }
 

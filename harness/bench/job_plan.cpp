@@ -1,6 +1,7 @@
 #include "harness/bench/job_plan.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -25,9 +26,12 @@ double param(const DatasetSpec& ds, const std::string& key, double def) {
 
 // The kind of an input file from its extension (what load_input dispatches on).
 SceneKind input_kind(const DatasetSpec& ds) {
-  const std::string ext = std::filesystem::path(ds.input).extension().string();
-  if (ext == ".vti" || ext == ".inr") return SceneKind::Voxels;
-  if (ext == ".off" && !ds.tetrahedralize) return SceneKind::Triangles;
+  std::string ext = std::filesystem::path(ds.input).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".gz") ext = std::filesystem::path(ds.input).stem().extension().string() + ext;
+  if (ext == ".vti" || ext == ".inr" || ext == ".inr.gz") return SceneKind::Voxels;
+  if ((ext == ".off" || ext == ".stl" || ext == ".ply" || ext == ".obj") && !ds.tetrahedralize)
+    return SceneKind::Triangles;
   return SceneKind::Cells;
 }
 

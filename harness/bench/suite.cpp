@@ -32,7 +32,7 @@ std::string DatasetSpec::label() const {
   if (!input.empty()) {
     const auto slash = input.find_last_of('/');
     return (slash == std::string::npos ? input : input.substr(slash + 1)) +
-           (tetrahedralize ? "(tet)" : "");
+           (tetrahedralize ? "(tet)" : "") + (variable.empty() ? "" : "[" + variable + "]");
   }
   return set.empty() ? name : name + "(" + params_text(set) + ")";
 }
@@ -42,6 +42,7 @@ nlohmann::json DatasetSpec::to_json() const {
   if (!input.empty()) {
     j["input"] = input;
     if (tetrahedralize) j["tetrahedralize"] = true;
+    if (!variable.empty()) j["variable"] = variable;
   } else {
     j["name"] = name;
     Params p(name);
@@ -82,6 +83,7 @@ Scene make_scene(const DatasetSpec& spec) {
   if (!spec.input.empty()) {
     InputOptions opt;
     opt.tetrahedralize = spec.tetrahedralize;
+    opt.variable = spec.variable;
     return load_input(spec.input, opt);
   }
   Params p(spec.name);
@@ -111,7 +113,7 @@ std::string fill_label(const SuiteReader& r, std::string label, const std::map<s
 
 // One dataset entry: one DatasetSpec per grid point.
 std::vector<DatasetSpec> read_dataset(const SuiteReader& r, const nlohmann::json& d, const std::string& where) {
-  r.only_keys(d, where, {"name", "set", "grid", "label", "input", "tetrahedralize", "comment"});
+  r.only_keys(d, where, {"name", "set", "grid", "label", "input", "tetrahedralize", "variable", "comment"});
   DatasetSpec ds;
   if (d.contains("name") == d.contains("input")) r.fail(where, "give exactly one of \"name\" or \"input\"");
   const std::string label = d.contains("label") ? r.string(d["label"], where + ".label") : "";
@@ -121,13 +123,15 @@ std::vector<DatasetSpec> read_dataset(const SuiteReader& r, const nlohmann::json
     if (!std::filesystem::is_regular_file(ds.input, ec))
       r.fail(where + ".input", "'" + ds.input + "' is not a readable file");
     if (d.contains("tetrahedralize")) ds.tetrahedralize = r.boolean(d["tetrahedralize"], where + ".tetrahedralize");
+    if (d.contains("variable")) ds.variable = r.string(d["variable"], where + ".variable");
     for (const char* k : {"set", "grid"})
       if (d.contains(k)) r.fail(where + "." + k, "applies to generated datasets (\"name\") only");
     ds.row = label;
     return {ds};
   }
   ds.name = r.string(d["name"], where + ".name");
-  if (d.contains("tetrahedralize")) r.fail(where + ".tetrahedralize", "applies to \"input\" files only");
+  for (const char* k : {"tetrahedralize", "variable"})
+    if (d.contains(k)) r.fail(where + "." + k, "applies to \"input\" files only");
   const auto& known = dataset_registry();
   if (std::none_of(known.begin(), known.end(), [&](const DatasetInfo& i) { return i.name == ds.name; })) {
     std::vector<std::string> names;

@@ -28,7 +28,8 @@ struct DatasetSpec {
   std::string name;                          // generator name, or empty with `input`
   std::map<std::string, std::string> set;    // generator parameters
   std::string input;                         // a file instead of a generator
-  bool tetrahedralize = false;               // .off input through TetGen
+  bool tetrahedralize = false;               // surface input (.off .stl .ply .obj) through TetGen
+  std::string variable;                      // Exodus input: the nodal variable read as scalar
   std::string row;                           // the suite's "label" ({key} filled in); may be empty
   std::string label() const;                 // "gap(gaps=3,nx=8)" or the file name
   std::string row_label() const { return row.empty() ? label() : row; }  // a table's row

@@ -21,6 +21,7 @@
 #include "harness/oracle/oracle.h"
 #include "harness/cli/check_sources.h"
 #include "harness/cli/commands.h"
+#include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/input_error.h"
@@ -73,7 +74,7 @@ Command add_check_command(CLI::App& app) {
   view_args->add_to(*cmd);
   cmd->add_option("--supersample", *supersample, "S x S samples per pixel")->check(integer_in(1, 16));
   cmd->add_flag("--json", *json, "print the oracle's counts per view as JSON");
-  cmd->add_option("--images", *images, "write order/exact/diff/violations PNGs of every view here");
+  cmd->add_option("--images", *images, "write order/exact/diff/violations PNGs of every view here, and for ParaView the violations as .vti and the camera as .pvcc");
   cmd->add_option("--max-violating-pixels", *max_pixels,
                   "pass (exit 0) when violating pixels are at most PCT percent of the covered pixels of all views")
       ->check(number_in(0, 100, false, false));
@@ -163,6 +164,8 @@ Command add_check_command(CLI::App& app) {
           write_png(shown.exact, stem + "-exact.png");
           write_png(difference_image(shown.ordered, shown.exact), stem + "-diff.png");
           write_png(violation_image(shown.exact, r.violation_mask), stem + "-violations.png");
+          write_violation_vti(r, stem + "-violations.vti");  // ParaView: the mask and the camera
+          write_camera_pvcc(cam, stem + ".pvcc");
         }
       }
       const double pct = r.covered_pixels ? 100.0 * r.violating_pixels / r.covered_pixels : 0.0;

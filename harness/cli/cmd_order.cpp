@@ -7,6 +7,7 @@
 #include "harness/bench/verdict.h"
 #include "harness/oracle/oracle.h"
 #include "harness/cli/commands.h"
+#include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
 #include "harness/scene/input_error.h"
 
@@ -19,11 +20,15 @@ Command add_order_command(CLI::App& app) {
   auto algorithm = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto check = std::make_shared<bool>(false);
+  auto vtu = std::make_shared<std::string>();
   cmd->add_option("--algorithm,-a", *algorithm, "orderer NAME[:k=v,...]")->required();
   scene_args->add_to(*cmd);
   view_args->add_to(*cmd);
   cmd->add_option("-o,--output", *out, "ORDER.json")->required();
   cmd->add_flag("--check", *check, "also store the verdict (the oracle's counts; HAVS: on what it composites)");
+  cmd->add_option("--vtu", *vtu,
+                  "also write the cell mesh as OUT.vtu for ParaView with cell arrays order_rank, "
+                  "violating_fragments (the oracle on this order at this view) and in_cycle");
   return [=]() {
     const DatasetSpec spec = scene_args->spec();
     view_args->validate(spec);
@@ -58,6 +63,11 @@ Command add_order_command(CLI::App& app) {
       const Verdict v = judge(*p.orderer, *algorithm, scene, cam, m.ordering, {}, "--supersample");
       j["oracle"] = v.json();
       if (v.cell_order) j["oracle_cell_order"] = v.cell_order_json();
+    }
+    if (!vtu->empty()) {
+      OracleOptions per_cell;
+      per_cell.per_primitive = true;
+      write_order_vtu(scene, m.ordering, check_ordering(scene, cam, m.ordering.order, per_cell), *vtu);
     }
     write_file_atomically(*out, j.dump() + "\n");
     std::cerr << "wrote " << *out << ": " << m.ordering.order.size() << " "

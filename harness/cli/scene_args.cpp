@@ -78,8 +78,12 @@ void check_algorithm(const std::string& algorithm, const DatasetSpec& spec) {
 void SceneArgs::add_to(CLI::App& cmd, bool validate_option) {
   cmd.add_option("--dataset,-d", dataset, "built-in dataset (see: vobench list)");
   cmd.add_option("--set", sets, "generator parameter k=v (repeatable)");
-  cmd.add_option("--input,-i", input, "mesh or volume file (.vtu .vtk .vti .node .inr .off)");
-  cmd.add_flag("--tetrahedralize", tetrahedralize, "mesh a closed .off surface with TetGen");
+  cmd.add_option("--input,-i", input,
+                 "mesh, surface or volume file: cells .vtu .pvtu .vtk .node/.ele .msh (gmsh 2.2/4.1) "
+                 ".exo/.e (Exodus II: all element blocks, time step 0, first nodal variable); "
+                 "triangles .off .stl .ply .obj; voxels .vti .vtk .inr .inr.gz");
+  cmd.add_flag("--tetrahedralize", tetrahedralize, "mesh a closed surface (.off .stl .ply .obj) with TetGen");
+  cmd.add_option("--input-variable", variable, "Exodus II input: the nodal variable read as scalar (default: the first)");
   if (validate_option)
     cmd.add_option("--validate", validate,
                    "cells: per-cell checks (default); full: also find interpenetrating cells")
@@ -106,10 +110,13 @@ DatasetSpec SceneArgs::spec() const {
   s.name = dataset;
   s.input = input;
   s.tetrahedralize = tetrahedralize;
+  s.variable = variable;
   if (!input.empty() && !sets.empty())
     throw InputError("--set", "'" + sets[0] + "'", "applies to --dataset only, not to --input");
+  if (!dataset.empty() && !variable.empty())
+    throw InputError("--input-variable", "'" + variable + "'", "applies to --input FILE.exo only, not to --dataset");
   if (!dataset.empty() && tetrahedralize)
-    throw InputError("--tetrahedralize", "'" + dataset + "'", "applies to --input FILE.off only, not to --dataset");
+    throw InputError("--tetrahedralize", "'" + dataset + "'", "applies to --input SURFACE (.off .stl .ply .obj) only, not to --dataset");
   for (const auto& kv : sets) {
     const auto eq = kv.find('=');
     if (eq == std::string::npos || eq == 0) throw InputError("--set", "'" + kv + "'", "expected key=value");

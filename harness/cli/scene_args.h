@@ -18,6 +18,7 @@ struct SceneArgs {
   std::string dataset, input;
   std::vector<std::string> sets;  // k=v
   bool tetrahedralize = false;
+  std::string variable;  // --input-variable (Exodus)
   // --validate cells (default): per-cell checks and face sharing, as every load does;
   // --validate full: also every pair of interpenetrating cells (cell_overlap.h).
   std::string validate = "cells";

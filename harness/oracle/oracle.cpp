@@ -81,7 +81,17 @@ struct Scratch {
   PairFilter pairs, overlap_pairs;
   std::vector<double> in, query;
   std::vector<int> by_t_in, active;
+  std::vector<int64_t> per_prim;  // OracleOptions::per_primitive, this thread's counts
 };
+
+size_t primitive_id_count(const Scene& scene) {
+  switch (scene.kind()) {
+    case SceneKind::Cells: return scene.mesh().num_cells();
+    case SceneKind::Triangles: return scene.soup().num_triangles();
+    case SceneKind::Voxels: return scene.grid().num_voxels();
+  }
+  return 0;
+}
 
 // Cells: every pair of segments at one sample overlapping by more than `tol`. A sweep in
 // t_in order keeps the segments still open; in a valid mesh that list holds at most one
@@ -141,6 +151,7 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   tbb::enumerable_thread_specific<Scratch> scratch;
   tbb::parallel_for(0, nb, [&](int b) {
     Scratch& s = scratch.local();
+    if (opt.per_primitive && s.per_prim.empty()) s.per_prim.assign(primitive_id_count(scene), 0);
     BandStats& st = bands[b];
     collector.collect_band(b, s.lists);
     s.pairs.clear();
@@ -181,6 +192,7 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
         if (s.query[j] > nearest) {
           violated = true;
           ++st.violating_fragments;
+          if (opt.per_primitive) ++s.per_prim[frags[j].prim];
           const uint64_t pair = uint64_t(uint32_t(frags[j].prim)) << 32 | uint32_t(frags[holder].prim);
           if (s.pairs.fresh(pair)) st.pairs.push_back(pair);
           if (st.examples.size() < max_examples) {
@@ -249,6 +261,11 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   tbb::parallel_sort(pairs.begin(), pairs.end());
   r.violating_pairs = int64_t(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
   r.max_k = int(r.k_histogram.size()) - 1;
+  if (opt.per_primitive) {
+    r.violating_fragments_per_primitive.assign(primitive_id_count(scene), 0);
+    for (const Scratch& s : scratch)
+      for (size_t i = 0; i < s.per_prim.size(); ++i) r.violating_fragments_per_primitive[i] += s.per_prim[i];
+  }
   if (opt.violation_mask) {
     const int S = frame.supersample();
     r.mask_width = frame.cols() / S;

@@ -22,6 +22,7 @@ struct OracleOptions {
   double splat_radius_px = 0;   // voxels: footprint radius in pixels; 0 = projected voxel size
   int max_examples = 5;         // violating fragments (and overlapping pairs) described
   bool violation_mask = false;  // fill OracleResult::violation_mask (costs w*h*S*S bytes)
+  bool per_primitive = false;   // fill OracleResult::violating_fragments_per_primitive
 };
 
 struct OracleResult {
@@ -46,6 +47,10 @@ struct OracleResult {
   // exactly violating_pixels.
   std::vector<uint8_t> violation_mask;
   int mask_width = 0, mask_height = 0;
+  // With OracleOptions::per_primitive: per primitive id (cells, triangles: all of them;
+  // voxels: every voxel of the grid), its fragments that violated (the fragment drawn too
+  // late is the one counted, as in violating_fragments, which these sum to). Empty otherwise.
+  std::vector<int64_t> violating_fragments_per_primitive;
   // False for a verdict that has no primitive pairs (a compositing orderer's, orderer.h):
   // to_json then writes violating_pairs as null, not as a count of 0.
   bool pairs_counted = true;

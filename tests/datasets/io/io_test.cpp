@@ -214,9 +214,12 @@ TEST(DatasetIO, VtkErrors) {
   EXPECT_TRUE(contains(e, "missing.vtu: file: does not exist")) << e;
   e = input_error([&] { load_input(dir.file("x.stl")); });
   EXPECT_TRUE(contains(e, "does not exist")) << e;
-  write_text(dir.file("x.stl"), "solid\n");
+  write_text(dir.file("x.stl"), "solid\n");  // an ASCII STL without triangles
   e = input_error([&] { load_input(dir.file("x.stl")); });
-  EXPECT_TRUE(contains(e, "x.stl: file: unknown extension '.stl'")) << e;
+  EXPECT_TRUE(contains(e, "x.stl: file: VTK: STLReader: error while reading")) << e;
+  write_text(dir.file("x.xyz"), "0 0 0\n");
+  e = input_error([&] { load_input(dir.file("x.xyz")); });
+  EXPECT_TRUE(contains(e, "x.xyz: file: unknown extension '.xyz'")) << e;
 }
 
 TEST(DatasetIO, InrHeaderTypesAndEndianness) {

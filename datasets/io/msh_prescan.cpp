@@ -1,0 +1,86 @@
+#include "datasets/io/msh_prescan.h"
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+namespace {
+// The file is scanned in chunks for "$Nodes\n" and "$Elements\n" at line starts; a chunk
+// keeps the tail of the previous one so a marker split between them is still found.
+constexpr size_t kChunk = size_t(1) << 20;
+}  // namespace
+
+void prescan_msh(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const uintmax_t size = std::filesystem::file_size(path);
+  std::string head(256, '\0');
+  in.read(head.data(), 256);
+  head.resize(size_t(in.gcount()));
+  if (head.rfind("$MeshFormat", 0) != 0) return;  // not a mesh file gmsh reads as such: gmsh says why
+  std::istringstream fmt(head.substr(head.find('\n') + 1));
+  double version = 0;
+  int binary = -1, data_size = 0;
+  if (!(fmt >> version >> binary >> data_size) || (binary != 0 && binary != 1))
+    throw InputError(path, "$MeshFormat", "expected 'version file-type data-size'");
+  if (!((version >= 2 && version < 3) || (version >= 4 && version < 5)))
+    throw InputError(path, "$MeshFormat", "version " + std::to_string(version).substr(0, 4) + " is not 2.x or 4.x");
+  const bool raw_counts = binary == 1 && version >= 4;  // 4.x binary: section headers are size_t
+  if (raw_counts && data_size != 8) throw InputError(path, "$MeshFormat", "data-size must be 8 (size_t)");
+
+  in.clear();
+  in.seekg(0);
+  std::string buf;
+  uintmax_t base = 0;  // file offset of buf[0]
+  bool open_nodes = false, open_elements = false, end_nodes = false, end_elements = false;
+  for (;;) {
+    std::string chunk(kChunk, '\0');
+    in.read(chunk.data(), std::streamsize(kChunk));
+    chunk.resize(size_t(in.gcount()));
+    if (chunk.empty()) break;
+    buf += chunk;
+    open_nodes = open_nodes || buf.find("\n$Nodes") != std::string::npos;
+    open_elements = open_elements || buf.find("\n$Elements") != std::string::npos;
+    end_nodes = end_nodes || buf.find("\n$EndNodes") != std::string::npos;
+    end_elements = end_elements || buf.find("\n$EndElements") != std::string::npos;
+    for (const char* marker : {"\n$Nodes\n", "\n$Elements\n"}) {
+      for (size_t at = buf.find(marker); at != std::string::npos; at = buf.find(marker, at + 1)) {
+        const size_t after = at + std::strlen(marker);
+        if (after + 64 > buf.size() && in) continue;  // read more first (found again next round)
+        uint64_t count = 0;
+        if (raw_counts) {  // numEntityBlocks, then the count
+          if (after + 16 > buf.size()) throw InputError(path, marker + 1, "file ends inside the section header");
+          std::memcpy(&count, buf.data() + after + 8, 8);
+        } else {
+          std::istringstream line(buf.substr(after, 64));
+          uint64_t first = 0;
+          if (!(line >> first)) throw InputError(path, std::string(marker + 2, std::strlen(marker) - 3), "the count is not a number");
+          count = first;
+          if (version >= 4 && !(line >> count))  // numEntityBlocks count ...
+            throw InputError(path, std::string(marker + 2, std::strlen(marker) - 3), "expected 'blocks count min max'");
+        }
+        const uintmax_t left = size - (base + after);
+        if (count > left / 2)
+          throw InputError(path, std::string(marker + 2, std::strlen(marker) - 3),
+                           "declares " + std::to_string(count) + " entries but only " + std::to_string(left) +
+                               " bytes follow");
+      }
+    }
+    if (!in) break;
+    // Keep a tail that can hold a marker and its header; drop the rest.
+    const size_t keep = std::min(buf.size(), size_t(96));
+    base += buf.size() - keep;
+    buf.erase(0, buf.size() - keep);
+  }
+  // gmsh accepts a file cut inside the closing tag; a cut file is refused here.
+  if (open_nodes && !end_nodes) throw InputError(path, "Nodes", "no $EndNodes: the file ends inside the section");
+  if (open_elements && !end_elements)
+    throw InputError(path, "Elements", "no $EndElements: the file ends inside the section");
+}
+
+}  // namespace vob

@@ -1,0 +1,149 @@
+#include "datasets/io/ply_prescan.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+namespace {
+struct Property {
+  int size = 0;        // bytes of a scalar, or of each list item
+  int count_size = 0;  // lists: bytes of the count (0: not a list)
+  bool count_signed = false;
+};
+struct Element {
+  std::string name;
+  long long count = 0;
+  std::vector<Property> props;
+};
+
+int type_size(const std::string& t, bool* is_signed = nullptr) {
+  static const std::map<std::string, std::pair<int, bool>> sizes{
+      {"char", {1, true}},    {"int8", {1, true}},     {"uchar", {1, false}},  {"uint8", {1, false}},
+      {"short", {2, true}},   {"int16", {2, true}},    {"ushort", {2, false}}, {"uint16", {2, false}},
+      {"int", {4, true}},     {"int32", {4, true}},    {"uint", {4, false}},   {"uint32", {4, false}},
+      {"float", {4, true}},   {"float32", {4, true}},  {"double", {8, true}},  {"float64", {8, true}}};
+  const auto it = sizes.find(t);
+  if (it == sizes.end()) return 0;
+  if (is_signed) *is_signed = it->second.second;
+  return it->second.first;
+}
+}  // namespace
+
+void prescan_ply(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || (line != "ply" && line != "ply\r"))
+    throw InputError(path, "header", "does not start with the line 'ply' (not a PLY file)");
+  std::string format;
+  std::vector<Element> elements;
+  for (int n = 1;; ++n) {
+    if (!std::getline(in, line)) throw InputError(path, "header", "no end_header line");
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream ls(line);
+    std::string key;
+    ls >> key;
+    if (key == "end_header") break;
+    if (key == "comment" || key == "obj_info" || key.empty()) continue;
+    const std::string where = "header line " + std::to_string(n + 1);
+    if (key == "format") {
+      ls >> format;
+      if (format != "ascii" && format != "binary_little_endian" && format != "binary_big_endian")
+        throw InputError(path, where, "format '" + format + "' is not ascii or binary_*_endian");
+    } else if (key == "element") {
+      Element e;
+      if (!(ls >> e.name >> e.count) || e.count < 0) throw InputError(path, where, "expected 'element NAME COUNT'");
+      elements.push_back(e);
+    } else if (key == "property") {
+      if (elements.empty()) throw InputError(path, where, "property before any element");
+      std::string t;
+      ls >> t;
+      Property p;
+      if (t == "list") {
+        std::string ct, it;
+        ls >> ct >> it;
+        p.count_size = type_size(ct, &p.count_signed);
+        p.size = type_size(it);
+        if (!p.count_size || !p.size) throw InputError(path, where, "unknown list types '" + ct + " " + it + "'");
+      } else if (!(p.size = type_size(t))) {
+        throw InputError(path, where, "unknown property type '" + t + "'");
+      }
+      elements.back().props.push_back(p);
+    } else {
+      throw InputError(path, where, "unknown keyword '" + key + "'");
+    }
+  }
+  if (format.empty()) throw InputError(path, "header", "no format line");
+  const std::streamoff start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streamoff bytes = in.tellg() - start;
+  in.seekg(start);
+  for (const Element& e : elements)  // every instance takes at least a byte: no huge loops
+    if (e.count > bytes) throw InputError(path, "element " + e.name, std::to_string(e.count) + " instances do not fit in the file");
+  const bool ascii = format == "ascii";
+  const bool swap = format == "binary_big_endian";  // hosts here are little endian
+  if (ascii) {
+    // VTK reads an ASCII element instance as one line of words: each line must hold exactly
+    // the instance's numbers (a list: its count, then that many).
+    std::string text;
+    for (const Element& e : elements)
+      for (long long i = 0; i < e.count; ++i) {
+        const std::string where = e.name + " " + std::to_string(i);
+        do {
+          if (!std::getline(in, text)) throw InputError(path, where, "file ends early");
+        } while (text.find_first_not_of(" \t\r") == std::string::npos);
+        std::istringstream words(text);
+        std::string token;
+        auto number = [&]() {
+          if (!(words >> token)) throw InputError(path, where, "line has too few numbers");
+          char* end = nullptr;
+          const double v = std::strtod(token.c_str(), &end);
+          if (*end != '\0' || !std::isfinite(v)) throw InputError(path, where, "'" + token + "' is not a finite number");
+          return v;
+        };
+        for (const Property& p : e.props) {
+          double n = 1;
+          if (p.count_size) {
+            n = number();
+            if (n < 0 || n != std::floor(n) || n > double(bytes))
+              throw InputError(path, where, "list count '" + token + "' is not a valid count");
+          }
+          for (long long k = 0; k < static_cast<long long>(n); ++k) number();
+        }
+        if (words >> token) throw InputError(path, where, "line has more numbers than the header declares");
+      }
+    return;
+  }
+  std::vector<char> buf(8);
+  auto binary_count = [&](const Property& p, const std::string& where) -> long long {
+    if (!in.read(buf.data(), p.count_size)) throw InputError(path, where, "file ends early");
+    unsigned char b[4] = {0, 0, 0, 0};
+    for (int i = 0; i < p.count_size; ++i) b[i] = static_cast<unsigned char>(buf[swap ? p.count_size - 1 - i : i]);
+    const uint32_t u = uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
+    if (p.count_signed && (b[p.count_size - 1] & 0x80)) return -1;
+    return static_cast<long long>(u);
+  };
+  for (const Element& e : elements)
+    for (long long i = 0; i < e.count; ++i) {
+      const std::string where = e.name + " " + std::to_string(i);
+      for (const Property& p : e.props) {
+        long long n = 1;
+        if (p.count_size) {
+          n = binary_count(p, where);
+          if (n < 0 || n > bytes) throw InputError(path, where, "list count " + std::to_string(n) + " is not a valid count");
+        }
+        if (!in.seekg(n * p.size, std::ios::cur) || in.tellg() - start > bytes)
+          throw InputError(path, where, "file ends early");
+      }
+    }
+}
+
+}  // namespace vob
