@@ -8,6 +8,7 @@
 #include <map>
 
 #include "datasets/datasets.h"
+#include "datasets/io/subprocess.h"  // last_line_of
 #include "harness/bench/registry.h"
 #include "harness/bench/sorter_answer.h"
 #include "harness/bench/sorter_process.h"
@@ -25,14 +26,6 @@ const char* scene_file_extension(SceneKind k) {
     case SceneKind::Voxels: return ".vti";
   }
   return "";
-}
-
-std::string last_line_of(const std::string& path) {
-  std::ifstream in(path);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  return last;
 }
 
 class ExternalOrderer final : public Orderer {
