@@ -3,6 +3,7 @@
 #pragma once
 #include <stdlib.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdio>
 
@@ -79,6 +80,19 @@ inline CommandOutput run_command(const std::string& cmd) {
   while ((n = fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
   const int status = pclose(p);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// The program under test (`binary`, the tests' VOB_BINARY) run with `args`, its stdout and
+// stderr together, as a user at a terminal sees them.
+inline CommandOutput run_vobench(const std::string& binary, const std::string& args) {
+  return run_command(binary + " " + args + " 2>&1");
+}
+
+// `name` in a folder of this test process, temp/PREFIX_PID (created; kept for inspection).
+inline std::filesystem::path scratch_path(const std::string& prefix, const std::string& name) {
+  const std::filesystem::path d = std::filesystem::temp_directory_path() / (prefix + "_" + std::to_string(getpid()));
+  std::filesystem::create_directories(d);
+  return d / name;
 }
 
 // A fresh folder under the system temp dir, removed at scope exit.

@@ -14,21 +14,10 @@
 namespace fs = std::filesystem;
 
 namespace {
-struct Outcome {
-  int code;
-  std::string out;  // stdout and stderr together
-};
+using Outcome = vob::test::CommandOutput;  // stdout and stderr together
+Outcome vobench(const std::string& args) { return vob::test::run_vobench(VOB_BINARY, args); }
 
-Outcome vobench(const std::string& args) {
-  const vob::test::CommandOutput r = vob::test::run_command(std::string(VOB_BINARY) + " " + args + " 2>&1");
-  return {r.code, r.out};
-}
-
-fs::path scratch(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("vobench_cli_" + std::to_string(getpid()));
-  fs::create_directories(d);
-  return d / name;
-}
+fs::path scratch(const std::string& name) { return vob::test::scratch_path("vobench_cli", name); }
 
 void write(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;

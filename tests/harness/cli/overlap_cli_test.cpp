@@ -34,11 +34,7 @@ Outcome vobench(const std::string& args) {
   return {r.code, r.out, e};
 }
 
-fs::path scratch(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("vobench_overlap_" + std::to_string(getpid()));
-  fs::create_directories(d);
-  return d / name;
-}
+fs::path scratch(const std::string& name) { return vob::test::scratch_path("vobench_overlap", name); }
 
 const std::string kGmsh = std::string(VOB_TEST_DATA) + "/two_boxes.vtk";
 

@@ -26,11 +26,7 @@
 namespace fs = std::filesystem;
 
 namespace {
-fs::path scratch(const std::string& name) {
-  fs::path d = fs::temp_directory_path() / ("vobench_paraview_" + std::to_string(getpid()));
-  fs::create_directories(d);
-  return d / name;
-}
+fs::path scratch(const std::string& name) { return vob::test::scratch_path("vobench_paraview", name); }
 
 vob::test::CommandOutput vobench(const std::string& args) {
   return vob::test::run_command(std::string(VOB_BINARY) + " " + args + " 2>&1");

@@ -13,21 +13,10 @@
 namespace fs = std::filesystem;
 
 namespace {
-struct Outcome {
-  int code;
-  std::string out;  // stdout and stderr together
-};
+using Outcome = vob::test::CommandOutput;  // stdout and stderr together
+Outcome vobench(const std::string& args) { return vob::test::run_vobench(VOB_BINARY, args); }
 
-Outcome vobench(const std::string& args) {
-  const vob::test::CommandOutput r = vob::test::run_command(std::string(VOB_BINARY) + " " + args + " 2>&1");
-  return {r.code, r.out};
-}
-
-fs::path scratch(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("vobench_progress_cli_" + std::to_string(getpid()));
-  fs::create_directories(d);
-  return d / name;
-}
+fs::path scratch(const std::string& name) { return vob::test::scratch_path("vobench_progress_cli", name); }
 
 std::vector<std::string> lines_starting(const std::string& out, const std::string& prefix) {
   std::vector<std::string> v;

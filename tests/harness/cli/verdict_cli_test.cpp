@@ -15,14 +15,8 @@
 namespace fs = std::filesystem;
 
 namespace {
-struct Outcome {
-  int code;
-  std::string out;
-};
-Outcome vobench(const std::string& args) {
-  const vob::test::CommandOutput r = vob::test::run_command(std::string(VOB_BINARY) + " " + args + " 2>&1");
-  return {r.code, r.out};
-}
+using Outcome = vob::test::CommandOutput;  // stdout and stderr together
+Outcome vobench(const std::string& args) { return vob::test::run_vobench(VOB_BINARY, args); }
 nlohmann::json json_of(const Outcome& r) { return nlohmann::json::parse(r.out.substr(r.out.find('{'))); }
 
 const char* kTinyConvex = "--dataset gap --set nx=3 --set ny=3 --set nz=3 --set gaps=0";
