@@ -17,7 +17,7 @@ void ConsoleReporter::record(const Record& rec, bool written) const {
     line << "  " << rec.key.substr(rec.key.find('|') + 1) << ": ";
   else
     line << "  " << rec.algorithm << " on " << rec.dataset << " view " << rec.view_index << " " << rec.w
-         << "x" << rec.h << ": ";
+         << "x" << rec.h << " t" << rec.threads << ": ";
   if (!written) {
     line << "another run wrote this record meanwhile; kept theirs";
   } else if (!rec.probe.empty()) {

@@ -6,8 +6,6 @@
 #include <filesystem>
 #include <optional>
 
-#include <tbb/global_control.h>
-
 #include "datasets/datasets.h"
 #include "harness/bench/results.h"
 
@@ -191,10 +189,6 @@ PlannedDataset plan_made(const SuiteSpec& suite, const std::string& label, const
 }
 
 RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords& known) {
-  // Keys name the threads a run uses (jobs.h): plan under the suite's limit as run_suite does,
-  // so a dry run or a reproduction's count sees the keys the run will write.
-  std::optional<tbb::global_control> threads;
-  if (suite.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, suite.threads);
   RunPlan plan;
   const auto add = [&](PlannedDataset& pd, const Job& j) { pd.jobs.push_back(planned(suite, j, pd.primitives, known)); };
   for (const DatasetPlan& dp : plan_datasets(suite)) {
@@ -216,7 +210,8 @@ RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords
     plan.datasets.push_back(std::move(pd));
   }
   PlannedDataset sceneless;
-  for (const ProbeSpec* p : sceneless_probes(suite)) add(sceneless, sceneless_job(suite, *p, tags));
+  for (const ProbeSpec* p : sceneless_probes(suite))
+    for (const Job& j : sceneless_jobs(suite, *p, tags)) add(sceneless, j);
   if (!sceneless.jobs.empty()) plan.datasets.push_back(std::move(sceneless));
   return plan;
 }

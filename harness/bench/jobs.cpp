@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <tbb/global_control.h>
 
@@ -37,6 +38,24 @@ std::string RunTags::suite_name(const SuiteSpec& s) const {
 int run_threads() {
   return static_cast<int>(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
 }
+
+int effective_threads(int threads) {
+  std::optional<tbb::global_control> limit;
+  if (threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, threads);
+  return run_threads();
+}
+
+namespace {
+// The suite's thread counts as (entry, effective count), the first of equal effective counts.
+std::vector<std::pair<int, int>> thread_counts(const SuiteSpec& suite) {
+  std::vector<std::pair<int, int>> out;
+  for (int t : suite.threads) {
+    const int e = effective_threads(t);
+    if (std::none_of(out.begin(), out.end(), [&](const auto& p) { return p.second == e; })) out.emplace_back(t, e);
+  }
+  return out;
+}
+}  // namespace
 
 std::string settings_key(int repeats, int warmup, int threads) {
   return "|r" + std::to_string(repeats) + "w" + std::to_string(warmup) + "|t" + std::to_string(threads);
@@ -106,40 +125,51 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
   // Every setting that changes an orderer record (docs/pipeline.md "Jobs and keys").
   const std::string settings = "|r" + std::to_string(suite.repeats) + "w" + std::to_string(suite.warmup) +
                                (suite.oracle ? "|oracle" : "|nooracle") + "|ss" +
-                               std::to_string(suite.supersample) + (suite.image_error ? "|imgerr" : "") +
-                               "|t" + std::to_string(run_threads());
+                               std::to_string(suite.supersample) + (suite.image_error ? "|imgerr" : "");
+  const auto counts = thread_counts(suite);
+  // Per spec, its thread counts one after the other: their times are side by side in time too.
   if (plan.orderers)
     for (const auto& spec : algorithms_for(suite.algorithms, scene.kind()))
-      for (const auto& [w, h] : suite.sizes)
-        for (const auto& [vi, cam] : suite_views(suite, plan.dataset, scene, w, h)) {
-          Job j;
-          j.spec = spec;
-          // A fitted window has the camera's size; the key keeps the suite's W x H.
-          j.w = cam.width, j.h = cam.height, j.view_index = vi, j.camera = cam;
-          j.key = scope + "|" + spec + "|" + label + view_set + std::to_string(vi) + "/" +
-                  std::to_string(suite.views) + "|" + size_text(w, h) + settings + (suite.ortho ? "|ortho" : "") +
-                  (suite.zoom != 1.0 ? "|zoom" + std::to_string(suite.zoom) : "") +
-                  (suite.fit ? "|fit" : "") + tags.key_suffix();
-          jobs.push_back(std::move(j));
-        }
-  for (const ProbeSpec* p : plan.probes) {
+      for (const auto& [t, effective] : counts)
+        for (const auto& [w, h] : suite.sizes)
+          for (const auto& [vi, cam] : suite_views(suite, plan.dataset, scene, w, h)) {
+            Job j;
+            j.spec = spec;
+            j.threads = t;
+            // A fitted window has the camera's size; the key keeps the suite's W x H.
+            j.w = cam.width, j.h = cam.height, j.view_index = vi, j.camera = cam;
+            j.key = scope + "|" + spec + "|" + label + view_set + std::to_string(vi) + "/" +
+                    std::to_string(suite.views) + "|" + size_text(w, h) + settings + "|t" +
+                    std::to_string(effective) + (suite.ortho ? "|ortho" : "") +
+                    (suite.zoom != 1.0 ? "|zoom" + std::to_string(suite.zoom) : "") + (suite.fit ? "|fit" : "") +
+                    tags.key_suffix();
+            jobs.push_back(std::move(j));
+          }
+  for (const ProbeSpec* p : plan.probes)
+    for (const auto& [t, effective] : counts) {
+      Job j;
+      j.kind = Job::Kind::Probe;
+      j.probe = p;
+      j.threads = t;
+      j.key = scope + "|" + p->label() + "|" + label + settings_key(p->repeats, p->warmup, effective) +
+              tags.key_suffix();
+      jobs.push_back(std::move(j));
+    }
+  return jobs;
+}
+
+std::vector<Job> sceneless_jobs(const SuiteSpec& suite, const ProbeSpec& probe, const RunTags& tags) {
+  std::vector<Job> jobs;
+  for (const auto& [t, effective] : thread_counts(suite)) {
     Job j;
     j.kind = Job::Kind::Probe;
-    j.probe = p;
-    j.key = scope + "|" + p->label() + "|" + label + settings_key(p->repeats, p->warmup, run_threads()) +
+    j.probe = &probe;
+    j.threads = t;
+    j.key = tags.suite_name(suite) + "|" + probe.label() + "|" + settings_key(probe.repeats, probe.warmup, effective) +
             tags.key_suffix();
     jobs.push_back(std::move(j));
   }
   return jobs;
-}
-
-Job sceneless_job(const SuiteSpec& suite, const ProbeSpec& probe, const RunTags& tags) {
-  Job j;
-  j.kind = Job::Kind::Probe;
-  j.probe = &probe;
-  j.key = tags.suite_name(suite) + "|" + probe.label() + "|" + settings_key(probe.repeats, probe.warmup, run_threads()) +
-          tags.key_suffix();
-  return j;
 }
 
 std::vector<std::pair<int, Camera>> dataset_views(const DatasetSpec& spec, const Scene& scene,

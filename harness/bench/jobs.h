@@ -20,8 +20,11 @@ struct RunTags {
   std::string key_suffix() const;                    // "" or "|tiny", "|full"
 };
 
-// The TBB parallelism in effect now (the suite's `threads` once the runner set it).
+// The TBB parallelism in effect now (the job's thread count once the runner set it).
 int run_threads();
+// The parallelism a job with thread count `threads` (a suite entry; 0: all cores) gets under
+// the limits in effect now (e.g. `--threads`): what its key and record say.
+int effective_threads(int threads);
 // "|rRwW|tT": the timing settings of a probe key (orderer keys add oracle, ss, imgerr).
 std::string settings_key(int repeats, int warmup, int threads);
 
@@ -31,6 +34,7 @@ struct Job {
   std::string spec;               // orderer spec ("havs:k=6"); empty for a probe
   const ProbeSpec* probe = nullptr;
   int w = 0, h = 0, view_index = 0;
+  int threads = 0;                // the suite's entry the job runs under (0: all cores)
   Camera camera;
 };
 
@@ -45,10 +49,11 @@ std::vector<DatasetPlan> plan_datasets(const SuiteSpec& suite);
 // Probe units without a scene (run once each, after the datasets).
 std::vector<const ProbeSpec*> sceneless_probes(const SuiteSpec& suite);
 
-// The jobs of one plan on its scene: per orderer spec, per size, per view; then the probes.
+// The jobs of one plan on its scene: per orderer spec, per thread count, per size, per view;
+// then the probes, per thread count. Thread counts with the same effective value run once.
 std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, const Scene& scene,
                               const RunTags& tags);
-Job sceneless_job(const SuiteSpec& suite, const ProbeSpec& probe, const RunTags& tags);
+std::vector<Job> sceneless_jobs(const SuiteSpec& suite, const ProbeSpec& probe, const RunTags& tags);
 
 // The suite's views of a dataset at w x h: its view_directions, the frames of its orbit
 // (all, spread or listed indices), or the dataset's own cameras

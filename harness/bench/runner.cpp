@@ -26,12 +26,36 @@ Record base_record(const SuiteSpec& suite, const RunOptions& opt, const std::str
   r.suite = opt.tags.suite_name(suite);
   r.repeats = suite.repeats;
   r.warmup = suite.warmup;
-  r.threads = run_threads();
+  r.threads = run_threads();  // each job's record sets its own (with_threads)
   r.reproduction = opt.tags.reproduction;
   r.paper = opt.tags.paper;
   r.scale = opt.tags.scale;
   r.run_id = run_id;
   return r;
+}
+
+// The run's TBB limit, changed only when a job's thread count differs from the last one's.
+class ThreadLimit {
+ public:
+  void set(int threads) {
+    if (threads == current_) return;
+    control_.reset();
+    if (threads > 0) control_.emplace(tbb::global_control::max_allowed_parallelism, threads);
+    current_ = threads;
+  }
+
+ private:
+  std::optional<tbb::global_control> control_;
+  int current_ = 0;
+};
+
+// The run's context: the parallelism of every thread count of the suite.
+nlohmann::json suite_context(const SuiteSpec& suite) {
+  nlohmann::json counts = nlohmann::json::array();
+  for (int t : suite.threads) counts.push_back(effective_threads(t));
+  nlohmann::json c = run_context(counts[0].get<int>());
+  if (counts.size() > 1) c["thread_counts"] = counts;
+  return c;
 }
 
 Scene make_checked_scene(const DatasetSpec& ds, bool validate_full) {
@@ -48,10 +72,9 @@ Scene make_checked_scene(const DatasetSpec& ds, bool validate_full) {
 RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
   namespace fs = std::filesystem;
   RunSummary summary;
-  std::optional<tbb::global_control> threads;
-  if (suite.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, suite.threads);
+  ThreadLimit limit;
   const std::string run_id = new_run_id();
-  ResultsReporter results(opt.results_path, context_line(run_id, run_context(run_threads())));
+  ResultsReporter results(opt.results_path, context_line(run_id, suite_context(suite)));
   const std::string image_dir =
       !opt.image_dir.empty() ? opt.image_dir : (fs::path(opt.results_path).parent_path() / "images").string();
   const ImageReporter images(suite, image_dir, fs::path(opt.results_path).parent_path().string());
@@ -94,6 +117,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     tracker.replace(planned.datasets[di].jobs.size(), planned.datasets[di].cost_to_do(), made.jobs.size(),
                     made.cost_to_do());
     std::unique_ptr<PreparedOrderer> prepared;  // of the current spec, once a record is missing
+    int prepared_threads = -1;                  // the thread count it was prepared under
     for (const Job& job : jobs) {
       if (stop()) return summary;
       if (results.done(job.key)) {
@@ -101,35 +125,43 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
         tracker.skipped(known.keys.count(job.key) ? 0 : job_cost(suite, job, primitives));
         continue;
       }
+      limit.set(job.threads);
+      Record job_base = dataset_base;
+      job_base.threads = run_threads();
       if (job.kind == Job::Kind::Probe) {
-        Record rec = run_probe_job(job, &scene, suite, &plan.dataset, dataset_base, image_dir, opt.progress);
+        Record rec = run_probe_job(job, &scene, suite, &plan.dataset, job_base, image_dir, opt.progress);
         tracker.finished(job_cost(suite, job, primitives));
         report(rec);
         continue;
       }
-      if (!prepared || prepared->spec != job.spec) {
+      // Prepared again per thread count: prepare is timed too, and may run in parallel.
+      if (!prepared || prepared->spec != job.spec || prepared_threads != job.threads) {
         prepared.reset();  // the previous orderer's memory goes first
         prepared = std::make_unique<PreparedOrderer>(prepare_orderer(job.spec, scene));
+        prepared_threads = job.threads;
       }
-      Measurement m = measure_orderer_job(job, *prepared, scene, suite, dataset_base);
+      Measurement m = measure_orderer_job(job, *prepared, scene, suite, job_base);
       if (m.violated) ++summary.violations;
       images.report(m, scene, job.camera);
       tracker.finished(job_cost(suite, job, primitives));
       report(m.record);
     }
   }
-  for (const ProbeSpec* probe : sceneless_probes(suite)) {
-    const Job job = sceneless_job(suite, *probe, opt.tags);
-    if (stop()) return summary;
-    if (results.done(job.key)) {
-      ++summary.skipped;
-      tracker.skipped(known.keys.count(job.key) ? 0 : job_cost(suite, job, 0));
-      continue;
+  for (const ProbeSpec* probe : sceneless_probes(suite))
+    for (const Job& job : sceneless_jobs(suite, *probe, opt.tags)) {
+      if (stop()) return summary;
+      if (results.done(job.key)) {
+        ++summary.skipped;
+        tracker.skipped(known.keys.count(job.key) ? 0 : job_cost(suite, job, 0));
+        continue;
+      }
+      limit.set(job.threads);
+      Record job_base = base;
+      job_base.threads = run_threads();
+      Record rec = run_probe_job(job, nullptr, suite, nullptr, job_base, image_dir, opt.progress);
+      tracker.finished(job_cost(suite, job, 0));
+      report(rec);
     }
-    Record rec = run_probe_job(job, nullptr, suite, nullptr, base, image_dir, opt.progress);
-    tracker.finished(job_cost(suite, job, 0));
-    report(rec);
-  }
   return summary;
 }
 

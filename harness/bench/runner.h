@@ -37,8 +37,8 @@ struct RunSummary {
 };
 // Every record is appended to the results file as soon as it is finished (see
 // harness/bench/results.h). An unwritable results file or image folder is reported
-// (InputError) before any scene is made. The suite runs with at most suite.threads TBB
-// threads when it sets them.
+// (InputError) before any scene is made. Each job runs under its thread count (a TBB
+// global_control; the suite's `threads` list), inside any limit the caller set.
 RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt);
 
 }  // namespace vob

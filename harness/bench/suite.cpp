@@ -353,6 +353,18 @@ void read_views(const SuiteReader& r, const nlohmann::json& j, SuiteSpec& s) {
     }
   }
 }
+// "threads": N or [N, ...] (0: all cores), no count twice.
+std::vector<int> read_threads(const SuiteReader& r, const nlohmann::json& t) {
+  if (!t.is_array()) return {r.integer(t, "threads", 0, kMaxThreads)};
+  if (t.empty()) r.fail("threads", "must list at least one thread count");
+  std::vector<int> out;
+  for (size_t i = 0; i < t.size(); ++i) {
+    const int n = r.integer(t[i], "threads[" + std::to_string(i) + "]", 0, kMaxThreads);
+    if (std::count(out.begin(), out.end(), n)) r.fail("threads[" + std::to_string(i) + "]", "repeats " + std::to_string(n));
+    out.push_back(n);
+  }
+  return out;
+}
 }  // namespace
 
 SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& source) {
@@ -388,7 +400,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
       for (auto& p : read_probe(r, probes[i], "probes[" + std::to_string(i) + "]", s)) s.probes.push_back(std::move(p));
   }
   read_views(r, j, s);
-  if (j.contains("threads")) s.threads = r.integer(j["threads"], "threads", 1, kMaxThreads);
+  if (j.contains("threads")) s.threads = read_threads(r, j["threads"]);
   if (j.contains("oracle")) s.oracle = r.boolean(j["oracle"], "oracle");
   if (j.contains("supersample")) s.supersample = r.integer(j["supersample"], "supersample", 1, 16);
   if (j.contains("image_error")) s.image_error = r.boolean(j["image_error"], "image_error");

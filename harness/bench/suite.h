@@ -10,7 +10,7 @@
 //    "views": 14, "view_indices": [0, 3] | "spread_views": 3 | "view_directions": [...],
 //    "orbit": false,
 //    "ortho": false, "zoom": 1, "fit": false, "sizes": ["512x512"], "repeats": 3, "warmup": 1,
-//    "threads": 1, "oracle": true, "supersample": 1, "image_error": true,
+//    "threads": 1 | [1, 0], "oracle": true, "supersample": 1, "image_error": true,
 //    "image_views": [0], "images_of_violations": false, "exterior_area": true}
 #pragma once
 #include <map>
@@ -66,7 +66,9 @@ struct SuiteSpec {
   bool fit = false;               // each view's window fitted to the box at W*H pixels (fit.h)
   std::vector<std::pair<int, int>> sizes{{512, 512}};
   int repeats = 3, warmup = 1;
-  int threads = 0;                // TBB parallelism; 0: all cores
+  // TBB parallelism per measurement, each job run once per entry (0: all cores); keys and
+  // records carry the count in effect. `--threads N` replaces the list with {N}.
+  std::vector<int> threads{0};
   bool oracle = true;
   int supersample = 1;
   bool image_error = false;

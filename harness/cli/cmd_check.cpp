@@ -23,6 +23,7 @@
 #include "harness/cli/commands.h"
 #include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
+#include "harness/cli/thread_option.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/input_error.h"
 
@@ -82,7 +83,10 @@ Command add_check_command(CLI::App& app) {
                   "pass (exit 0) when every view's image RMSE against the exact composite is at most X")
       ->check(number_in(0, 1e9, false, false));
   cmd->add_option("--junit", *junit, "write JUnit XML here: one test case per view, the counts in its message");
+  auto threads = std::make_shared<ThreadOption>();
+  threads->add_to(*cmd);
   return [=]() {
+    const auto limit = threads->limit();
     const int sources = !algorithm->empty() + !order_path->empty() + !command->empty();
     if (sources != 1)
       throw InputError("--algorithm/--order/--command", "orderings", "give exactly one of --algorithm NAME, --order FILE or --command \"CMD ARGS\"");
@@ -123,6 +127,7 @@ Command add_check_command(CLI::App& app) {
     nlohmann::json out{{"algorithm", label}, {"dataset", spec.to_json()},
                        {"judged", p.orderer->claims().composites ? "composited" : "order"},
                        {"primitives", scene.num_primitives()}, {"supersample", *supersample},
+                       {"threads", run_threads()},
                        {"views", nlohmann::json::array()}};
     if (file) out["order_file"] = file->path;
     if (!command->empty()) out["command"] = *command;
@@ -226,9 +231,9 @@ Command add_check_command(CLI::App& app) {
     if (*json)
       std::cout << out.dump(2) << "\n";
     else {
-      std::printf("%s: %d of %zu views with violations (%s, %zu %s)\n", label.c_str(), failing,
+      std::printf("%s: %d of %zu views with violations (%s, %zu %s, %d threads)\n", label.c_str(), failing,
                   cams.size(), spec.label().c_str(), scene.num_primitives(),
-                  scene_kind_name(scene.kind()));
+                  scene_kind_name(scene.kind()), run_threads());
       if (gated) std::printf("%s\n", gate_line.c_str());
     }
     return passed ? 0 : 1;

@@ -9,6 +9,7 @@
 #include "harness/cli/commands.h"
 #include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
+#include "harness/cli/thread_option.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -29,7 +30,10 @@ Command add_order_command(CLI::App& app) {
   cmd->add_option("--vtu", *vtu,
                   "also write the cell mesh as OUT.vtu for ParaView with cell arrays order_rank, "
                   "violating_fragments (the oracle on this order at this view) and in_cycle");
+  auto threads = std::make_shared<ThreadOption>();
+  threads->add_to(*cmd);
   return [=]() {
+    const auto limit = threads->limit();
     const DatasetSpec spec = scene_args->spec();
     view_args->validate(spec);
     if (!view_args->explicit_camera() && view_args->view_index < 0)
@@ -49,6 +53,7 @@ Command add_order_command(CLI::App& app) {
     j["primitives"] = scene.num_primitives();
     j["camera"] = cam.to_json();
     j["view_index"] = cams[0].first;
+    j["threads"] = run_threads();
     j["order"] = m.ordering.order;
     j["cycles"] = {{"count", m.ordering.cycles.cycles}, {"primitives", m.ordering.cycles.primitives}};
     nlohmann::json prep = nlohmann::json::object(), phases = nlohmann::json::object();
@@ -71,7 +76,8 @@ Command add_order_command(CLI::App& app) {
     }
     write_file_atomically(*out, j.dump() + "\n");
     std::cerr << "wrote " << *out << ": " << m.ordering.order.size() << " "
-              << scene_kind_name(scene.kind()) << ", " << m.total_median() * 1e3 << " ms\n";
+              << scene_kind_name(scene.kind()) << ", " << m.total_median() * 1e3 << " ms, " << run_threads()
+              << " threads\n";
     return 0;
   };
 }

@@ -13,6 +13,7 @@
 #include "harness/cli/python_script.h"
 #include "harness/cli/reproduce.h"
 #include "harness/cli/stop_signals.h"
+#include "harness/cli/thread_option.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -57,7 +58,10 @@ Command add_reproduce_command(CLI::App& app) {
                   "jsonl (default); gbench: also Google Benchmark's JSON of the folder's records "
                   "(DIR/results.gbench.json)")
       ->check(CLI::IsMember({"jsonl", "gbench"}));
+  auto threads = std::make_shared<ThreadOption>();
+  threads->add_to(*cmd);
   return [=]() {
+    const auto limit = threads->limit();
     // Google Benchmark's JSON of the finished folder, beside its results.jsonl.
     const auto with_format = [=](int status, const std::string& folder) {
       if (status != 0 || *format != "gbench") return status;
@@ -78,6 +82,7 @@ Command add_reproduce_command(CLI::App& app) {
       std::vector<Reproduction> reps;  // every file validated before any work
       for (const auto& e : list_reproductions(suites_dir)) {
         Reproduction rep = load_reproduction(e.path, scale, suites_dir);
+        threads->apply(rep);
         if (!rep.paper.empty()) reps.push_back(std::move(rep));
       }
       if (*dry_run) {
@@ -90,7 +95,8 @@ Command add_reproduce_command(CLI::App& app) {
     }
     const std::string path = find_reproduction(suites_dir, *name);
     if (path.empty()) unknown_reproduction(*name, suites_dir);
-    const Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
+    Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
+    threads->apply(rep);
     if (*dry_run) {
       dry_run_reproductions({rep}, out, *force);
       return 0;

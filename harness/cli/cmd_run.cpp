@@ -10,6 +10,7 @@
 #include "harness/cli/python_script.h"
 #include "harness/scene/input_error.h"
 #include "harness/cli/stop_signals.h"
+#include "harness/cli/thread_option.h"
 
 namespace vob {
 
@@ -35,8 +36,12 @@ Command add_run_command(CLI::App& app) {
   cmd->add_flag("--dry-run", *dry_run,
                 "list the jobs (done ones marked) with their estimated cost and exit; makes no scene, "
                 "writes nothing");
+  auto threads = std::make_shared<ThreadOption>();
+  threads->add_to(*cmd);
   return [=]() {
-    const SuiteSpec s = SuiteSpec::load(*suite);
+    SuiteSpec s = SuiteSpec::load(*suite);
+    threads->apply(s);
+    const auto limit = threads->limit();
     std::error_code ec;
     if (std::filesystem::exists(*out, ec) && !std::filesystem::is_regular_file(*out, ec))
       throw InputError("--output", "'" + *out + "'", "exists and is not a results file");

@@ -37,7 +37,8 @@ def _save(fig, out):
 
 
 def label(row, revisions):
-    return (row["algorithm"] + (f" @ {row['revision']}" if len(revisions) > 1 else "")
+    return (row["algorithm"] + (f" ({row['threads']} threads)" if row.get("multi_threads") else "")
+            + (f" @ {row['revision']}" if len(revisions) > 1 else "")
             + (f" [run {row['run']}]" if row.get("run") else ""))
 
 

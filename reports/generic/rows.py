@@ -71,10 +71,16 @@ def verdict_text(row):
     return text
 
 
+def algo_key(r):
+    """An orderer measured under several thread counts (a suite's "threads": [1, 0]) gets a
+    row per count: (spec, threads)."""
+    return (r["algorithm"], r.get("threads"))
+
+
 def summarise(recs):
     groups = collections.OrderedDict()
     for r in recs:
-        groups.setdefault((scene_key(r), revision(r), r["algorithm"]), []).append(r)
+        groups.setdefault((scene_key(r), revision(r), algo_key(r)), []).append(r)
     # Runs that measured the same view again (a rerun with other settings, two files merged)
     # get a row each; runs that complete each other (a resumed run) share one.
     split = collections.OrderedDict()
@@ -88,7 +94,7 @@ def summarise(recs):
         else:
             split[(scene, rev, algo, None)] = rs
     rows = []
-    for (scene, rev, algo, run), rs in split.items():
+    for (scene, rev, (algo, threads), run), rs in split.items():
         times = [r["total"]["median"] for r in rs]
         chk = [r for r in rs if checked(r)]
         errs = [e for e in (error_fraction(r) for r in chk) if e is not None]
@@ -101,7 +107,8 @@ def summarise(recs):
         rows.append({
             "scene": scene, "dataset": rs[0]["dataset"], "dataset_spec": rs[0].get("dataset_spec"),
             "w": rs[0]["w"], "h": rs[0]["h"], "revision": rev,
-            "runs": sorted({run_of(r) for r in rs}), "run": run, "algorithm": algo, "n": rs[0]["n"],
+            "runs": sorted({run_of(r) for r in rs}), "run": run, "algorithm": algo, "threads": threads,
+            "n": rs[0]["n"],
             "b": rs[0].get("b"), "views": len(rs),
             "repeated_views": sum(1 for c in views.values() if c > 1),
             "seconds": statistics.median(times),
@@ -123,11 +130,18 @@ def summarise(recs):
             "phases": {k: statistics.median(v) for k, v in phases.items()},
             "bytes": rs[0]["bytes"]["orderer"] + rs[0]["bytes"]["derived"],
         })
-    base = {(r["scene"], r["revision"], r["run"], r["algorithm"]): r for r in rows}
+    # A scene with several thread counts labels its rows with theirs (figures.label).
+    counts = collections.defaultdict(set)
+    for row in rows:
+        counts[row["scene"]].add(row["threads"])
+    for row in rows:
+        row["multi_threads"] = len(counts[row["scene"]]) > 1
+    # Ratios against a reference under the same thread count.
+    base = {(r["scene"], r["revision"], r["run"], r["algorithm"], r["threads"]): r for r in rows}
     for row in rows:
         for ref in ("mpvonc", "vtk-centroid"):
-            b = base.get((row["scene"], row["revision"], row["run"], ref)) or base.get(
-                (row["scene"], row["revision"], None, ref))
+            b = base.get((row["scene"], row["revision"], row["run"], ref, row["threads"])) or base.get(
+                (row["scene"], row["revision"], None, ref, row["threads"]))
             row["vs_" + ref] = row["seconds"] / b["seconds"] if b and b["seconds"] > 0 else None
         row["verdict"] = verdict_text(row)
     # One orderer's rows of several revisions side by side.
@@ -135,5 +149,15 @@ def summarise(recs):
     for r in rows:
         first_scene.setdefault(r["scene"], len(first_scene))
         first_algo.setdefault(r["algorithm"], len(first_algo))
-    rows.sort(key=lambda r: (first_scene[r["scene"]], first_algo[r["algorithm"]]))
+    rows.sort(key=lambda r: (first_scene[r["scene"]], first_algo[r["algorithm"]], r["threads"] or 0))
     return rows
+
+
+def thread_pairs(rows):
+    """Orderers measured under several thread counts on one scene: (scene, revision, run,
+    algorithm, rows by thread count ascending), the fewest and most threads side by side."""
+    groups = collections.OrderedDict()
+    for r in rows:
+        if r["threads"] is not None:
+            groups.setdefault((r["scene"], r["revision"], r["run"], r["algorithm"]), []).append(r)
+    return [(*k, sorted(rs, key=lambda r: r["threads"])) for k, rs in groups.items() if len(rs) > 1]

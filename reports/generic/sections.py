@@ -4,7 +4,7 @@ import collections
 import os
 
 from . import figures, gallery
-from .rows import scene_key
+from .rows import scene_key, thread_pairs
 from .units import human_bytes, human_seconds, sig
 
 
@@ -55,7 +55,7 @@ def scene_table(page, rows, revisions):
     by_run = any(r["run"] for r in rows)
     derived = any(r["cell_order_px"] is not None for r in rows)
     head = (["orderer", "claim"] + (["revision"] if multi else []) + (["run"] if by_run else []) +
-            ["views", "time/frame", "vs mpvonc", "vs vtk-centroid", "prepare", "verdict",
+            ["threads", "views", "time/frame", "vs mpvonc", "vs vtk-centroid", "prepare", "verdict",
              "violating px, summed over views (mean % covered)"] +
             (["derived cell order px"] if derived else []) +
             ["max k", "image RMSE", "cycles", "memory"])
@@ -70,7 +70,7 @@ def scene_table(page, rows, revisions):
                "–" if r["err"] is None else f"{r['violating_pixels']:,} ({sig(100 * r['err'])}%)")
         cells = ([r["algorithm"], r["exact"]] + ([r["revision"]] if multi else []) +
                  ([r["run"] or "all"] if by_run else []) +
-                 [views, human_seconds(r["seconds"]), sig(r["vs_mpvonc"]), sig(r["vs_vtk-centroid"]),
+                 [str(r["threads"]) if r["threads"] is not None else "?", views, human_seconds(r["seconds"]), sig(r["vs_mpvonc"]), sig(r["vs_vtk-centroid"]),
                   human_seconds(r["prepare_s"]), r["verdict"], err] +
                  ([sig(r["cell_order_px"]) if r["cell_order_px"] is not None else "–"] if derived else []) +
                  [sig(r["max_k"]) if r["max_k"] is not None else "–", sig(r["rmse"]), sig(r["cycles"]),
@@ -89,6 +89,30 @@ def scene_table(page, rows, revisions):
                   "returns (labelled 'derived cell order'); its verdict is the 'verdict' column.")
 
 
+def threads_table(page, rows):
+    """A parallel orderer's time with the fewest and with the most threads, and their ratio
+    (the speed-up), so a ratio between orderers never silently compares 2 cores with 1."""
+    pairs = thread_pairs(rows)
+    if not pairs:
+        return
+    multi = len({p[1] for p in pairs}) > 1
+    by_run = any(p[2] for p in pairs)
+    out = []
+    for scene, rev, run, algo, rs in pairs:
+        lo, hi = rs[0], rs[-1]
+        ratio = lo["seconds"] / hi["seconds"] if hi["seconds"] > 0 else None
+        out.append([algo] + ([rev] if multi else []) + ([run or "all"] if by_run else []) +
+                  [f"{lo['threads']} / {hi['threads']}", human_seconds(lo["seconds"]), human_seconds(hi["seconds"]),
+                   f"{sig(ratio)}x" if ratio is not None else "–",
+                   human_seconds(lo["prepare_s"]), human_seconds(hi["prepare_s"])])
+    page.table(["orderer"] + (["revision"] if multi else []) + (["run"] if by_run else []) +
+               ["threads (fewest / most)", "time/frame, fewest threads", "time/frame, most threads",
+                "speed-up", "prepare, fewest", "prepare, most"], out)
+    page.para("Threads: the same views measured under each thread count of the suite (\"threads\": [1, 0]; "
+              "0 = all cores, shown as the count in effect); speed-up = time with the fewest threads / time "
+              "with the most.")
+
+
 def make_figures(scene, rows, out_dir):
     f1 = f"figures/speed_error_{slug(scene)}.png"
     f2 = f"figures/phases_{slug(scene)}.png"
@@ -104,6 +128,7 @@ def scene_section(page, scene, rows, recs, figs, out_dir, revisions, note=False)
               + (f", b = {r0['b']:,} boundary faces" if r0.get("b") else "")
               + f", {r0['w']}x{r0['h']} pixels, {len(rows)} rows.")
     scene_table(page, rows, revisions)
+    threads_table(page, rows)
     if note:
         page.para(VERDICT_NOTE)
     page.figure(figs[0], "speed against error",
@@ -135,13 +160,16 @@ def overview(page, scenes, rows):
     """Orderer x scene: median time per frame, marked when it fails in some view (✗) or was
     not checked (?), so one table answers which orderer to choose."""
     revs = sorted({r["revision"] for r in rows})
-    keys = list(dict.fromkeys((r["algorithm"], r["revision"], r["run"]) for r in rows))
-    cell = {(r["algorithm"], r["revision"], r["run"], r["scene"]): r for r in rows}
+    multi_threads = len({r["threads"] for r in rows}) > 1
+    keys = list(dict.fromkeys((r["algorithm"], r["revision"], r["run"], r["threads"]) for r in rows))
+    cell = {(r["algorithm"], r["revision"], r["run"], r["threads"], r["scene"]): r for r in rows}
     out, classes = [], []
-    for algo, rev, run in keys:
-        line, cls = [figures.label({"algorithm": algo, "revision": rev, "run": run}, revs)], [None]
+    for algo, rev, run, threads in keys:
+        line = [figures.label({"algorithm": algo, "revision": rev, "run": run, "threads": threads,
+                               "multi_threads": multi_threads}, revs)]
+        cls = [None]
         for s in scenes:
-            r = cell.get((algo, rev, run, s))
+            r = cell.get((algo, rev, run, threads, s))
             if r is None:
                 line.append("")
                 cls.append(None)

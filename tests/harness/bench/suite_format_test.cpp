@@ -65,7 +65,7 @@ TEST(SuiteFormat, SpreadViewsDirectionsAndThreads) {
   j["threads"] = 1;
   SuiteSpec s = SuiteSpec::from_json(j, "s.json");
   EXPECT_EQ(s.view_indices, (std::vector<int>{0, 4, 9}));
-  EXPECT_EQ(s.threads, 1);
+  EXPECT_EQ(s.threads, std::vector<int>{1});
   j["view_indices"] = {1};
   EXPECT_EQ(error_of(j).rfind("s.json: view_indices: ", 0), 0u) << error_of(j);
   j = gap_suite();
@@ -129,9 +129,37 @@ TEST(SuiteFormat, KeysChangeWithEverySettingThatChangesARecord) {
     auto j = gap_suite();
     j[field] = value;
     const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
-    std::optional<tbb::global_control> threads;
-    if (s.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, s.threads);
     EXPECT_NE(dataset_jobs(s, plans[0], scene, RunTags{})[0].key, k0) << field;
+  }
+}
+
+// "threads": [1, 0]: every job once per thread count, keyed by the count in effect
+// (0: all cores); one key per effective count, whatever the machine.
+TEST(SuiteFormat, ThreadListExpandsEveryJobPerThreadCount) {
+  auto j = gap_suite();
+  j["threads"] = json::array({1, 0});
+  const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
+  EXPECT_EQ(s.threads, (std::vector<int>{1, 0}));
+  const auto plans = plan_datasets(s);
+  const Scene scene = make_scene(plans[0].dataset);
+  const auto jobs = dataset_jobs(s, plans[0], scene, RunTags{});
+  const int all = effective_threads(0);
+  ASSERT_EQ(jobs.size(), all > 1 ? 12u : 6u);  // mpvo x 6 views x thread counts
+  EXPECT_EQ(jobs[0].threads, 1);
+  EXPECT_NE(jobs[0].key.find("|ss1|t1"), std::string::npos) << jobs[0].key;
+  if (all > 1) {
+    EXPECT_EQ(jobs[6].threads, 0);
+    EXPECT_EQ(jobs[6].view_index, 0);
+    EXPECT_NE(jobs[6].key.find("|ss1|t" + std::to_string(all)), std::string::npos) << jobs[6].key;
+  }
+  // Under an outer limit (--threads 1 would also replace the list), both counts are 1: one job each.
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(dataset_jobs(s, plans[0], scene, RunTags{}).size(), 6u);
+  }
+  for (const char* bad : {"[]", "[1, 1]", "[-1]", "[2000]", "\"2\"", "[1.5]"}) {
+    j["threads"] = json::parse(bad);
+    EXPECT_EQ(error_of(j).rfind("s.json: threads", 0), 0u) << bad << ": " << error_of(j);
   }
 }
 

@@ -58,7 +58,7 @@ TEST(ProgressCli, RunCountsItsJobsAndTheDryRunListsThemWritingNothing) {
   for (size_t i = 0; i < lines.size(); ++i)
     EXPECT_EQ(lines[i].rfind("[" + std::to_string(i + 1) + "/8] ", 0), 0u) << lines[i];
   EXPECT_NE(lines[0].find(" elapsed, ~"), std::string::npos) << lines[0];
-  EXPECT_NE(lines[0].find(" left: mpvo on gap(nx=2,ny=2,nz=3) view 0 16x16: "), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find(" left: mpvo on gap(nx=2,ny=2,nz=3) view 0 16x16 t"), std::string::npos) << lines[0];
   // The dry run again: every job done, calibrated from the records, the file unchanged.
   const auto size = fs::file_size(results);
   r = vobench("run " + suite.string() + " -o " + results.string() + " --dry-run");
