@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <climits>
 #include <memory>
 #include <vector>
 
@@ -48,15 +49,18 @@ class RadixArgsort {
     plan(n);
     for_blocks([&](size_t b, size_t lo, size_t hi) {
       uint32_t* k = keys_.data();
-      uint32_t mn = 0xffffffffu, mx = 0;
+      // The range as signed ints (x with its top bit flipped): SSE2 vectorises signed
+      // min/max, not unsigned.
+      int32_t mn = INT32_MAX, mx = INT32_MIN;
       for (size_t i = lo; i < hi; ++i) {
         const uint32_t x = key_of(i);
         k[i] = x;
-        mn = std::min(mn, x);
-        mx = std::max(mx, x);
+        const int32_t y = static_cast<int32_t>(x ^ 0x80000000u);
+        mn = std::min(mn, y);
+        mx = std::max(mx, y);
       }
-      block_min_[b] = mn;
-      block_max_[b] = mx;
+      block_min_[b] = static_cast<uint32_t>(mn) ^ 0x80000000u;
+      block_max_[b] = static_cast<uint32_t>(mx) ^ 0x80000000u;
     });
   }
   void sort_keys(int32_t* out);  // out[0..n) for the n of make_keys
