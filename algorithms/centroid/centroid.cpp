@@ -21,8 +21,10 @@ class CentroidOrderer final : public Orderer {
     const bool by_view = view_key_ || view.ortho;  // orthographic: eye distance is view depth
     const Vec3* c = centroids_->data();
     const Vec3 eye = view.eye;
-    if (by_view) return order_by_descending_key(centroids_->size(), [=](size_t i) { return dot(c[i] - eye, f); }, sort_, clock);
-    return order_by_descending_key(centroids_->size(), [=](size_t i) { return length(c[i] - eye); }, sort_, clock);
+    const size_t n = centroids_->size();
+    // Two loops rather than a test per cell; the keys are the same doubles as before.
+    if (by_view) return order_by_descending_key(n, [=](size_t i) { return dot(c[i] - eye, f); }, sort_, clock);
+    return order_by_descending_key(n, [=](size_t i) { return length(c[i] - eye); }, sort_, clock);
   }
 
   size_t bytes() const override {

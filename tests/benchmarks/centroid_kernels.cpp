@@ -61,7 +61,8 @@ void BM_CentroidKeySortOld(benchmark::State& state) {
 
 // range(1): the thread limit.
 void BM_CentroidKeySortFused(benchmark::State& state) {
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<size_t>(state.range(1)));
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            static_cast<size_t>(state.range(1)));
   const size_t n = setup().centroids.size();
   vob::RadixArgsort sort;
   with_key(state, [&](auto key) {
@@ -76,7 +77,12 @@ void BM_CentroidKeySortFused(benchmark::State& state) {
   state.counters["blocks"] = sort.blocks();
 }
 
-BENCHMARK(BM_CentroidKeySortOld)->ArgNames({"view"})->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_CentroidKeySortOld)
+    ->ArgNames({"view"})
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK(BM_CentroidKeySortFused)
     ->ArgNames({"view", "threads"})
     ->Args({0, 1})
