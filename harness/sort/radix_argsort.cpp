@@ -37,17 +37,20 @@ void count(const uint32_t* k, size_t n, uint32_t mn, int width, uint32_t mask, s
   for (size_t j = 0; j < kPasses * radix; ++j) c[j] += c2[j];
 }
 
-int32_t* ids(const HugeWords& w) { return reinterpret_cast<int32_t*>(w.data()); }
+uint64_t* pairs(const HugeWords& w) { return reinterpret_cast<uint64_t*>(w.data()); }
 
-// One scatter pass over [lo, hi): `off` holds the block's next slot per digit.
+// One scatter pass over [lo, hi): `off` holds the block's next slot per digit. Between
+// passes a key and its id travel as one 64-bit word (key high): one write stream per digit,
+// not two. The first pass reads the bare keys (the id is the index), the last writes ids.
 template <bool kFirst, bool kLast>
-void scatter(const uint32_t* sk, uint32_t* dk, const int32_t* si, int32_t* di, size_t lo, size_t hi,
+void scatter(const uint32_t* k, const uint64_t* sp, uint64_t* dp, int32_t* out, size_t lo, size_t hi,
              uint32_t mn, int shift, uint32_t mask, uint32_t* off) {
   for (size_t i = lo; i < hi; ++i) {
-    const uint32_t x = sk[i];
+    const uint64_t p = kFirst ? (uint64_t(k[i]) << 32) | uint32_t(i) : sp[i];
+    const uint32_t x = static_cast<uint32_t>(p >> 32);
     const uint32_t pos = off[((x - mn) >> shift) & mask]++;
-    if (!kLast) dk[pos] = x;
-    di[pos] = kFirst ? static_cast<int32_t>(i) : si[i];
+    if (kLast) out[pos] = static_cast<int32_t>(static_cast<uint32_t>(p));
+    else dp[pos] = p;
   }
 }
 
@@ -96,10 +99,9 @@ void RadixArgsort::sort_keys(int32_t* out) {
   const uint32_t mask = static_cast<uint32_t>(radix - 1);
   passes_ = np;
   if (np >= 2) {
-    keys2_.reserve(n);
-    ids_.reserve(n);
+    pairs_.reserve(2 * n);
+    pairs2_.reserve(2 * n);
   }
-  if (np >= 3) ids2_.reserve(n);
 
   const bool serial = nblocks_ == 1;
   // One block: every digit's counts in one read of the keys. Several: per pass, per block.
@@ -111,19 +113,21 @@ void RadixArgsort::sort_keys(int32_t* out) {
     else if (np == 2) count<2>(k, n, mn, width, mask, radix, c);
     else count<3>(k, n, mn, width, mask, radix, c);
   }
+  const uint32_t* k = keys_.data();
   for (int q = 0; q < np; ++q) {
     const int shift = q * width;
-    const uint32_t* sk = (q % 2 == 0) ? keys_.data() : keys2_.data();
-    uint32_t* dk = (q % 2 == 0) ? keys2_.data() : keys_.data();
-    const int32_t* si = q == 0 ? nullptr : ids((q % 2 == 1) ? ids_ : ids2_);
+    const uint64_t* sp = (q % 2 == 1) ? pairs(pairs_) : pairs(pairs2_);  // unused when q == 0
+    uint64_t* dp = (q % 2 == 0) ? pairs(pairs_) : pairs(pairs2_);
     const bool last = q + 1 == np;
-    int32_t* di = last ? out : ids((q % 2 == 0) ? ids_ : ids2_);
     uint32_t* table = serial ? counts_.data() + size_t(q) * radix : counts_.data();
     if (!serial) {
       std::fill(counts_.begin(), counts_.end(), 0u);
       for_blocks([&](size_t b, size_t lo, size_t hi) {
         uint32_t* c = table + b * radix;
-        for (size_t i = lo; i < hi; ++i) ++c[((sk[i] - mn) >> shift) & mask];
+        if (q == 0)
+          for (size_t i = lo; i < hi; ++i) ++c[((k[i] - mn) >> shift) & mask];
+        else
+          for (size_t i = lo; i < hi; ++i) ++c[((static_cast<uint32_t>(sp[i] >> 32) - mn) >> shift) & mask];
       });
     }
     // Exclusive prefix over (digit, block): block b's slots for a digit follow block b-1's.
@@ -137,10 +141,10 @@ void RadixArgsort::sort_keys(int32_t* out) {
       }
     for_blocks([&](size_t b, size_t lo, size_t hi) {
       uint32_t* off = table + (serial ? 0 : b * radix);
-      if (q == 0 && last) scatter<true, true>(sk, dk, si, di, lo, hi, mn, shift, mask, off);
-      else if (q == 0) scatter<true, false>(sk, dk, si, di, lo, hi, mn, shift, mask, off);
-      else if (last) scatter<false, true>(sk, dk, si, di, lo, hi, mn, shift, mask, off);
-      else scatter<false, false>(sk, dk, si, di, lo, hi, mn, shift, mask, off);
+      if (q == 0 && last) scatter<true, true>(k, sp, dp, out, lo, hi, mn, shift, mask, off);
+      else if (q == 0) scatter<true, false>(k, sp, dp, out, lo, hi, mn, shift, mask, off);
+      else if (last) scatter<false, true>(k, sp, dp, out, lo, hi, mn, shift, mask, off);
+      else scatter<false, false>(k, sp, dp, out, lo, hi, mn, shift, mask, off);
     });
   }
 }

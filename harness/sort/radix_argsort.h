@@ -69,7 +69,7 @@ class RadixArgsort {
   int passes() const { return passes_; }  // radix passes of the last sort (0: all keys equal)
   int blocks() const { return static_cast<int>(nblocks_); }
   size_t bytes() const {
-    return (keys_.capacity() + keys2_.capacity() + ids_.capacity() + ids2_.capacity()) * 4 +
+    return (keys_.capacity() + pairs_.capacity() + pairs2_.capacity()) * 4 +
            counts_.capacity() * 4;
   }
 
@@ -91,7 +91,7 @@ class RadixArgsort {
 
   size_t n_ = 0, nblocks_ = 1;
   int passes_ = 0;
-  HugeWords keys_, keys2_, ids_, ids2_;
+  HugeWords keys_, pairs_, pairs2_;  // pairs: (key << 32 | id), two words each
   std::vector<uint32_t> block_min_, block_max_;
   std::vector<uint32_t> counts_;  // nblocks x radix: counts, then each block's next slot
 };
