@@ -98,10 +98,8 @@ void RadixArgsort::sort_keys(int32_t* out) {
   const size_t radix = size_t(1) << width;
   const uint32_t mask = static_cast<uint32_t>(radix - 1);
   passes_ = np;
-  if (np >= 2) {
-    pairs_.reserve(2 * n);
-    pairs2_.reserve(2 * n);
-  }
+  if (np >= 2) pairs_.reserve(2 * n);
+  if (np >= 3) pairs2_.reserve(2 * n);
 
   const bool serial = nblocks_ == 1;
   // One block: every digit's counts in one read of the keys. Several: per pass, per block.
