@@ -28,7 +28,7 @@ class TriangleCentroid final : public Orderer {
 
  private:
   std::vector<Vec3> centroids_;
-  KeySort sort_;
+  RadixArgsort sort_;
 };
 
 }  // namespace

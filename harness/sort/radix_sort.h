@@ -1,7 +1,7 @@
 // LSD radix sort of (float key, int32 value) pairs: four 8-bit passes over the
 // order-preserving transform of the float bits (sign bit flipped for positives, all bits for
 // negatives), all four histograms counted in one pass, passes whose digit is constant
-// skipped. Shared by the centroid sort, HAVS and the voxel distance sort.
+// skipped. Shared by HAVS, the voxel distance sort and KeySort below.
 #pragma once
 #include <cstdint>
 #include <cstring>
@@ -20,8 +20,9 @@ inline uint32_t float_sort_key(float f) {
 void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
                        std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values);
 
-// Ids sorted by float keys with the radix sort, buffers kept from frame to frame: what the
-// centroid sorts, MPVONC's exterior cells and SXMPVO's exterior faces all need per view.
+// Ids sorted by float keys with the radix sort, buffers kept from frame to frame: what
+// MPVONC's exterior cells and SXMPVO's exterior faces need per view (the centroid orderers
+// use the fused RadixArgsort of radix_argsort.h).
 class KeySort {
  public:
   std::vector<float> keys;   // fill with ids, then sort(): both come out ascending by key

@@ -1,0 +1,99 @@
+// Stable argsort of uint32 keys made on the fly: the key pass writes the keys and their
+// range in one streamed pass; an LSD radix sort then runs over only the bits in which the
+// keys differ (key - min, digits of <= 11 bits: a 22-bit range takes 2 passes, 1M view
+// depths of a mesh ~24 bits take 3), the ids 0..n-1 made in the first scatter and the last
+// pass writing the caller's output (no key transform pass, no keys written back, no copy).
+// Blocks run in parallel with TBB when the global thread limit allows; per-block counts keep
+// it stable, so the order never depends on the thread count.
+#pragma once
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <climits>
+#include <memory>
+#include <vector>
+
+namespace vob {
+
+// A buffer of 32-bit words on transparent huge pages where the kernel offers them (madvise):
+// a scatter over 4 MB with thousands of write streams otherwise misses the TLB on most stores.
+class HugeWords {
+ public:
+  void reserve(size_t n);  // grows only; contents are not kept
+  uint32_t* data() const { return words_.get(); }
+  size_t capacity() const { return cap_; }
+
+ private:
+  struct Free {
+    void operator()(uint32_t* p) const;
+  };
+  std::unique_ptr<uint32_t, Free> words_;
+  size_t cap_ = 0;
+};
+
+class RadixArgsort {
+ public:
+  // out[0..n) = ids sorted by ascending key_of(id), ties by id. key_of(i) must be safe to
+  // call from several threads at once.
+  template <class KeyOf>
+  void sort(size_t n, KeyOf&& key_of, int32_t* out) {
+    make_keys(n, key_of);
+    sort_keys(out);
+  }
+
+  // The two halves of sort(), apart so that callers can time them as phases.
+  template <class KeyOf>
+  void make_keys(size_t n, KeyOf&& key_of) {
+    plan(n);
+    for_blocks([&](size_t b, size_t lo, size_t hi) {
+      uint32_t* k = keys_.data();
+      // The range as signed ints (x with its top bit flipped): SSE2 vectorises signed
+      // min/max, not unsigned.
+      int32_t mn = INT32_MAX, mx = INT32_MIN;
+      for (size_t i = lo; i < hi; ++i) {
+        const uint32_t x = key_of(i);
+        k[i] = x;
+        const int32_t y = static_cast<int32_t>(x ^ 0x80000000u);
+        mn = std::min(mn, y);
+        mx = std::max(mx, y);
+      }
+      block_min_[b] = static_cast<uint32_t>(mn) ^ 0x80000000u;
+      block_max_[b] = static_cast<uint32_t>(mx) ^ 0x80000000u;
+    });
+  }
+  void sort_keys(int32_t* out);  // out[0..n) for the n of make_keys
+
+  int passes() const { return passes_; }  // radix passes of the last sort (0: all keys equal)
+  int blocks() const { return static_cast<int>(nblocks_); }
+  size_t bytes() const {
+    return (keys_.capacity() + pairs_.capacity() + pairs2_.capacity()) * 4 +
+           counts_.capacity() * 4;
+  }
+
+ private:
+  void plan(size_t n);         // sizes the buffers, picks the blocks from the thread limit
+
+  template <class F>
+  void for_blocks(F&& f) {
+    const auto run = [&](size_t b) { f(b, block_begin(b), block_begin(b + 1)); };
+    if (nblocks_ == 1) {
+      run(0);
+      return;
+    }
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, nblocks_, 1), [&](const tbb::blocked_range<size_t>& r) {
+      for (size_t b = r.begin(); b != r.end(); ++b) run(b);
+    });
+  }
+  size_t block_begin(size_t b) const { return n_ * b / nblocks_; }
+
+  size_t n_ = 0, nblocks_ = 1;
+  int passes_ = 0;
+  HugeWords keys_, pairs_, pairs2_;  // pairs: (key << 32 | id), two words each
+  std::vector<uint32_t> block_min_, block_max_;
+  std::vector<uint32_t> counts_;  // nblocks x radix: counts, then each block's next slot
+};
+
+}  // namespace vob
