@@ -8,7 +8,7 @@ namespace {
 
 class MpvoOrderer final : public Orderer {
  public:
-  explicit MpvoOrderer(bool renumber) : renumber_(renumber) {}
+  explicit MpvoOrderer(mpvo::RenumberOption renumber) : renumber_(renumber) {}
   Claims claims() const override { return mpvo::core_claims(false, false); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -32,13 +32,13 @@ class MpvoOrderer final : public Orderer {
   size_t bytes() const override { return core_.bytes(); }
 
  private:
-  bool renumber_;
+  mpvo::RenumberOption renumber_;
   mpvo::MpvoCore core_;
 };
 
 class MpvoncOrderer final : public Orderer {
  public:
-  explicit MpvoncOrderer(bool renumber) : renumber_(renumber) {}
+  explicit MpvoncOrderer(mpvo::RenumberOption renumber) : renumber_(renumber) {}
   Claims claims() const override { return mpvo::core_claims(false, false); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
@@ -94,7 +94,7 @@ class MpvoncOrderer final : public Orderer {
     sort_.sort();
   }
 
-  bool renumber_;
+  mpvo::RenumberOption renumber_;
   mpvo::MpvoCore core_;
   const std::vector<Vec3>* centroids_ = nullptr;
   std::vector<uint8_t> marked_;
@@ -106,8 +106,8 @@ class MpvoncOrderer final : public Orderer {
 OrdererInfo mpvo_orderer_info() {
   return {"mpvo", SceneKind::Cells,
           "Williams' MPVO: face arrows and a DFS from the sink cells (exact on convex meshes)",
-          {mpvo::renumber_param()}, [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<MpvoOrderer>(p.get_bool("renumber"));
+          mpvo::renumber_params(), [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<MpvoOrderer>(mpvo::renumber_option(p));
           }};
 }
 
@@ -115,8 +115,8 @@ OrdererInfo mpvonc_orderer_info() {
   return {"mpvonc", SceneKind::Cells,
           "Williams' MPVONC: MPVO with a DFS first from exterior cells by decreasing centroid "
           "distance (heuristic)",
-          {mpvo::renumber_param()}, [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<MpvoncOrderer>(p.get_bool("renumber"));
+          mpvo::renumber_params(), [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<MpvoncOrderer>(mpvo::renumber_option(p));
           }};
 }
 

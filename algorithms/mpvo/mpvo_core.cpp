@@ -10,10 +10,15 @@
 
 namespace vob::mpvo {
 
-ParamSpec renumber_param() {
-  return ParamSpec::boolean("renumber", true,
-                            "renumber cells and points along a Morton curve of the cell "
-                            "centroids in prepare (order in input ids either way)");
+std::vector<ParamSpec> renumber_params() {
+  return {ParamSpec::boolean("renumber", true,
+                             "renumber cells and points along a space-filling curve of the cell "
+                             "centroids in prepare (orders in input ids either way)"),
+          ParamSpec::choice("curve", "hilbert", {"hilbert", "morton"}, "the curve renumber follows")};
+}
+
+RenumberOption renumber_option(const ResolvedParams& p) {
+  return {p.get_bool("renumber"), p.get_choice("curve") == "morton" ? Curve::Morton : Curve::Hilbert};
 }
 
 void ExtraRelations::build_from_pairs(size_t cells,
@@ -44,12 +49,12 @@ size_t ExtraRelations::bytes() const {
          not_sink.capacity();
 }
 
-void MpvoCore::prepare(const Scene& scene, PhaseClock& clock, bool renumber) {
+void MpvoCore::prepare(const Scene& scene, PhaseClock& clock, RenumberOption renumber) {
   Scene work = scene;
   std::vector<int32_t> input_id;
-  if (renumber) {
-    auto p = clock.phase("renumber along a Morton curve");
-    RenumberedMesh r = renumber_along_curve(scene.mesh());
+  if (renumber.on) {
+    auto p = clock.phase("renumber along a space curve");
+    RenumberedMesh r = renumber_along_curve(scene.mesh(), renumber.curve);
     input_id = std::move(r.input_cell);
     work = Scene::from_mesh(scene.name(), std::move(r.mesh), scene.params());
   }

@@ -20,8 +20,8 @@
 // edge. dfs_unvisited() finishes with every cell not yet output, so the result is always
 // a complete permutation.
 //
-// Renumbering (prepare with renumber = true): the core works on its own copy of the mesh,
-// cells in Morton order of their centroids and points by first use (space_curve.h), with
+// Renumbering (prepare with renumber.on): the core works on its own copy of the mesh, cells
+// in Hilbert (or Morton) order of their centroids and points by first use (space_curve.h), with
 // faces and planes built from it, so the DFS walks neighbours that lie close in memory. Every
 // cell id the core takes or keeps (roots, signs, ExtraRelations, faces(), scene()) is then
 // in that numbering; only what it writes into an Ordering (order, cycle members) is mapped
@@ -44,6 +44,7 @@
 #include "harness/bench/orderer.h"
 #include "harness/bench/param_spec.h"
 #include "harness/scene/scene.h"
+#include "harness/scene/space_curve.h"
 #include "harness/view/camera.h"
 
 namespace vob::mpvo {
@@ -63,9 +64,14 @@ struct ExtraRelations {
   size_t bytes() const;
 };
 
-// The parameter `renumber` (bool, default true) of the plugins that renumber through
-// prepare(..., renumber): declared here once for mpvo, mpvonc and sxmpvo.
-ParamSpec renumber_param();
+// The parameters `renumber` (bool, default true) and `curve` (hilbert|morton) of the
+// plugins that renumber through prepare(): declared here once for mpvo, mpvonc and sxmpvo.
+struct RenumberOption {
+  bool on = false;
+  Curve curve = Curve::Hilbert;
+};
+std::vector<ParamSpec> renumber_params();
+RenumberOption renumber_option(const ResolvedParams& p);
 
 // The claims of an orderer built on MpvoCore: it detects (and breaks) cycles.
 inline Claims core_claims(bool object_exact, bool image_exact) {
@@ -89,9 +95,9 @@ class MpvoCore {
   // Keeps a copy of the Scene handle, which shares the data and the derived structures.
   void bind(const Scene& scene);
   // bind() after the prepare phases "unique faces" and "face planes" (timed in `clock`):
-  // the start of every MPVO-family plugin's prepare. With `renumber`, first the phase
-  // "renumber along a Morton curve" makes the core's own renumbered scene, which it binds.
-  void prepare(const Scene& scene, PhaseClock& clock, bool renumber = false);
+  // the start of every MPVO-family plugin's prepare. With renumber.on, first the phase
+  // "renumber along a space curve" makes the core's own renumbered scene, which it binds.
+  void prepare(const Scene& scene, PhaseClock& clock, RenumberOption renumber = {});
   // The scene the core works on: the input's, or its renumbered copy.
   const Scene& scene() const { return scene_; }
   bool renumbered() const { return !input_id_.empty(); }

@@ -22,7 +22,7 @@ constexpr double kTieRelative = 1e-9;
 
 class SxmpvoOrderer final : public Orderer {
  public:
-  explicit SxmpvoOrderer(bool renumber) : renumber_(renumber) {}
+  explicit SxmpvoOrderer(mpvo::RenumberOption renumber) : renumber_(renumber) {}
   Claims claims() const override { return mpvo::core_claims(false, true); }
 
   void prepare(const Scene& input, PhaseClock& clock) override {
@@ -168,7 +168,7 @@ class SxmpvoOrderer final : public Orderer {
     pn_.to_relations(extra_);
   }
 
-  bool renumber_;
+  mpvo::RenumberOption renumber_;
   mpvo::MpvoCore core_;
   const ExteriorFaces* ext_ = nullptr;     // the scene's exterior faces
   std::vector<Vec3> ext_centroid_;          // and their centroids
@@ -189,8 +189,8 @@ OrdererInfo sxmpvo_orderer_info() {
   return {"sxmpvo", SceneKind::Cells,
           "Cook et al.'s SXMPVO: MPVO arrows plus pseudo-neighbour relations from an A-buffer "
           "of exterior faces at pixel centres (exact at the image resolution)",
-          {mpvo::renumber_param()}, [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
-            return std::make_unique<SxmpvoOrderer>(p.get_bool("renumber"));
+          mpvo::renumber_params(), [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<SxmpvoOrderer>(mpvo::renumber_option(p));
           }};
 }
 

@@ -98,13 +98,41 @@ uint64_t morton_code(Vec3 p, const Aabb& box) {
          spread3(quantize(p.z, box.lo.z, box.hi.z)) << 2;
 }
 
-std::vector<int32_t> morton_cell_order(const CellMesh& mesh) {
+uint64_t hilbert_code(Vec3 p, const Aabb& box) {
+  // Skilling's transform (AIP Conf. Proc. 707, 2004): axes to the "transposed" Hilbert
+  // index, whose bits interleaved (x most significant) are the index.
+  uint64_t x[3] = {quantize(p.x, box.lo.x, box.hi.x), quantize(p.y, box.lo.y, box.hi.y),
+                   quantize(p.z, box.lo.z, box.hi.z)};
+  constexpr uint64_t kTop = uint64_t(1) << 20;
+  for (uint64_t q = kTop; q > 1; q >>= 1) {
+    const uint64_t mask = q - 1;
+    for (int i = 0; i < 3; ++i) {
+      if (x[i] & q) {
+        x[0] ^= mask;  // invert
+      } else {
+        const uint64_t t = (x[0] ^ x[i]) & mask;  // exchange
+        x[0] ^= t;
+        x[i] ^= t;
+      }
+    }
+  }
+  x[1] ^= x[0];
+  x[2] ^= x[1];
+  uint64_t t = 0;
+  for (uint64_t q = kTop; q > 1; q >>= 1)
+    if (x[2] & q) t ^= q - 1;
+  for (uint64_t& v : x) v ^= t;
+  return spread3(x[0]) << 2 | spread3(x[1]) << 1 | spread3(x[2]);
+}
+
+std::vector<int32_t> curve_cell_order(const CellMesh& mesh, Curve curve) {
   const size_t nc = mesh.num_cells();
   const Aabb box = mesh.bounds();
   std::vector<uint64_t> keys(nc);
   std::vector<int32_t> ids(nc);
   for (size_t c = 0; c < nc; ++c) {
-    keys[c] = morton_code(mesh.cell_centroid(c), box);
+    const Vec3 centroid = mesh.cell_centroid(c);
+    keys[c] = curve == Curve::Hilbert ? hilbert_code(centroid, box) : morton_code(centroid, box);
     ids[c] = static_cast<int32_t>(c);
   }
   radix_sort_ids(keys, ids);
@@ -148,8 +176,8 @@ CellMesh permute_mesh(const CellMesh& mesh, const std::vector<int32_t>& cell_ord
   return out;
 }
 
-RenumberedMesh renumber_along_curve(const CellMesh& mesh) {
-  return permute_cells(mesh, morton_cell_order(mesh));
+RenumberedMesh renumber_along_curve(const CellMesh& mesh, Curve curve) {
+  return permute_cells(mesh, curve_cell_order(mesh, curve));
 }
 
 }  // namespace vob

@@ -22,12 +22,16 @@ struct RenumberedMesh {
   size_t bytes() const;
 };
 
-// 63-bit Morton code (21 bits per axis) of p quantized in `box` (a flat axis maps to 0).
+// Codes along a curve through the 2^21 cubed grid of `box` (p quantized per axis; a flat
+// axis maps to 0): Morton (Z order: bits interleaved, long jumps between octants) and
+// Hilbert (consecutive codes are face-adjacent grid cells).
 uint64_t morton_code(Vec3 p, const Aabb& box);
+uint64_t hilbert_code(Vec3 p, const Aabb& box);
+enum class Curve { Morton, Hilbert };
 
-// The cells in increasing Morton code of their centroids (ties by input id): the new cell
-// order, new id -> input id. A permutation of [0, cells).
-std::vector<int32_t> morton_cell_order(const CellMesh& mesh);
+// The cells in increasing code of their centroids (ties by input id): the new cell order,
+// new id -> input id. A permutation of [0, cells).
+std::vector<int32_t> curve_cell_order(const CellMesh& mesh, Curve curve);
 
 // `mesh` with its cells in `cell_order` (new id -> input id, a permutation) and its points
 // numbered by first use in that order; points no cell uses follow in input order.
@@ -38,7 +42,7 @@ RenumberedMesh permute_cells(const CellMesh& mesh, const std::vector<int32_t>& c
 CellMesh permute_mesh(const CellMesh& mesh, const std::vector<int32_t>& cell_order,
                       const std::vector<int32_t>& point_order);
 
-// permute_cells(mesh, morton_cell_order(mesh)).
-RenumberedMesh renumber_along_curve(const CellMesh& mesh);
+// permute_cells(mesh, curve_cell_order(mesh, curve)).
+RenumberedMesh renumber_along_curve(const CellMesh& mesh, Curve curve = Curve::Hilbert);
 
 }  // namespace vob

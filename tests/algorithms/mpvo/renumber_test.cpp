@@ -28,10 +28,13 @@ std::vector<int32_t> scattered(size_t n, size_t step) {
 TEST(Renumber, DeclaredOnceWithDefaultTrue) {
   for (const char* name : {"mpvo", "mpvonc", "sxmpvo"}) {
     const OrdererInfo& info = find_orderer(name);
-    ASSERT_EQ(info.params.size(), 1u) << name;
+    ASSERT_EQ(info.params.size(), 2u) << name;
     EXPECT_EQ(info.params[0].name, "renumber");
     EXPECT_EQ(info.params[0].def, true);
+    EXPECT_EQ(info.params[1].name, "curve");
+    EXPECT_EQ(info.params[1].def, "hilbert");
     EXPECT_THROW(make_orderer(std::string(name) + ":renumber=maybe"), InputError);
+    EXPECT_THROW(make_orderer(std::string(name) + ":curve=peano"), InputError);
   }
 }
 
@@ -43,7 +46,7 @@ TEST(Renumber, PrepareTimesItAsItsOwnPhase) {
       PhaseClock clock;
       o->prepare(s.fresh(), clock);
       bool seen = false;
-      for (const auto& [phase, _] : clock.phases()) seen |= phase == "renumber along a Morton curve";
+      for (const auto& [phase, _] : clock.phases()) seen |= phase == "renumber along a space curve";
       EXPECT_EQ(seen, on) << name;
     }
 }
@@ -51,7 +54,7 @@ TEST(Renumber, PrepareTimesItAsItsOwnPhase) {
 // Shuffled helix: SXMPVO exact at every pixel centre of 14 views, renumbered or not.
 TEST(Renumber, SxmpvoExactOnAShuffledHelix) {
   const Scene s = dataset("helix", {{"cells", "2000"}, {"shuffle", "7"}});
-  for (const char* spec : {"sxmpvo", "sxmpvo:renumber=false"})
+  for (const char* spec : {"sxmpvo", "sxmpvo:curve=morton", "sxmpvo:renumber=false"})
     expect_exact_views(spec, s, {200, 200, false, 1, ""}, [](const Ordering&, int) {});
 }
 
@@ -65,7 +68,7 @@ TEST(Renumber, MpvoAndMpvoncExactOnAShuffledConvexBlock) {
   ViewOptions opt;
   opt.width = opt.height = 64;
   for (const Camera& view : fibonacci_views(s.bounds(), 14, opt))
-    for (const char* spec : {"mpvo", "mpvonc"}) {
+    for (const char* spec : {"mpvo", "mpvonc", "mpvo:curve=morton"}) {
       const Ordering o = run_orderer(spec, s, view);
       ASSERT_TRUE(is_permutation_of(o.order, s.num_primitives()));
       EXPECT_EQ(face_arrow_violations(s, view, o.order), 0) << spec;
@@ -83,7 +86,7 @@ TEST(Renumber, CycleReportsNameInputCells) {
   std::set<int32_t> ring_ids;
   for (size_t c = 0; c < order.size(); ++c)
     if (order[c] >= static_cast<int32_t>(both.num_cells() - ring.num_cells())) ring_ids.insert(static_cast<int32_t>(c));
-  for (const char* spec : {"mpvo", "mpvonc", "sxmpvo"}) {
+  for (const char* spec : {"mpvo", "mpvonc", "sxmpvo", "mpvo:curve=morton"}) {
     const Ordering o = run_orderer(spec, s, ring_axis_view(false));
     EXPECT_TRUE(is_permutation_of(o.order, s.num_primitives())) << spec;
     ASSERT_GE(o.cycles.cycles, 1) << spec;

@@ -1,10 +1,13 @@
-// Renumbering along a Morton curve (harness/scene/space_curve.h): the cell order is a
+// Renumbering along a space-filling curve (harness/scene/space_curve.h): the cell order is a
 // permutation in curve order, points are numbered by first use, and the renumbered mesh is
 // the input mesh cell for cell (same types, same points in the same vertex order).
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <numeric>
+#include <utility>
 
 #include "harness/scene/space_curve.h"
 #include "tests/support/test_meshes.h"
@@ -49,13 +52,37 @@ TEST(SpaceCurve, MortonCodeInterleavesAxes) {
 
 TEST(SpaceCurve, CellOrderIsAPermutationInCurveOrder) {
   const CellMesh m = tet_block(5, 4, 3);
-  const std::vector<int32_t> order = morton_cell_order(m);
-  EXPECT_TRUE(is_permutation_of(order, m.num_cells()));
   const Aabb box = m.bounds();
-  for (size_t i = 1; i < order.size(); ++i) {
-    const uint64_t a = morton_code(m.cell_centroid(order[i - 1]), box);
-    const uint64_t b = morton_code(m.cell_centroid(order[i]), box);
-    EXPECT_TRUE(a < b || (a == b && order[i - 1] < order[i])) << i;
+  for (Curve curve : {Curve::Morton, Curve::Hilbert}) {
+    const std::vector<int32_t> order = curve_cell_order(m, curve);
+    EXPECT_TRUE(is_permutation_of(order, m.num_cells()));
+    auto code = [&](int32_t c) {
+      return curve == Curve::Hilbert ? hilbert_code(m.cell_centroid(c), box) : morton_code(m.cell_centroid(c), box);
+    };
+    for (size_t i = 1; i < order.size(); ++i) {
+      const uint64_t a = code(order[i - 1]), b = code(order[i]);
+      EXPECT_TRUE(a < b || (a == b && order[i - 1] < order[i])) << i;
+    }
+  }
+}
+
+// The centres of an 8^3 grid sorted by Hilbert code: a path through face-adjacent cells
+// that visits each once (the curve's defining property), starting at the origin corner.
+TEST(SpaceCurve, HilbertStepsBetweenFaceNeighbours) {
+  Aabb box;
+  box.add({0, 0, 0});
+  box.add({8, 8, 8});
+  std::vector<std::pair<uint64_t, std::array<int, 3>>> cells;
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j)
+      for (int k = 0; k < 8; ++k) cells.push_back({hilbert_code({i + 0.5, j + 0.5, k + 0.5}, box), {i, j, k}});
+  std::sort(cells.begin(), cells.end());
+  EXPECT_EQ(cells.front().second, (std::array<int, 3>{0, 0, 0}));
+  for (size_t n = 1; n < cells.size(); ++n) {
+    EXPECT_NE(cells[n].first, cells[n - 1].first);
+    int steps = 0;
+    for (int a = 0; a < 3; ++a) steps += std::abs(cells[n].second[a] - cells[n - 1].second[a]);
+    EXPECT_EQ(steps, 1) << n;
   }
 }
 
