@@ -23,11 +23,13 @@ std::vector<DatasetInfo> build_registry() {
   std::vector<DatasetInfo> r = {
       {"gap", K::Cells, "block of 6 tets per hex sliced into gaps+1 slabs (Cook et al. 5.2)",
        "nx=50 ny=50 nz=100 (1..1000, nz 1..2000): hexahedra per axis, 6 tets each; "
-       "gaps=0 (0..95, < nz): empty slabs of width 0.5 across z",
+       "gaps=0 (0..95, < nz): empty slabs of width 0.5 across z; "
+       "shuffle=0 (0..2^31-1): > 0 renumbers cells and points at random from that seed",
        false, make_gap, nullptr},
       {"helix", K::Cells, "solid green tube inside the bore of a hollow pink one, 0.001 apart (Cook et al. Fig. 8)",
        "cells=20000 (162*turns..50M, met within 5%): tetrahedra; turns=3 (1..20); "
-       "faces=0 (0: near-isotropic cells; > 0: exterior faces, met with cells within 5%)", false,
+       "faces=0 (0: near-isotropic cells; > 0: exterior faces, met with cells within 5%); "
+       "shuffle=0 (0..2^31-1): > 0 renumbers cells and points at random from that seed", false,
        make_helix, nullptr},
       {"zoo", K::Cells, "six lat-long spheres of tets, pyramids, wedges, hexes (Cook et al. Fig. 14)",
        "scale=1 (1..10): resolution multiplier, cells = 7200*scale^3", false, make_zoo, nullptr},

@@ -8,10 +8,11 @@ namespace {
 
 class MpvoOrderer final : public Orderer {
  public:
+  explicit MpvoOrderer(mpvo::RenumberOption renumber) : renumber_(renumber) {}
   Claims claims() const override { return mpvo::core_claims(false, false); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
-    core_.prepare(scene, clock);
+    core_.prepare(scene, clock, renumber_);
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
@@ -31,18 +32,21 @@ class MpvoOrderer final : public Orderer {
   size_t bytes() const override { return core_.bytes(); }
 
  private:
+  mpvo::RenumberOption renumber_;
   mpvo::MpvoCore core_;
 };
 
 class MpvoncOrderer final : public Orderer {
  public:
+  explicit MpvoncOrderer(mpvo::RenumberOption renumber) : renumber_(renumber) {}
   Claims claims() const override { return mpvo::core_claims(false, false); }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
-    core_.prepare(scene, clock);
-    { auto p = clock.phase("cell centroids"); scene.cell_centroids(); }
-    centroids_ = &core_.scene().cell_centroids().points;
-    marked_.assign(scene.mesh().num_cells(), 0);
+    core_.prepare(scene, clock, renumber_);
+    const Scene& work = core_.scene();  // the input's, or its renumbered copy
+    { auto p = clock.phase("cell centroids"); work.cell_centroids(); }
+    centroids_ = &work.cell_centroids().points;
+    marked_.assign(work.mesh().num_cells(), 0);
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
@@ -90,6 +94,7 @@ class MpvoncOrderer final : public Orderer {
     sort_.sort();
   }
 
+  mpvo::RenumberOption renumber_;
   mpvo::MpvoCore core_;
   const std::vector<Vec3>* centroids_ = nullptr;
   std::vector<uint8_t> marked_;
@@ -101,14 +106,18 @@ class MpvoncOrderer final : public Orderer {
 OrdererInfo mpvo_orderer_info() {
   return {"mpvo", SceneKind::Cells,
           "Williams' MPVO: face arrows and a DFS from the sink cells (exact on convex meshes)",
-          {}, [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoOrderer>(); }};
+          mpvo::renumber_params(), [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<MpvoOrderer>(mpvo::renumber_option(p));
+          }};
 }
 
 OrdererInfo mpvonc_orderer_info() {
   return {"mpvonc", SceneKind::Cells,
           "Williams' MPVONC: MPVO with a DFS first from exterior cells by decreasing centroid "
           "distance (heuristic)",
-          {}, [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<MpvoncOrderer>(); }};
+          mpvo::renumber_params(), [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<MpvoncOrderer>(mpvo::renumber_option(p));
+          }};
 }
 
 }  // namespace vob

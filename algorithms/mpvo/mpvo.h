@@ -1,12 +1,15 @@
 // Plugins `mpvo` and `mpvonc`: Williams' Meshed Polyhedra Visibility Ordering and its
 // nonconvex heuristic (Cook et al., SXMPVO paper, sections 3.2 and 3.3), on MpvoCore.
 //
-// mpvo      no parameters.
+// mpvo      renumber=true curve=hilbert|morton: prepare first renumbers cells and points
+//           along a space-filling curve of the cell centroids (phase "renumber along a space
+//           curve", MpvoCore), so the DFS walks cells close in memory; orders and cycle
+//           reports are in input ids either way.
 //           Phases "I create partial order" (face arrows, sink cells), "II DFS" (from
 //           each sink cell in cell-id order, then from cells left unvisited by cycles).
 //           Exact on convex, acyclic meshes. Across the gaps of a nonconvex or disconnected
 //           mesh it knows no relation, so its error there is what the oracle measures.
-// mpvonc    no parameters.
+// mpvonc    renumber=true curve=hilbert, as mpvo.
 //           Phases "I create partial order", "II sort exterior cells" (cells owning a
 //           front-facing boundary face, by decreasing centroid depth: distance to the eye,
 //           or depth along the view direction for orthographic views; LSD radix sort),

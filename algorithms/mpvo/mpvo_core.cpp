@@ -6,8 +6,20 @@
 #include <string>
 
 #include "harness/geometry/predicates.h"
+#include "harness/scene/space_curve.h"
 
 namespace vob::mpvo {
+
+std::vector<ParamSpec> renumber_params() {
+  return {ParamSpec::boolean("renumber", true,
+                             "renumber cells and points along a space-filling curve of the cell "
+                             "centroids in prepare (orders in input ids either way)"),
+          ParamSpec::choice("curve", "hilbert", {"hilbert", "morton"}, "the curve renumber follows")};
+}
+
+RenumberOption renumber_option(const ResolvedParams& p) {
+  return {p.get_bool("renumber"), p.get_choice("curve") == "morton" ? Curve::Morton : Curve::Hilbert};
+}
 
 void ExtraRelations::build_from_pairs(size_t cells,
                                       const std::vector<std::pair<int32_t, int32_t>>& pairs) {
@@ -37,14 +49,24 @@ size_t ExtraRelations::bytes() const {
          not_sink.capacity();
 }
 
-void MpvoCore::prepare(const Scene& scene, PhaseClock& clock) {
-  { auto p = clock.phase("unique faces"); scene.faces(); }
-  { auto p = clock.phase("face planes"); scene.face_planes(); }
-  bind(scene);
+void MpvoCore::prepare(const Scene& scene, PhaseClock& clock, RenumberOption renumber) {
+  Scene work = scene;
+  std::vector<int32_t> input_id;
+  if (renumber.on) {
+    auto p = clock.phase("renumber along a space curve");
+    RenumberedMesh r = renumber_along_curve(scene.mesh(), renumber.curve);
+    input_id = std::move(r.input_cell);
+    work = Scene::from_mesh(scene.name(), std::move(r.mesh), scene.params());
+  }
+  { auto p = clock.phase("unique faces"); work.faces(); }
+  { auto p = clock.phase("face planes"); work.face_planes(); }
+  bind(work);
+  input_id_ = std::move(input_id);
 }
 
 void MpvoCore::bind(const Scene& scene) {
   scene_ = scene;
+  input_id_.clear();
   mesh_ = &scene_.mesh();
   faces_ = &scene_.faces();
   planes_ = &scene_.face_planes();
@@ -156,7 +178,7 @@ void MpvoCore::report_cycle(int32_t closing, Ordering& out) {
                           : 0;
   std::vector<int32_t> members;
   for (size_t i = stack_.size(); i-- > 0 && members.size() < room;) {
-    members.push_back(stack_[i].cell);
+    members.push_back(input_id(stack_[i].cell));
     if (stack_[i].cell == closing) break;
   }
   std::reverse(members.begin(), members.end());
@@ -171,6 +193,7 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
   const bool has_extra = extra_ && !extra_->offsets.empty();
   const int32_t* xoff = has_extra ? extra_->offsets.data() : nullptr;
   const int32_t* xbehind = has_extra ? extra_->behind.data() : nullptr;
+  const int32_t* in_id = input_id_.empty() ? nullptr : input_id_.data();
 
   stack_.clear();
   stack_.push_back({root, 0});
@@ -213,7 +236,7 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
       state_[child] = kOnStack;
       stack_.push_back({child, 0});
     } else {
-      out.order.push_back(c);
+      out.order.push_back(in_id ? in_id[c] : c);
       state_[c] = kDone;
       stack_.pop_back();
     }
@@ -247,7 +270,8 @@ void MpvoCore::add_counters(Ordering& out) const {
 size_t MpvoCore::bytes() const {
   return neighbour_.capacity() * sizeof(int32_t) + face_slot_.capacity() + sign_.capacity() +
          outbound_.capacity() + behind_mask_.capacity() + state_.capacity() +
-         stack_.capacity() * sizeof(Frame);
+         stack_.capacity() * sizeof(Frame) +
+         (renumbered() ? input_id_.capacity() * sizeof(int32_t) + scene_.bytes() + scene_.derived_bytes() : 0);
 }
 
 }  // namespace vob::mpvo

@@ -20,6 +20,13 @@
 // edge. dfs_unvisited() finishes with every cell not yet output, so the result is always
 // a complete permutation.
 //
+// Renumbering (prepare with renumber.on): the core works on its own copy of the mesh, cells
+// in Hilbert (or Morton) order of their centroids and points by first use (space_curve.h), with
+// faces and planes built from it, so the DFS walks neighbours that lie close in memory. Every
+// cell id the core takes or keeps (roots, signs, ExtraRelations, faces(), scene()) is then
+// in that numbering; only what it writes into an Ordering (order, cycle members) is mapped
+// back to the input's ids, as it is written.
+//
 // Typical frame:
 //   core.create_partial_order(view);                 // phase I
 //   Ordering out;
@@ -35,7 +42,9 @@
 #include <vector>
 
 #include "harness/bench/orderer.h"
+#include "harness/bench/param_spec.h"
 #include "harness/scene/scene.h"
+#include "harness/scene/space_curve.h"
 #include "harness/view/camera.h"
 
 namespace vob::mpvo {
@@ -54,6 +63,15 @@ struct ExtraRelations {
   void clear();
   size_t bytes() const;
 };
+
+// The parameters `renumber` (bool, default true) and `curve` (hilbert|morton) of the
+// plugins that renumber through prepare(): declared here once for mpvo, mpvonc and sxmpvo.
+struct RenumberOption {
+  bool on = false;
+  Curve curve = Curve::Hilbert;
+};
+std::vector<ParamSpec> renumber_params();
+RenumberOption renumber_option(const ResolvedParams& p);
 
 // The claims of an orderer built on MpvoCore: it detects (and breaks) cycles.
 inline Claims core_claims(bool object_exact, bool image_exact) {
@@ -77,9 +95,14 @@ class MpvoCore {
   // Keeps a copy of the Scene handle, which shares the data and the derived structures.
   void bind(const Scene& scene);
   // bind() after the prepare phases "unique faces" and "face planes" (timed in `clock`):
-  // the start of every MPVO-family plugin's prepare.
-  void prepare(const Scene& scene, PhaseClock& clock);
+  // the start of every MPVO-family plugin's prepare. With renumber.on, first the phase
+  // "renumber along a space curve" makes the core's own renumbered scene, which it binds.
+  void prepare(const Scene& scene, PhaseClock& clock, RenumberOption renumber = {});
+  // The scene the core works on: the input's, or its renumbered copy.
   const Scene& scene() const { return scene_; }
+  bool renumbered() const { return !input_id_.empty(); }
+  // Input cell id of a core cell id.
+  int32_t input_id(int32_t c) const { return input_id_.empty() ? c : input_id_[c]; }
   size_t num_cells() const { return outbound_.size(); }
   const MeshFaces& faces() const { return *faces_; }
 
@@ -121,7 +144,8 @@ class MpvoCore {
   void add_counters(Ordering& out) const;
 
   // Memory held: slot adjacency, face signs, per-cell arrow counts and masks, DFS flags
-  // and stack (the scene's faces and planes are counted by the scene).
+  // and stack (the scene's faces and planes are counted by the scene), and when renumbered
+  // the id map, the renumbered mesh and the structures derived from it.
   size_t bytes() const;
 
  private:
@@ -135,6 +159,7 @@ class MpvoCore {
   void report_cycle(int32_t closing, Ordering& out);
 
   Scene scene_;  // keeps the derived structures below alive
+  std::vector<int32_t> input_id_;  // core cell id -> input cell id; empty: the same
   const CellMesh* mesh_ = nullptr;
   const MeshFaces* faces_ = nullptr;
   const FacePlanes* planes_ = nullptr;

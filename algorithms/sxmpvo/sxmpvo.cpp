@@ -22,10 +22,12 @@ constexpr double kTieRelative = 1e-9;
 
 class SxmpvoOrderer final : public Orderer {
  public:
+  explicit SxmpvoOrderer(mpvo::RenumberOption renumber) : renumber_(renumber) {}
   Claims claims() const override { return mpvo::core_claims(false, true); }
 
-  void prepare(const Scene& scene, PhaseClock& clock) override {
-    core_.prepare(scene, clock);
+  void prepare(const Scene& input, PhaseClock& clock) override {
+    core_.prepare(input, clock, renumber_);
+    const Scene& scene = core_.scene();  // the input's, or its renumbered copy
     { auto p = clock.phase("exterior faces"); ext_ = &scene.exterior_faces(); }
     auto p = clock.phase("exterior centroids");
     const size_t b = ext_->face.size();
@@ -166,6 +168,7 @@ class SxmpvoOrderer final : public Orderer {
     pn_.to_relations(extra_);
   }
 
+  mpvo::RenumberOption renumber_;
   mpvo::MpvoCore core_;
   const ExteriorFaces* ext_ = nullptr;     // the scene's exterior faces
   std::vector<Vec3> ext_centroid_;          // and their centroids
@@ -186,7 +189,9 @@ OrdererInfo sxmpvo_orderer_info() {
   return {"sxmpvo", SceneKind::Cells,
           "Cook et al.'s SXMPVO: MPVO arrows plus pseudo-neighbour relations from an A-buffer "
           "of exterior faces at pixel centres (exact at the image resolution)",
-          {}, [](const ResolvedParams&) -> std::unique_ptr<Orderer> { return std::make_unique<SxmpvoOrderer>(); }};
+          mpvo::renumber_params(), [](const ResolvedParams& p) -> std::unique_ptr<Orderer> {
+            return std::make_unique<SxmpvoOrderer>(mpvo::renumber_option(p));
+          }};
 }
 
 }  // namespace vob

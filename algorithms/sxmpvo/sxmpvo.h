@@ -1,11 +1,12 @@
 // Plugin `sxmpvo`: Cook, Max, Silva and Williams' Scanning Exact Meshed Polyhedra
 // Visibility Ordering (IEEE TVCG 2004, sections 4 and 5), on MpvoCore.
 //
-// sxmpvo    no parameters. The image resolution is the view's viewport; samples are the
+// sxmpvo    renumber=true curve=hilbert: cells and points renumbered in prepare, as
+//           mpvo (mpvo.h); orders and cycle reports are in input ids. The image resolution is the view's viewport; samples are the
 //           pixel centres of the shared rasterizer (harness/raster/polygon_raster.h, S = 1),
 //           the same samples the oracle checks at its default S = 1.
 //
-// Prepare: "unique faces", "face planes", "exterior faces" (the Scene's: per boundary face
+// Prepare: ["renumber along a space curve"], "unique faces", "face planes", "exterior faces" (the Scene's: per boundary face
 // its points, compact point ids and owner), "exterior centroids".
 // Phases, under the paper's names:
 //   "I create partial order"  MPVO face arrows and outbound counts (the sink flags);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "datasets/generators/kuhn_block.h"
+#include "datasets/generators/shuffle.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -52,8 +54,11 @@ Scene make_gap(Params& p) {
   // Connectivity offsets are int32: 4 ids per tetrahedron must stay below 2^31.
   if (24.0 * s.nx * s.ny * s.nz >= 2147483647.0)
     throw InputError("gap", "parameters nx ny nz", "more than 536 million tetrahedra");
+  const int shuffle = read_shuffle_param(p);
   if (p.dry_run()) return {};  // parameters checked, nothing generated
-  return Scene::from_mesh("gap", make_gap_mesh(s), p.to_json());
+  CellMesh m = make_gap_mesh(s);
+  if (shuffle > 0) m = shuffle_numbering(m, static_cast<uint64_t>(shuffle));
+  return Scene::from_mesh("gap", std::move(m), p.to_json());
 }
 
 }  // namespace vob

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "datasets/generators/prism_split.h"
+#include "datasets/generators/shuffle.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -240,8 +242,11 @@ Scene make_helix(Params& p) {
   s.cells = p.get_int("cells", 20000, helix_min_cells(s.turns), 50000000);
   s.faces = p.get_int("faces", 0, 0, 50000000);
   if (s.faces > 0) helix_resolution_for_faces(s.cells, s.faces, s.turns);  // InputError now
+  const int shuffle = read_shuffle_param(p);
   if (p.dry_run()) return {};  // parameters checked, nothing generated
-  return Scene::from_mesh("helix", make_helix_mesh(s), p.to_json());
+  CellMesh m = make_helix_mesh(s);
+  if (shuffle > 0) m = shuffle_numbering(m, static_cast<uint64_t>(shuffle));
+  return Scene::from_mesh("helix", std::move(m), p.to_json());
 }
 
 }  // namespace vob

@@ -71,6 +71,8 @@ struct HelixSpec {
   int faces = 0;         // > 0: target exterior faces b (helix_resolution_for_faces)
 };
 CellMesh make_helix_mesh(const HelixSpec& s);
-Scene make_helix(Params& p);  // cells=20000 turns=3 faces=0 (near-isotropic)
+// cells=20000 turns=3 faces=0 (near-isotropic) shuffle=0 (> 0: cells and points renumbered
+// at random from that seed, shuffle.h).
+Scene make_helix(Params& p);
 
 }  // namespace vob
