@@ -118,7 +118,8 @@ def exact(r):
 
 
 def label(r):
-    return f"{r.get('algorithm')} on {r.get('dataset')} view {r.get('view_index')} {r.get('w')}x{r.get('h')}"
+    threads = f" {r['threads']} threads" if r.get("threads") else ""
+    return f"{r.get('algorithm')} on {r.get('dataset')} view {r.get('view_index')} {r.get('w')}x{r.get('h')}{threads}"
 
 
 def ms(s):
