@@ -100,7 +100,7 @@ def check(name, expected, kind, extra=()):
     r = run(argv)
     summary = r.stdout.strip().splitlines()[-1] if r.stdout.strip() else ""
     print(f"{name} {' '.join(extra)}: exit {r.returncode}: {summary}")
-    m = re.search(r": (\d+) of \d+ views with violations \(.*, (\d+) (\w+)\)$", summary)
+    m = re.search(r": (\d+) of \d+ views with violations \(.*, (\d+) (\w+), \d+ threads?\)$", summary)
     if r.returncode != 0 or not m:
         failures.append(f"{name}: exit {r.returncode}: {r.stderr.strip()}")
         return

@@ -107,7 +107,7 @@ class Vobench {
 };
 
 // A progress line of a finished record:
-// "[k/N] MM:SS elapsed, ~MM:SS left: ALG on DATASET view I WxH: T ms/frame, ...".
+// "[k/N] MM:SS elapsed, ~MM:SS left: ALG on DATASET view I WxH tT: T ms/frame, ...".
 bool finished_record(const std::string& line, std::string& label) {
   if (line.find(" ms/frame") == std::string::npos) return false;
   size_t start = line.find(" left: ");
@@ -120,7 +120,7 @@ bool finished_record(const std::string& line, std::string& label) {
 std::string label_of(const nlohmann::json& r) {
   return r["algorithm"].get<std::string>() + " on " + r["dataset"].get<std::string>() + " view " +
          std::to_string(r["view_index"].get<int>()) + " " + std::to_string(r["w"].get<int>()) + "x" +
-         std::to_string(r["h"].get<int>());
+         std::to_string(r["h"].get<int>()) + " t" + std::to_string(r["threads"].get<int>());
 }
 
 // Label -> how many lines of the file hold it; every line must be a whole JSON record.
