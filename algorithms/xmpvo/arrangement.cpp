@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "algorithms/xmpvo/uv_filter.h"
+
 namespace vob::xmpvo {
 
 Box Arrangement::edge_box(const Projection& proj, int32_t e) const {
@@ -38,6 +40,18 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   }
   grid.fill(ids, [&](int32_t e) { return edge_box(proj, e); }, edge_off, edge_items);
   int64_t candidates = 0;
+  crossings_filtered = crossings_rechecked = 0;
+  const bool filter = signs.mode == Mode::Exact && proj.uv_filter;
+  // Proper crossing from the double filter: 1 / 0 when certain, 2 when not.
+  auto filtered_cross = [&](int32_t a, int32_t b, int32_t c, int32_t d) {
+    const std::vector<Uv>& uv = proj.uv;
+    const double s = proj.slack;
+    const int ca = uv_side(uv[a], uv[c], uv[d], s), cb = uv_side(uv[b], uv[c], uv[d], s);
+    if (ca != 2 && cb != 2 && ca == cb) return 0;
+    const int ac = uv_side(uv[c], uv[a], uv[b], s), ad = uv_side(uv[d], uv[a], uv[b], s);
+    if (ac != 2 && ad != 2 && ac == ad) return 0;
+    return ca != 2 && cb != 2 && ac != 2 && ad != 2 ? 1 : 2;
+  };
   for (int r = 0; r < grid.gh; ++r)
     for (int c = 0; c < grid.gw; ++c) {
       const size_t cell = static_cast<size_t>(r) * grid.gw + c;
@@ -51,7 +65,11 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           // Test each pair once: in the bucket of its boxes' common lower corner.
           if (grid.col(std::max(ba.x0, bb.x0)) != c || grid.row(std::max(ba.y0, bb.y0)) != r) continue;
           ++candidates;
-          if (!signs.crosses(points[a], points[b], points[cc], points[d])) continue;
+          const int f = filter ? filtered_cross(a, b, cc, d) : 2;
+          if (f != 2) ++crossings_filtered;
+          else if (filter) ++crossings_rechecked;
+          if (f == 0 || (f == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])))
+            continue;
           vertices.push_back(crossing_vertex(proj, a, b, cc, d, ba, bb));
         }
     }

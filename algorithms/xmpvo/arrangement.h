@@ -23,6 +23,8 @@ struct Arrangement {
   std::vector<int32_t> edge_off, edge_items;       // edges per bucket (CSR)
   std::vector<ArrVertex> vertices;                 // points first, then crossings
   size_t projected_vertices = 0;
+  // Candidate pairs the double filter decided, and those it left to the exact test.
+  int64_t crossings_filtered = 0, crossings_rechecked = 0;
 
   // Returns the number of candidate edge pairs tested.
   int64_t build(const ExteriorFaces& ext, const Projection& proj, Signs& signs);

@@ -42,15 +42,25 @@ void Projection::run(const ExteriorFaces& ext, const Camera& view, Signs& signs,
     for (int k = 0; k < n; ++k) point_used[pt[k]] = 1;
   }
   Box all{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  // Rounding of the projected doubles, bounded generously (d, the dot products, the
+  // division); in orthographic views also the basis' departure from orthogonality.
+  constexpr double kEps = 0x1p-52;
+  const double skew = view.ortho ? std::fabs(dot(rt, fw)) + std::fabs(dot(up, fw)) : 0.0;
+  double err_max = 0;
   for (size_t p = 0; p < points.size(); ++p) {
     if (!point_used[p]) continue;
     const Vec3 d = points[p] - eye;
+    const double dn = std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
     double u = dot(d, rt), v = dot(d, up);
+    double err = 32 * kEps * (dn + std::fabs(u) + std::fabs(v)) + 4 * skew * dn;
     if (!view.ortho) {
       const double z = dot(d, fw);
       u /= z;
       v /= z;
+      err = 32 * kEps * dn * (1 + std::fabs(u) + std::fabs(v)) / z;
+      if (!(z > 0)) err = INFINITY;
     }
+    err_max = std::max(err_max, err);
     uv[p] = {u, v};
     all = {std::min(all.x0, u), std::min(all.y0, v), std::max(all.x1, u), std::max(all.y1, v)};
   }
@@ -61,6 +71,9 @@ void Projection::run(const ExteriorFaces& ext, const Camera& view, Signs& signs,
   const double w = std::max(all.x1 - all.x0, 0.0), h = std::max(all.y1 - all.y0, 0.0);
   slack = kSlackRelative * (std::max({std::fabs(all.x0), std::fabs(all.x1), std::fabs(all.y0),
                                       std::fabs(all.y1)}) + std::max(w, h)) + 1e-300;
+  const double det_n = dot(cross(rt, up), fw);
+  sign_n = (det_n > 0.5) - (det_n < -0.5);  // an orthonormal basis: +1 or -1
+  uv_filter = sign_n != 0 && err_max <= slack / 8;
   grid.fit(all, slack, kept.size());
   face_box.resize(b);
   for (int32_t i : kept) {

@@ -21,6 +21,10 @@ struct Projection {
   std::vector<Box> face_box;
   int64_t front = 0, back = 0, edge_on = 0, behind_eye = 0, crossing_eye = 0;
   double slack = 0;  // bucketing slack in projected units
+  // The double sign filter of uv_filter.h: sign of det(right, up, forward), and whether
+  // every projected point's rounding bound is below slack / 8 (off: exact predicates only).
+  int sign_n = 0;
+  bool uv_filter = false;
   BucketGrid grid;
   std::vector<int32_t> bucket_off, bucket_faces;
 

@@ -1,10 +1,15 @@
 #include "algorithms/xmpvo/ray_queries.h"
 
 #include <algorithm>
+#include <cmath>
+#include <tuple>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+
+#include "algorithms/xmpvo/plane_keys.h"
+#include "algorithms/xmpvo/uv_filter.h"
 
 namespace vob::xmpvo {
 namespace {
@@ -22,20 +27,27 @@ struct Wedge {
 // per-view input is read only.
 class Worker {
  public:
-  explicit Worker(const QueryInput& in) : signs_(in.signs), in_(in), face_stamp_(in.ext.face.size(), -1) {
+  explicit Worker(const QueryInput& in)
+      : signs_(in.signs), in_(in), face_stamp_(in.ext.face.size(), -1),
+        key_stamp_(in.ext.face.size(), -1), key_(in.ext.face.size()) {
     signs_.side = signs_.dis_side = 0;
   }
   size_t bytes() const {
-    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity()) * 4 +
+    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() + key_stamp_.capacity()) * 4 +
+           key_.capacity() * sizeof(PlaneKey) +
            keys_.capacity() * 16 + wedges_.capacity() * sizeof(Wedge) + pairs_.capacity() * 8;
   }
-  void query(int32_t vi);
+  void query(int32_t vi) {
+    run_query(vi);
+    stats_.queries_rechecked += rechecked_;
+  }
 
   QueryStats stats_;
   Signs signs_;
   std::vector<std::pair<int32_t, int32_t>> pairs_;
 
  private:
+  void run_query(int32_t vi);
   int orient_at(const ArrVertex& v, int32_t p, int32_t q);
   int depth(int32_t x, int32_t y);
   void emit(int32_t nearer, int32_t farther);
@@ -46,11 +58,19 @@ class Worker {
   const Vec3& pt(int32_t p) const { return in_.ext.points[p]; }
 
   const QueryInput& in_;
-  std::vector<int32_t> inside_, rays_, sector_, face_stamp_;
+  const PlaneKey& key(int32_t f);
+
+  std::vector<int32_t> inside_, rays_, sector_, face_stamp_, key_stamp_;
+  std::vector<PlaneKey> key_;  // per face, valid where key_stamp_ is the current query
+  int32_t vi_ = -1;            // the current query
   std::vector<std::pair<double, int32_t>> keys_;
   std::vector<Wedge> wedges_;
   const ArrVertex* current_ = nullptr;  // the vertex being queried
   VertexRay ray_;                        // and its ray
+  // The vertex's projected position and radius for the double filter (uv_filter.h);
+  // filter_ off in double / compare modes and when the view's uv rounding is too large.
+  double xc_ = 0, yc_ = 0, rx_ = 0, ry_ = 0;
+  bool filter_ = false, rechecked_ = false;
 };
 
 // Sign of D(v, p, q): side of q relative to the projected line through v and p; with
@@ -59,11 +79,21 @@ int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
   if (p == q) return 0;
   if (v.b < 0) {
     if (p == v.a || q == v.a) return 0;
-    return signs_.edge_side(pt(v.a), pt(p), pt(q));
-  }
-  if ((p == v.a && q == v.b) || (p == v.b && q == v.a) || (p == v.c && q == v.d) ||
-      (p == v.d && q == v.c))
+  } else if ((p == v.a && q == v.b) || (p == v.b && q == v.a) || (p == v.c && q == v.d) ||
+             (p == v.d && q == v.c)) {
     return 0;
+  }
+  if (filter_) {
+    const Projection& pr = in_.proj;
+    const int s = uv_side(xc_, yc_, rx_, ry_, pr.uv[p], pr.uv[q], pr.slack);
+    if (s != 2) {
+      ++stats_.side_filtered;
+      return pr.sign_n * s;
+    }
+    ++stats_.side_rechecked;
+    rechecked_ = true;
+  }
+  if (v.b < 0) return signs_.edge_side(pt(v.a), pt(p), pt(q));
   if (signs_.mode == Mode::Exact) {
     ++signs_.side;
     return vertex_side(ray_, pt(p), pt(q));
@@ -87,12 +117,28 @@ int Worker::depth(int32_t x, int32_t y) {
   const bool touch = v.b < 0 ? has(x, v.a) && has(y, v.a)
                              : (has(x, v.a) && has(x, v.b) && has(y, v.a) && has(y, v.b)) ||
                                    (has(x, v.c) && has(x, v.d) && has(y, v.c) && has(y, v.d));
-  const int at = touch ? 0 : vertex_plane_order(ray_, in_.plane[x], in_.plane[y]);
+  int at = 0;
+  if (!touch) {
+    at = compare_keys(key(x), key(y));
+    if (at == 2) {
+      ++stats_.depth_rechecked;
+      rechecked_ = true;
+      at = vertex_plane_order(ray_, in_.plane[x], in_.plane[y]);
+    }
+  }
   if (at != 0) return at;
   ++stats_.depth_full;
   const int r = depth_order(signs_.g, &e.corners[4 * x], e.size[x], &e.corners[4 * y], e.size[y]);
   stats_.depth_undecided += r == 0;
   return r;
+}
+
+const PlaneKey& Worker::key(int32_t f) {
+  if (key_stamp_[f] != vi_) {
+    key_stamp_[f] = vi_;
+    key_[f] = plane_key(ray_, in_.plane[f]);
+  }
+  return key_[f];
 }
 
 void Worker::emit(int32_t nearer, int32_t farther) {
@@ -112,13 +158,25 @@ bool Worker::covers_after(const ArrVertex& v, const Wedge& w, int32_t ray) {
   return orient_at(v, ray, w.ref) > 0;  // along s or opposite it
 }
 
-void Worker::query(int32_t vi) {
+void Worker::run_query(int32_t vi) {
   const ArrVertex& v = in_.arr.vertices[vi];
   const Projection& proj = in_.proj;
   current_ = &v;
+  vi_ = vi;
   ray_ = v.b < 0 ? VertexRay::at_point(signs_.g, pt(v.a))
                  : VertexRay::at_crossing(signs_.g, pt(v.a), pt(v.b), pt(v.c), pt(v.d));
   ++stats_.vertex_queries;
+  filter_ = signs_.mode == Mode::Exact && proj.uv_filter;
+  rechecked_ = false;
+  if (v.b < 0) {
+    std::tie(xc_, yc_) = proj.uv[v.a];
+    rx_ = ry_ = proj.slack;
+  } else {
+    // The box holds the exact crossing; its centre's rounding widens it a little.
+    xc_ = 0.5 * (v.box.x0 + v.box.x1), yc_ = 0.5 * (v.box.y0 + v.box.y1);
+    rx_ = 0.5 * (v.box.x1 - v.box.x0) + 1e-15 * std::fabs(xc_) + 1e-300;
+    ry_ = 0.5 * (v.box.y1 - v.box.y0) + 1e-15 * std::fabs(yc_) + 1e-300;
+  }
   inside_.clear();
   wedges_.clear();
   const BucketGrid& grid = proj.grid;
@@ -245,6 +303,8 @@ void QueryStats::add(const QueryStats& x) {
   depth_calls += x.depth_calls, depth_full += x.depth_full;
   depth_undecided += x.depth_undecided, degenerate += x.degenerate;
   side += x.side, dis_side += x.dis_side;
+  side_filtered += x.side_filtered, side_rechecked += x.side_rechecked;
+  queries_rechecked += x.queries_rechecked, depth_rechecked += x.depth_rechecked;
   scratch_bytes += x.scratch_bytes;
 }
 

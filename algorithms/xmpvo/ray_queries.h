@@ -30,6 +30,10 @@ struct QueryStats {
   int64_t vertex_queries = 0, sectors = 0, sector_faces = 0, depth_calls = 0,
           depth_full = 0, depth_undecided = 0, degenerate = 0;
   int64_t side = 0, dis_side = 0;  // sign decisions and disagreements (compare mode)
+  // Side tests the double filter decided, those it left to the exact predicate, and the
+  // queries with at least one such exact re-check.
+  int64_t side_filtered = 0, side_rechecked = 0, queries_rechecked = 0;
+  int64_t depth_rechecked = 0;  // depth comparisons the filtered plane keys left undecided
   size_t scratch_bytes = 0;        // the query threads' scratch
   void add(const QueryStats& o);
 };

@@ -118,6 +118,12 @@ void XmpvoOrderer::add_counters(Ordering& out, int64_t candidates) const {
   k["depth_order_calls"] = static_cast<double>(stats_.depth_calls);
   k["depth_order_full"] = static_cast<double>(stats_.depth_full);
   k["depth_undecided"] = static_cast<double>(stats_.depth_undecided);
+  k["crossings_filtered"] = static_cast<double>(arr_.crossings_filtered);
+  k["crossings_rechecked"] = static_cast<double>(arr_.crossings_rechecked);
+  k["side_filtered"] = static_cast<double>(stats_.side_filtered);
+  k["side_rechecked"] = static_cast<double>(stats_.side_rechecked);
+  k["depth_rechecked"] = static_cast<double>(stats_.depth_rechecked);
+  k["queries_rechecked"] = static_cast<double>(stats_.queries_rechecked);
   k["degenerate_coverage"] = static_cast<double>(stats_.degenerate);
   k["relations"] = static_cast<double>(pairs_.size());
   k["grid_buckets"] = static_cast<double>(proj_.grid.buckets());
