@@ -38,7 +38,9 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
     edges[e] = {static_cast<int32_t>(keys[e] >> 32), static_cast<int32_t>(keys[e] & 0xffffffffu)};
     ids[e] = static_cast<int32_t>(e);
   }
-  grid.fill(ids, [&](int32_t e) { return edge_box(proj, e); }, edge_off, edge_items);
+  box_.resize(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e) box_[e] = edge_box(proj, static_cast<int32_t>(e));
+  grid.fill(ids, [&](int32_t e) { return box_[e]; }, edge_off, edge_items);
   int64_t candidates = 0;
   crossings_filtered = crossings_rechecked = 0;
   const bool filter = signs.mode == Mode::Exact && proj.uv_filter;
@@ -57,11 +59,11 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
       const size_t cell = static_cast<size_t>(r) * grid.gw + c;
       for (int32_t x = edge_off[cell]; x < edge_off[cell + 1]; ++x)
         for (int32_t y = x + 1; y < edge_off[cell + 1]; ++y) {
+          const Box &ba = box_[edge_items[x]], &bb = box_[edge_items[y]];
+          if (!ba.overlaps(bb)) continue;
           const auto [a, b] = edges[edge_items[x]];
           const auto [cc, d] = edges[edge_items[y]];
           if (a == cc || a == d || b == cc || b == d) continue;  // no proper crossing
-          const Box ba = edge_box(proj, edge_items[x]), bb = edge_box(proj, edge_items[y]);
-          if (!ba.overlaps(bb)) continue;
           // Test each pair once: in the bucket of its boxes' common lower corner.
           if (grid.col(std::max(ba.x0, bb.x0)) != c || grid.row(std::max(ba.y0, bb.y0)) != r) continue;
           ++candidates;
@@ -108,7 +110,7 @@ ArrVertex Arrangement::crossing_vertex(const Projection& proj, int32_t a, int32_
 
 size_t Arrangement::bytes() const {
   return edges.capacity() * 8 + (edge_off.capacity() + edge_items.capacity()) * 4 +
-         vertices.capacity() * sizeof(ArrVertex);
+         vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box);
 }
 
 }  // namespace vob::xmpvo

@@ -31,6 +31,7 @@ struct Arrangement {
   size_t bytes() const;
 
  private:
+  std::vector<Box> box_;  // per edge, its projected box
   Box edge_box(const Projection& proj, int32_t e) const;
   ArrVertex crossing_vertex(const Projection& proj, int32_t a, int32_t b, int32_t c, int32_t d,
                             const Box& ba, const Box& bb) const;

@@ -42,8 +42,22 @@ struct PlaneKey {
   int den_sign;  // fd_sign(den)
 };
 
-// The ray parameter of face plane f on the vertex's ray (the terms of vertex_plane_order).
-PlaneKey plane_key(const VertexRay& r, const FacePlane& f);
+// The vertex-independent part of a face plane's key at one view: n . (f0 - eye)
+// (perspective) or n . f0 and n . dir (orthographic), n the plane's normal.
+struct ViewPlane {
+  Fd a, b;
+  static ViewPlane of(const ViewGeometry& g, const FacePlane& f);
+};
+
+// The vertex's part: h - w eye (perspective) or h (orthographic), and w.
+struct RayTerms {
+  Fd w, q[3];
+  static RayTerms of(const VertexRay& r);
+};
+
+// The ray parameter of face plane f on the vertex's ray (the terms of vertex_plane_order,
+// regrouped: the bound is of the same exact value).
+PlaneKey plane_key(const ViewGeometry& g, const RayTerms& r, const FacePlane& f, const ViewPlane& vp);
 
 // -1 when a's plane is met first, +1 b's; 2 when the filter cannot tell (then the exact
 // vertex_plane_order decides, 0 included).

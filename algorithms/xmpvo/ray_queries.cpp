@@ -27,13 +27,13 @@ struct Wedge {
 // per-view input is read only.
 class Worker {
  public:
-  explicit Worker(const QueryInput& in)
-      : signs_(in.signs), in_(in), face_stamp_(in.ext.face.size(), -1),
-        key_stamp_(in.ext.face.size(), -1), key_(in.ext.face.size()) {
+  Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane)
+      : signs_(in.signs), in_(in), view_plane_(view_plane), face_stamp_(in.ext.face.size(), -1),
+        key_stamp_(in.ext.face.size(), -1), key_(in.ext.face.size()), touch_(in.ext.face.size()) {
     signs_.side = signs_.dis_side = 0;
   }
   size_t bytes() const {
-    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() + key_stamp_.capacity()) * 4 +
+    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() + key_stamp_.capacity()) * 4 + touch_.capacity() +
            key_.capacity() * sizeof(PlaneKey) +
            keys_.capacity() * 16 + wedges_.capacity() * sizeof(Wedge) + pairs_.capacity() * 8;
   }
@@ -58,10 +58,13 @@ class Worker {
   const Vec3& pt(int32_t p) const { return in_.ext.points[p]; }
 
   const QueryInput& in_;
+  const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
+  RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
 
   std::vector<int32_t> inside_, rays_, sector_, face_stamp_, key_stamp_;
   std::vector<PlaneKey> key_;  // per face, valid where key_stamp_ is the current query
+  std::vector<uint8_t> touch_;  // per face, valid with key_: touch bits
   int32_t vi_ = -1;            // the current query
   std::vector<std::pair<double, int32_t>> keys_;
   std::vector<Wedge> wedges_;
@@ -107,19 +110,11 @@ int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
 int Worker::depth(int32_t x, int32_t y) {
   ++stats_.depth_calls;
   const ExteriorFaces& e = in_.ext;
-  const ArrVertex& v = *current_;
-  auto has = [&](int32_t f, int32_t p) {
-    for (int k = 0; k < e.size[f]; ++k)
-      if (e.vertex[4 * f + k] == p) return true;
-    return false;
-  };
+  const PlaneKey &kx = key(x), &ky = key(y);
   // Faces sharing the vertex (or the crossing edge) meet the ray at the same point.
-  const bool touch = v.b < 0 ? has(x, v.a) && has(y, v.a)
-                             : (has(x, v.a) && has(x, v.b) && has(y, v.a) && has(y, v.b)) ||
-                                   (has(x, v.c) && has(x, v.d) && has(y, v.c) && has(y, v.d));
   int at = 0;
-  if (!touch) {
-    at = compare_keys(key(x), key(y));
+  if ((touch_[x] & touch_[y]) == 0) {
+    at = compare_keys(kx, ky);
     if (at == 2) {
       ++stats_.depth_rechecked;
       rechecked_ = true;
@@ -136,7 +131,13 @@ int Worker::depth(int32_t x, int32_t y) {
 const PlaneKey& Worker::key(int32_t f) {
   if (key_stamp_[f] != vi_) {
     key_stamp_[f] = vi_;
-    key_[f] = plane_key(ray_, in_.plane[f]);
+    key_[f] = plane_key(signs_.g, terms_, in_.plane[f], view_plane_[f]);
+    // Bit 0: f holds the vertex (a point) or the edge (a, b); bit 1: the edge (c, d).
+    const ArrVertex& v = *current_;
+    const int32_t* p = &in_.ext.vertex[4 * f];
+    const int n = in_.ext.size[f];
+    auto has = [&](int32_t q) { return p[0] == q || p[1] == q || p[2] == q || (n > 3 && p[3] == q); };
+    touch_[f] = v.b < 0 ? has(v.a) : (has(v.a) && has(v.b)) | ((has(v.c) && has(v.d)) << 1);
   }
   return key_[f];
 }
@@ -145,8 +146,13 @@ void Worker::emit(int32_t nearer, int32_t farther) {
   // Leaving the mesh through `nearer`, entering it again through `farther`.
   const std::vector<int8_t>& facing = in_.proj.facing;
   const std::vector<int32_t>& cell = in_.ext.cell;
-  if (facing[nearer] < 0 && facing[farther] > 0 && cell[nearer] != cell[farther])
-    pairs_.push_back({cell[nearer], cell[farther]});
+  if (facing[nearer] < 0 && facing[farther] > 0 && cell[nearer] != cell[farther]) {
+    const std::pair<int32_t, int32_t> p{cell[nearer], cell[farther]};
+    // Neighbouring vertices repeat pairs: skip the most recent ones before the final sort.
+    for (size_t k = pairs_.size(), m = 0; k > 0 && m < 4; --k, ++m)
+      if (pairs_[k - 1] == p) return;
+    pairs_.push_back(p);
+  }
 }
 
 bool Worker::covers_after(const ArrVertex& v, const Wedge& w, int32_t ray) {
@@ -165,6 +171,7 @@ void Worker::run_query(int32_t vi) {
   vi_ = vi;
   ray_ = v.b < 0 ? VertexRay::at_point(signs_.g, pt(v.a))
                  : VertexRay::at_crossing(signs_.g, pt(v.a), pt(v.b), pt(v.c), pt(v.d));
+  terms_ = RayTerms::of(ray_);
   ++stats_.vertex_queries;
   filter_ = signs_.mode == Mode::Exact && proj.uv_filter;
   rechecked_ = false;
@@ -242,7 +249,7 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
   const int inner = -in_.proj.facing[f];  // edge_side of the projection's inside, every edge
   unsigned zeros = 0;
   for (int k = 0; k < n; ++k) {
-    const int s = orient_at(v, p[k], p[(k + 1) % n]) * inner;
+    const int s = orient_at(v, p[k], p[k + 1 < n ? k + 1 : 0]) * inner;
     if (s < 0) return;
     if (s == 0) zeros |= 1u << k;
   }
@@ -311,7 +318,9 @@ void QueryStats::add(const QueryStats& x) {
 std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, QueryStats& stats) {
   // Queries are independent: threads take runs of vertices; the relation set, sorted and
   // deduplicated, and the summed counters do not depend on the split.
-  tbb::enumerable_thread_specific<Worker> workers([&in] { return Worker(in); });
+  std::vector<ViewPlane> view_plane(in.plane.size());
+  for (int32_t f : in.proj.kept) view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane); });
   tbb::parallel_for(tbb::blocked_range<size_t>(0, in.arr.vertices.size(), 512),
                     [&](const tbb::blocked_range<size_t>& r) {
                       Worker& w = workers.local();
