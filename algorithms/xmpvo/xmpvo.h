@@ -37,6 +37,11 @@
 //   "DFS"  MpvoCore's DFS with the relations (sinks, then unvisited cells; cycles reported
 //       and broken).
 //
+// Exact mode filters in doubles first (uv_filter.h: sides and crossings from the projected
+// doubles with a bound for every rounding; plane_keys.h: each face's depth key once per
+// query, with a running error bound) and calls the exact predicates only where the double
+// answer is too close to call; double and compare modes run no filter.
+//
 // Limits: faces crossing a perspective eye's plane (eye inside or beside the mesh) are
 // skipped (counter faces_crossing_eye_plane); rays near them may miss relations. Faces
 // are taken as planar convex polygons (the plane of the first three vertices).
@@ -51,7 +56,10 @@
 // opposite ways -- volumes touching face to face -- are ordered by coplanar_order), degenerate_coverage (a face whose projection is met
 // in a degenerate way at a vertex, skipped), grid_buckets, bytes_*; in compare mode the
 // disagree_* counts and decision totals facing_decisions, side_decisions,
-// crossing_decisions.
+// crossing_decisions. The filters' share: side_filtered / side_rechecked (side tests the
+// double filter decided / left to the exact predicate), crossings_filtered /
+// crossings_rechecked (candidate edge pairs), depth_rechecked (depth keys too close to
+// call), queries_rechecked (vertex queries with any exact re-check).
 #pragma once
 #include "harness/bench/registry.h"
 
