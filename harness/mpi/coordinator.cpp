@@ -18,6 +18,8 @@ namespace vob::farm {
 int coordinate(const FarmRequest& req, int ranks, const nlohmann::json& placement) {
   const auto t0 = std::chrono::steady_clock::now();
   if (req.before) req.before();
+  // Opened first: it repairs a last line a killed farm left half-written, before it is read.
+  ResultsFile results(req.results_path);
   const std::string costs = req.costs_path.empty() ? req.results_path : req.costs_path;
   std::vector<JobGroup> groups = plan_groups(req.suites, KnownRecords::read(req.results_path), RecordedTimes::read(costs));
   std::erase_if(groups, [](const JobGroup& g) { return g.done.size() == g.keys.size(); });
@@ -25,7 +27,6 @@ int coordinate(const FarmRequest& req, int ranks, const nlohmann::json& placemen
                    [](const JobGroup& a, const JobGroup& b) { return a.cost_to_do > b.cost_to_do; });
   size_t to_do = 0;
   for (const JobGroup& g : groups) to_do += g.keys.size() - g.done.size();
-  ResultsFile results(req.results_path);
   std::unique_ptr<ResultsFile> failures;  // opened at the first failure
   std::fprintf(stderr, "%s: MPI farm of %d ranks (rank 0 on %s hands out, %d workers): %zu job groups, %zu jobs to do\n",
                req.name.c_str(), ranks, placement.value("host", "?").c_str(), ranks - 1, groups.size(), to_do);
