@@ -62,6 +62,8 @@ std::string job_line(const Job& j) {
 }
 }  // namespace
 
+std::string job_unit(const Job& job) { return job.kind == Job::Kind::Probe ? job.probe->label() : job.spec; }
+
 SceneKind dataset_kind(const DatasetSpec& ds) {
   return ds.input.empty() ? find_dataset(ds.name).kind : input_kind(ds);
 }
@@ -170,6 +172,7 @@ PlannedJob planned(const SuiteSpec& suite, const Job& j, double primitives, cons
   PlannedJob pj;
   pj.key = j.key;
   pj.line = job_line(j);
+  pj.unit = job_unit(j);
   pj.probe = j.kind == Job::Kind::Probe;
   pj.pixels = pj.probe ? 0 : double(j.w) * j.h;
   pj.done = known.keys.count(j.key) > 0;

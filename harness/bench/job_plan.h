@@ -42,6 +42,7 @@ double probe_job_cost(double primitives, int repeats, int warmup);
 
 struct PlannedJob {
   std::string key, line;  // line: "mpvo view 3 512x512" or the probe's label
+  std::string unit;       // what is prepared once per dataset: the orderer spec or the probe's label
   double pixels = 0;      // orderer jobs; 0 for probes
   bool probe = false, done = false;  // done: its key is in the results file
   double cost = 0;
@@ -73,6 +74,8 @@ PlannedDataset plan_made(const SuiteSpec& suite, const std::string& label, const
 double job_cost(const SuiteSpec& suite, const Job& job, double primitives);
 // The kind of scene a dataset makes, without making it (an input file's from its extension).
 SceneKind dataset_kind(const DatasetSpec& ds);
+// The job's unit on its dataset (job_partition.h groups jobs by it): spec or probe label.
+std::string job_unit(const Job& job);
 // A guess at a dataset's primitives from its parameters, without generating it; 0 if none.
 double estimated_primitives(const DatasetSpec& ds, std::string* from);
 

@@ -12,6 +12,9 @@ nlohmann::json Record::to_json() const {
   j["repeats"] = repeats;
   j["warmup"] = warmup;
   j["threads"] = threads;
+  if (placement.is_object())
+    for (const auto& [k, v] : placement.items()) j[k] = v;
+  j["job_seconds"] = job_seconds;
   if (!dataset_spec.is_null() || probe.empty()) {
     j["dataset"] = dataset;
     j["dataset_spec"] = dataset_spec;

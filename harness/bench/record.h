@@ -22,6 +22,10 @@ struct Record {
   int repeats = 0, warmup = 0, threads = 0;
   std::string reproduction, paper, scale;  // when run by reproduce (paper empty: null)
   std::string run_id;             // names the run's context line (context.h)
+  // Where it ran (runner.h RunOptions::placement): host, rank, ranks, ranks_on_host, and
+  // core (--pin) or shard ("I/N") when set; its keys go to the top level of the record.
+  nlohmann::json placement;
+  double job_seconds = 0;         // wall time of the job (frames, oracle, images; or the probe)
 
   // Orderer records.
   std::string algorithm;          // the spec as the suite gave it

@@ -1,5 +1,6 @@
 #include "harness/bench/runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <memory>
@@ -7,8 +8,11 @@
 
 #include <tbb/global_control.h>
 
+#include <unistd.h>
+
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
+#include "harness/bench/job_partition.h"
 #include "harness/bench/reporters.h"
 #include "harness/scene/cell_overlap.h"
 #include "harness/scene/input_error.h"
@@ -67,30 +71,76 @@ Scene make_checked_scene(const DatasetSpec& ds, bool validate_full) {
   }
   return scene;
 }
+
+// The scene of `ds`, from the caller's cache when it holds it (the cache's old scene is
+// dropped first: one scene in memory at a time).
+std::shared_ptr<const Scene> cached_scene(const DatasetSpec& ds, const RunOptions& opt) {
+  SceneCache* cache = opt.scene_cache;
+  if (cache && cache->scene && cache->label == ds.label()) return cache->scene;
+  if (cache) cache->scene.reset();
+  auto scene = std::make_shared<const Scene>(make_checked_scene(ds, opt.validate_full));
+  if (cache) *cache = {ds.label(), scene};
+  return scene;
+}
+
+// The results file as a sink: the run's context line before its first record.
+class FileSink : public RecordSink {
+ public:
+  FileSink(const std::string& path, nlohmann::json context) : reporter_(path, std::move(context)) {}
+  bool done(const std::string& key) override { return reporter_.done(key); }
+  bool report(const Record& rec) override { return reporter_.report(rec); }
+
+ private:
+  ResultsReporter reporter_;
+};
 }  // namespace
+
+nlohmann::json lone_placement() {
+  char host[256] = "unknown";
+  gethostname(host, sizeof host - 1);
+  return {{"host", host}, {"rank", 0}, {"ranks", 1}, {"ranks_on_host", 1}};
+}
 
 RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
   namespace fs = std::filesystem;
   RunSummary summary;
   ThreadLimit limit;
-  const std::string run_id = new_run_id();
-  ResultsReporter results(opt.results_path, context_line(run_id, suite_context(suite)));
+  const std::string run_id = opt.run_id.empty() ? new_run_id() : opt.run_id;
+  std::optional<FileSink> file_sink;
+  if (!opt.sink) file_sink.emplace(opt.results_path, context_line(run_id, opt.context.is_null() ? suite_context(suite) : opt.context));
+  RecordSink& results = opt.sink ? *opt.sink : *file_sink;
   const std::string image_dir =
       !opt.image_dir.empty() ? opt.image_dir : (fs::path(opt.results_path).parent_path() / "images").string();
   const ImageReporter images(suite, image_dir, fs::path(opt.results_path).parent_path().string());
   if (images.writes_files() || !suite.probes.empty()) require_writable_folder(image_dir);
-  // [k/N] and the time left (progress.h): N counted before the first scene is made.
-  const KnownRecords own_known = opt.tracker && opt.known ? KnownRecords() : KnownRecords::read(opt.results_path);
+  // [k/N] and the time left (progress.h): N counted before the first scene is made. A sink
+  // (a farm worker) never reads the file rank 0 is writing.
+  const KnownRecords own_known =
+      opt.tracker && opt.known ? KnownRecords() : opt.sink ? KnownRecords() : KnownRecords::read(opt.results_path);
   const KnownRecords& known = opt.tracker && opt.known ? *opt.known : own_known;
   const RunPlan planned = plan_run(suite, opt.tags, known);
+  const std::string suite_name = opt.tags.suite_name(suite);
+  const auto group_of = [&](const std::string& dataset, const std::string& unit) {
+    return group_id(suite_name, dataset, unit);
+  };
+  const auto taken = [&](const std::string& group) { return !opt.take_group || opt.take_group(group); };
   ProgressTracker own_tracker;
   ProgressTracker& tracker = opt.tracker ? *opt.tracker : own_tracker;
   if (!opt.tracker) {
     tracker.set_calibration(known.seconds_per_unit());
-    tracker.add(planned.jobs(), planned.cost_to_do());
+    size_t jobs = 0;
+    double cost = 0;
+    for (const PlannedDataset& d : planned.datasets)
+      for (const PlannedJob& j : d.jobs)
+        if (taken(group_of(d.label, j.unit))) {
+          ++jobs;
+          cost += j.done ? 0 : j.cost;
+        }
+    tracker.add(jobs, cost);
   }
   const ConsoleReporter console(with_status(opt.progress, tracker));
-  const Record base = base_record(suite, opt, run_id);
+  Record base = base_record(suite, opt, run_id);
+  base.placement = opt.placement.is_null() ? lone_placement() : opt.placement;
   auto stop = [&] { return summary.stopped = opt.stop_requested && opt.stop_requested(); };
   // Writes a finished record, counting it.
   auto report = [&](const Record& rec) {
@@ -98,24 +148,54 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     ++(written ? summary.written : summary.written_elsewhere);
     console.record(rec, written);
   };
+  // A failed job: reported and counted when the caller takes failures, else thrown on.
+  auto failed = [&](const std::string& key, const std::string& group, const std::exception& e) {
+    if (!opt.on_failure) throw;
+    opt.on_failure(key, group, e.what());
+    ++summary.failed;
+  };
 
   const auto plans = plan_datasets(suite);
   for (size_t di = 0; di < plans.size(); ++di) {
     const DatasetPlan& plan = plans[di];
+    const std::string label = plan.dataset.label();
+    const PlannedDataset& pd = planned.datasets[di];
+    if (opt.take_group &&
+        std::none_of(pd.jobs.begin(), pd.jobs.end(), [&](const PlannedJob& j) { return taken(group_of(label, j.unit)); }))
+      continue;
     if (stop()) return summary;
     const auto t0 = std::chrono::steady_clock::now();
-    const Scene scene = make_checked_scene(plan.dataset, opt.validate_full);
-    console.dataset(di, plans.size(), plan.dataset.label(), scene, seconds_since(t0));
+    std::shared_ptr<const Scene> made;
+    try {
+      made = cached_scene(plan.dataset, opt);
+    } catch (const std::exception& e) {
+      if (!opt.on_failure) throw;
+      for (const PlannedJob& j : pd.jobs)
+        if (taken(group_of(label, j.unit)) && !results.done(j.key)) {
+          failed(j.key, group_of(label, j.unit), e);
+          tracker.skipped(j.done ? 0 : j.cost);
+        }
+      continue;
+    }
+    const Scene& scene = *made;
+    console.dataset(di, plans.size(), label, scene, seconds_since(t0));
     Record dataset_base = base;
-    dataset_base.dataset = plan.dataset.label();
+    dataset_base.dataset = label;
     dataset_base.row = plan.dataset.row_label();
     dataset_base.dataset_spec = plan.dataset.to_json();
     dataset_base.facts = scene_facts(scene);
-    const std::vector<Job> jobs = dataset_jobs(suite, plan, scene, opt.tags);
+    std::vector<Job> jobs = dataset_jobs(suite, plan, scene, opt.tags);
+    std::erase_if(jobs, [&](const Job& j) { return !taken(group_of(label, job_unit(j))); });
     const double primitives = double(scene.num_primitives());
-    const PlannedDataset made = plan_made(suite, plan.dataset.label(), jobs, primitives, known);
-    tracker.replace(planned.datasets[di].jobs.size(), planned.datasets[di].cost_to_do(), made.jobs.size(),
-                    made.cost_to_do());
+    const PlannedDataset now = plan_made(suite, label, jobs, primitives, known);
+    double old_cost = 0;
+    size_t old_jobs = 0;
+    for (const PlannedJob& j : pd.jobs)
+      if (taken(group_of(label, j.unit))) {
+        ++old_jobs;
+        old_cost += j.done ? 0 : j.cost;
+      }
+    tracker.replace(old_jobs, old_cost, now.jobs.size(), now.cost_to_do());
     std::unique_ptr<PreparedOrderer> prepared;  // of the current spec, once a record is missing
     int prepared_threads = -1;                  // the thread count it was prepared under
     for (const Job& job : jobs) {
@@ -128,27 +208,37 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
       limit.set(job.threads);
       Record job_base = dataset_base;
       job_base.threads = run_threads();
-      if (job.kind == Job::Kind::Probe) {
-        Record rec = run_probe_job(job, &scene, suite, &plan.dataset, job_base, image_dir, opt.progress);
+      const auto job_start = std::chrono::steady_clock::now();
+      try {
+        if (job.kind == Job::Kind::Probe) {
+          Record rec = run_probe_job(job, &scene, suite, &plan.dataset, job_base, image_dir, opt.progress);
+          rec.job_seconds = seconds_since(job_start);
+          tracker.finished(job_cost(suite, job, primitives));
+          report(rec);
+          continue;
+        }
+        // Prepared again per thread count: prepare is timed too, and may run in parallel.
+        if (!prepared || prepared->spec != job.spec || prepared_threads != job.threads) {
+          prepared.reset();  // the previous orderer's memory goes first
+          prepared = std::make_unique<PreparedOrderer>(prepare_orderer(job.spec, scene));
+          prepared_threads = job.threads;
+        }
+        Measurement m = measure_orderer_job(job, *prepared, scene, suite, job_base);
+        if (m.violated) ++summary.violations;
+        images.report(m, scene, job.camera);
+        m.record.job_seconds = seconds_since(job_start);
         tracker.finished(job_cost(suite, job, primitives));
-        report(rec);
-        continue;
+        report(m.record);
+      } catch (const std::exception& e) {
+        prepared.reset();  // an orderer that threw is not trusted with the next view
+        failed(job.key, group_of(label, job_unit(job)), e);
+        tracker.finished(job_cost(suite, job, primitives));
       }
-      // Prepared again per thread count: prepare is timed too, and may run in parallel.
-      if (!prepared || prepared->spec != job.spec || prepared_threads != job.threads) {
-        prepared.reset();  // the previous orderer's memory goes first
-        prepared = std::make_unique<PreparedOrderer>(prepare_orderer(job.spec, scene));
-        prepared_threads = job.threads;
-      }
-      Measurement m = measure_orderer_job(job, *prepared, scene, suite, job_base);
-      if (m.violated) ++summary.violations;
-      images.report(m, scene, job.camera);
-      tracker.finished(job_cost(suite, job, primitives));
-      report(m.record);
     }
   }
   for (const ProbeSpec* probe : sceneless_probes(suite))
     for (const Job& job : sceneless_jobs(suite, *probe, opt.tags)) {
+      if (!taken(group_of("", job_unit(job)))) continue;
       if (stop()) return summary;
       if (results.done(job.key)) {
         ++summary.skipped;
@@ -158,9 +248,16 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
       limit.set(job.threads);
       Record job_base = base;
       job_base.threads = run_threads();
-      Record rec = run_probe_job(job, nullptr, suite, nullptr, job_base, image_dir, opt.progress);
-      tracker.finished(job_cost(suite, job, 0));
-      report(rec);
+      const auto job_start = std::chrono::steady_clock::now();
+      try {
+        Record rec = run_probe_job(job, nullptr, suite, nullptr, job_base, image_dir, opt.progress);
+        rec.job_seconds = seconds_since(job_start);
+        tracker.finished(job_cost(suite, job, 0));
+        report(rec);
+      } catch (const std::exception& e) {
+        failed(job.key, group_of("", job_unit(job)), e);
+        tracker.finished(job_cost(suite, job, 0));
+      }
     }
   return summary;
 }

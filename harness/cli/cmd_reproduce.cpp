@@ -7,11 +7,13 @@
 #include <iostream>
 
 #include "harness/bench/names.h"
+#include "harness/bench/runner.h"
 #include "harness/bench/reproduction.h"
 #include "harness/bench/resources.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/python_script.h"
 #include "harness/cli/reproduce.h"
+#include "harness/cli/shard.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/cli/thread_option.h"
 #include "harness/scene/input_error.h"
@@ -29,6 +31,54 @@ int exit_status(int status) {
   std::vector<std::string> names;
   for (const auto& r : list_reproductions(suites_dir)) names.push_back(r.name);
   throw InputError("reproduction", "'" + name + "'", "is not known (" + known_names_hint(name, names) + ")");
+}
+
+std::vector<FarmSuite> farm_suites(const std::vector<Reproduction>& reps) {
+  std::vector<FarmSuite> suites;
+  for (const Reproduction& rep : reps)
+    for (const SuiteSpec& s : rep.suites) suites.push_back({s, RunTags{rep.name, rep.paper, rep.scale}});
+  return suites;
+}
+
+// --shard I/N: the part of the reproductions' jobs this shard runs (none: all).
+RunPart shard_part(const std::vector<Reproduction>& reps, const SpreadOptions& spread) {
+  RunPart part;
+  if (!spread.sharded()) return part;
+  part.take_group = shard_filter(farm_suites(reps), spread, std::cerr);
+  part.placement = lone_placement();
+  part.placement["shard"] = spread.shard_text();
+  return part;
+}
+
+int spread_dry_run(const std::vector<Reproduction>& reps, const std::string& out, bool force,
+                   const SpreadOptions& spread) {
+  dry_run_reproductions(reps, out, force);
+  if (spread.sharded()) shard_filter(farm_suites(reps), spread, std::cout);
+  if (spread.ranks > 0) {
+    const std::string results = out + "/results.jsonl";
+    const std::string from = spread.costs.empty() ? results : spread.costs;
+    const KnownRecords known = force ? KnownRecords() : KnownRecords::read(results);
+    const RecordedTimes times = RecordedTimes::read(from);
+    print_makespan(std::cout, plan_groups(farm_suites(reps), known, times), spread.ranks, times, from);
+  }
+  return 0;
+}
+
+// --mpi: the reproductions' suites as one farm into OUT/results.jsonl; rank 0 prepares the
+// folder first and builds the tables after (`tables`).
+int farm_reproductions(const std::vector<Reproduction>& reps, const std::string& out, bool force,
+                       const SpreadOptions& spread, std::function<int(int)> tables) {
+  const StopSignals signals;
+  FarmRequest req;
+  req.name = "reproduce " + (reps.size() == 1 ? reps.front().name : std::string("all"));
+  req.suites = farm_suites(reps);
+  req.results_path = out + "/results.jsonl";
+  req.costs_path = spread.costs;
+  req.pin = spread.pin;
+  req.stop_signal = [] { return StopSignals::received(); };
+  req.before = [=] { prepare_folder(reps, out, force); };
+  req.after = std::move(tables);
+  return run_farm(req);
 }
 }  // namespace
 
@@ -60,7 +110,10 @@ Command add_reproduce_command(CLI::App& app) {
       ->check(CLI::IsMember({"jsonl", "gbench"}));
   auto threads = std::make_shared<ThreadOption>();
   threads->add_to(*cmd);
+  auto spread = std::make_shared<SpreadOptions>();
+  spread->add_to(*cmd);
   return [=]() {
+    spread->check(*dry_run);
     const auto limit = threads->limit();
     // Google Benchmark's JSON of the finished folder, beside its results.jsonl.
     const auto with_format = [=](int status, const std::string& folder) {
@@ -77,7 +130,8 @@ Command add_reproduce_command(CLI::App& app) {
     // Installed, nothing is written into the prefix: ./vobench-out/NAME instead.
     if (out.empty())
       out = (installed() ? std::string("vobench-out") : resource_path("reports/out")) + "/" + *name +
-            (scale == "default" ? "" : "-" + scale);
+            (scale == "default" ? "" : "-" + scale) +
+            (spread->sharded() ? "-shard" + std::to_string(spread->index) + "of" + std::to_string(spread->count) : "");
     if (*name == "all" && find_reproduction(suites_dir, "all").empty()) {
       std::vector<Reproduction> reps;  // every file validated before any work
       for (const auto& e : list_reproductions(suites_dir)) {
@@ -85,11 +139,14 @@ Command add_reproduce_command(CLI::App& app) {
         threads->apply(rep);
         if (!rep.paper.empty()) reps.push_back(std::move(rep));
       }
-      if (*dry_run) {
-        dry_run_reproductions(reps, out, *force);
-        return 0;
-      }
-      const int status = with_format(reproduce_all(reps, out, *force), out);
+      if (*dry_run) return spread_dry_run(reps, out, *force, *spread);
+      if (spread->mpi)
+        return exit_status(farm_reproductions(reps, out, *force, *spread, [=](int status) {
+          const int tables = run_python_script("build_tables.py", {out});
+          return with_format(status != 0 ? status : tables, out);
+        }));
+      const RunPart part = shard_part(reps, *spread);
+      const int status = with_format(reproduce_all(reps, out, *force, &part), out);
       if (status == 0) std::cerr << "reproduce all: wrote " << out << "/claims-summary.md\n";
       return exit_status(status);
     }
@@ -97,11 +154,13 @@ Command add_reproduce_command(CLI::App& app) {
     if (path.empty()) unknown_reproduction(*name, suites_dir);
     Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
     threads->apply(rep);
-    if (*dry_run) {
-      dry_run_reproductions({rep}, out, *force);
-      return 0;
-    }
-    const int status = with_format(reproduce(rep, out, *force), out);
+    if (*dry_run) return spread_dry_run({rep}, out, *force, *spread);
+    if (spread->mpi)
+      return exit_status(farm_reproductions({rep}, out, *force, *spread, [=](int status) {
+        return with_format(status != 0 ? status : build_tables(rep, out), out);
+      }));
+    const RunPart part = shard_part({rep}, *spread);
+    const int status = with_format(reproduce(rep, out, *force, nullptr, &part), out);
     if (status == 0) std::cerr << "reproduce " << *name << ": wrote " << out << "/" << *name << ".md\n";
     return exit_status(status);
   };

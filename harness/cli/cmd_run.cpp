@@ -8,6 +8,7 @@
 #include "harness/cli/dry_run.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/python_script.h"
+#include "harness/cli/shard.h"
 #include "harness/scene/input_error.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/cli/thread_option.h"
@@ -38,20 +39,50 @@ Command add_run_command(CLI::App& app) {
                 "writes nothing");
   auto threads = std::make_shared<ThreadOption>();
   threads->add_to(*cmd);
+  auto spread = std::make_shared<SpreadOptions>();
+  spread->add_to(*cmd);
   return [=]() {
+    spread->check(*dry_run);
     SuiteSpec s = SuiteSpec::load(*suite);
     threads->apply(s);
     const auto limit = threads->limit();
     std::error_code ec;
     if (std::filesystem::exists(*out, ec) && !std::filesystem::is_regular_file(*out, ec))
       throw InputError("--output", "'" + *out + "'", "exists and is not a results file");
+    const std::vector<FarmSuite> suites{{s, RunTags{}}};
     if (*dry_run) {
       const KnownRecords known = KnownRecords::read(*out);
       print_dry_run_total(std::cout, "run " + s.name, print_dry_run(std::cout, s, RunTags{}, known), known, *out);
+      if (spread->sharded()) shard_filter(suites, *spread, std::cout);
+      if (spread->ranks > 0) {
+        const std::string from = spread->costs.empty() ? *out : spread->costs;
+        const RecordedTimes times = RecordedTimes::read(from);
+        print_makespan(std::cout, plan_groups(suites, known, times), spread->ranks, times, from);
+      }
       return 0;
     }
     const StopSignals signals;
+    if (spread->mpi) {
+      FarmRequest req;
+      req.name = "run " + s.name;
+      req.suites = suites;
+      req.results_path = *out;
+      req.costs_path = spread->costs;
+      req.validate_full = *validate == "full";
+      req.pin = spread->pin;
+      req.stop_signal = [] { return StopSignals::received(); };
+      if (*format == "gbench")
+        req.after = [out](int status) {
+          return status == 0 ? run_python_script("gbench.py", {*out, "-o", gbench_path(*out)}) : status;
+        };
+      return run_farm(req);
+    }
     RunOptions opt;
+    if (spread->sharded()) {
+      opt.take_group = shard_filter(suites, *spread, std::cerr);
+      opt.placement = lone_placement();
+      opt.placement["shard"] = spread->shard_text();
+    }
     opt.results_path = *out;
     opt.validate_full = *validate == "full";
     opt.progress = [](const std::string& line) { std::cerr << line << std::endl; };

@@ -18,5 +18,6 @@ Command add_report_command(CLI::App& app);
 Command add_reproduce_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_merge_command(CLI::App& app);
 
 }  // namespace vob

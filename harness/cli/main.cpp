@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   add(vob::add_reproduce_command);
   add(vob::add_validate_command);
   add(vob::add_compare_command);
+  add(vob::add_merge_command);
   // Every failure is one line on stderr, "vobench: SUBCOMMAND: what: reason", exit 2 (3 for
   // an internal error): scripts and the fuzz suite read exactly that line.
   const auto fail = [&](const std::string& message, int code) {

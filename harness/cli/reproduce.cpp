@@ -8,6 +8,7 @@
 #include <set>
 
 #include "harness/bench/atomic_file.h"
+#include "harness/bench/job_partition.h"
 #include "harness/bench/job_plan.h"
 #include "harness/bench/results.h"
 #include "harness/bench/runner.h"
@@ -33,10 +34,28 @@ void check_scale_of_folder(const Reproduction& rep, const std::string& results) 
                                                r.value("scale", "default") + ", not " + rep.scale +
                                                ": use --force or another -o folder");
 }
+
+// The jobs of a plan in the part (all without one): how many, how many to do, their cost.
+struct PartCount {
+  size_t jobs = 0, to_do = 0;
+  double cost = 0;
+};
+PartCount count_part(const RunPlan& plan, const std::string& suite_name, const RunPart* part) {
+  PartCount c;
+  for (const PlannedDataset& d : plan.datasets)
+    for (const PlannedJob& j : d.jobs)
+      if (!part || !part->take_group || part->take_group(group_id(suite_name, d.label, j.unit))) {
+        ++c.jobs;
+        c.to_do += !j.done;
+        c.cost += j.done ? 0 : j.cost;
+      }
+  return c;
+}
 }  // namespace
 
 int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& name,
-                    const std::string& out_dir, bool force, const RunTags& tags, ProgressTracker* all) {
+                    const std::string& out_dir, bool force, const RunTags& tags, ProgressTracker* all,
+                    const RunPart* part) {
   require_writable_folder(out_dir);
   const std::string results = results_of(out_dir);
   if (force) {
@@ -52,9 +71,9 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
   tracker.set_calibration(known.seconds_per_unit());
   size_t done = 0;
   for (const SuiteSpec& suite : suites) {
-    const RunPlan plan = plan_run(suite, tags, known);
-    tracker.add(plan.jobs(), plan.cost_to_do());
-    done += plan.jobs() - plan.to_do();
+    const PartCount c = count_part(plan_run(suite, tags, known), tags.suite_name(suite), part);
+    tracker.add(c.jobs, c.cost);
+    done += c.jobs - c.to_do;
   }
   std::fprintf(stderr, "%s: %zu jobs, %zu already done\n", name.c_str(), tracker.total(), done);
   RunOptions opt;
@@ -62,6 +81,10 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
   opt.tags = tags;
   opt.tracker = &tracker;
   opt.known = &known;
+  if (part) {
+    opt.take_group = part->take_group;
+    opt.placement = part->placement;
+  }
   opt.stop_requested = [] { return StopSignals::received() != 0; };
   const auto t0 = std::chrono::steady_clock::now();
   opt.progress = [t0](const std::string& line) {
@@ -88,16 +111,37 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
   return 0;
 }
 
-int reproduce(const Reproduction& rep, const std::string& out_dir, bool force, ProgressTracker* all) {
-  if (!force) check_scale_of_folder(rep, results_of(out_dir));
-  const RunTags tags{rep.name, rep.paper, rep.scale};
-  const int status = run_suites_into(rep.suites, rep.name, out_dir, force, tags, all);
-  if (status != 0) return status;
+int build_tables(const Reproduction& rep, const std::string& out_dir) {
   if (!rep.paper.empty()) return run_python_script("build_tables.py", {out_dir, "--only", rep.name});
   return run_report({results_of(out_dir)}, out_dir, rep.title, rep.name);
 }
 
-int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force) {
+void prepare_folder(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force) {
+  require_writable_folder(out_dir);
+  for (const Reproduction& rep : reps)
+    if (!force) check_scale_of_folder(rep, results_of(out_dir));
+  if (!force) return;
+  std::error_code ec;
+  fs::remove(results_of(out_dir), ec);
+  if (!ec) fs::remove_all(fs::path(out_dir) / "images", ec);
+  if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
+}
+
+int reproduce(const Reproduction& rep, const std::string& out_dir, bool force, ProgressTracker* all,
+              const RunPart* part) {
+  if (!force) check_scale_of_folder(rep, results_of(out_dir));
+  const RunTags tags{rep.name, rep.paper, rep.scale};
+  const int status = run_suites_into(rep.suites, rep.name, out_dir, force, tags, all, part);
+  if (status != 0) return status;
+  if (part && part->take_group) {
+    std::cerr << rep.name << ": a shard's records only; merge the shards (vobench merge) and run vobench report\n";
+    return 0;
+  }
+  return build_tables(rep, out_dir);
+}
+
+int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force,
+                  const RunPart* part) {
   for (const Reproduction& rep : reps)
     if (!force) check_scale_of_folder(rep, results_of(out_dir));
   // [k/N] over every reproduction as well as per reproduction.
@@ -107,8 +151,9 @@ int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_
     all.set_calibration(known.seconds_per_unit());
     for (const Reproduction& rep : reps)
       for (const SuiteSpec& suite : rep.suites) {
-        const RunPlan plan = plan_run(suite, RunTags{rep.name, rep.paper, rep.scale}, known);
-        all.add(plan.jobs(), plan.cost_to_do());
+        const RunTags tags{rep.name, rep.paper, rep.scale};
+        const PartCount c = count_part(plan_run(suite, tags, known), tags.suite_name(suite), part);
+        all.add(c.jobs, c.cost);
       }
     std::cerr << "reproduce all: " << reps.size() << " reproductions, " << all.total() << " jobs\n";
   }
@@ -116,7 +161,7 @@ int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_
   bool drop = force;
   for (const Reproduction& rep : reps) {
     std::cerr << "reproduce all: " << rep.name << "\n";
-    const int status = reproduce(rep, out_dir, drop, &all);
+    const int status = reproduce(rep, out_dir, drop, &all, part);
     drop = false;
     if (status == StopSignals::exit_code(SIGINT) || status == StopSignals::exit_code(SIGTERM)) return status;
     if (status != 0) {
@@ -124,6 +169,7 @@ int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_
       if (first_failure == 0) first_failure = status;
     }
   }
+  if (part && part->take_group) return first_failure;
   const int summary = run_python_script("build_tables.py", {out_dir});  // every table and the summary
   return first_failure != 0 ? first_failure : summary;
 }

@@ -6,6 +6,7 @@ import os
 from . import figures, gallery
 from .rows import scene_key, thread_pairs
 from .units import human_bytes, human_seconds, sig
+from vobtables.conditions import shared_host_warning
 
 
 def slug(s):
@@ -38,6 +39,9 @@ def runs_header(page, recs):
     for rev, e in by_rev.items():
         if e["libs"]:
             page.para(f"Libraries ({rev}): " + "; ".join(sorted(e["libs"])) + ".")
+    warning = shared_host_warning(recs)
+    if warning:
+        page.para(warning.strip())
     if len(by_rev) > 1:
         page.para(f"Records of {len(by_rev)} revisions: every table keeps one row per revision (column "
                   "'revision'); nothing is averaged across revisions.")

@@ -46,8 +46,23 @@ def stand_ins(records, paper):
     return "Stand-ins (ours for the paper's): " + "; ".join(out) + (f". {why}" if why else ".")
 
 
+def shared_host_warning(records):
+    """A warning when timed records came from farm ranks that shared a host (the records'
+    ranks_on_host, issue 17), else ''."""
+    shared = [r for r in records if (r.get("ranks_on_host") or 1) > 1 and (r.get("repeats") or 0) > 0]
+    if not shared:
+        return ""
+    hosts = sorted({str(r.get("host", "?")) for r in shared})
+    most = max(r["ranks_on_host"] for r in shared)
+    return (f"Warning: {len(shared)} of {len(records)} timed records were measured by ranks that shared their host "
+            f"with other ranks (up to {most} per host, on {', '.join(hosts[:5])}{' ...' if len(hosts) > 5 else ''}): "
+            "their times compete for cores, caches and memory bandwidth. For timings run one rank per node "
+            "(README, \"Sweeps on a cluster\"). ")
+
+
 def conditions(records, paper):
     text = (f"Ours: {our_machine(records)}. Paper: {paper_machine(paper)}. Timing: {timing(records)}. ")
+    text += shared_host_warning(records)
     few = sorted({str(r.get("suite")) for r in records if (r.get("repeats") or 0) < 3})
     if few and scale(records) == "tiny":
         text += "Fewer than 3 timed runs at the tiny scale: it only checks that the tables build. "
