@@ -10,6 +10,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "datasets/datasets.h"
+#include "harness/bench/external_orderer.h"
 #include "harness/bench/registry.h"
 #include "harness/view/view_set.h"
 #include "vtk/vobench_visibility_sort.h"
@@ -82,6 +83,30 @@ TEST_P(AdapterOrder, EqualsTheOrderersOwnOrderInEveryViewAndDirection) {
   EXPECT_EQ(sort->GetNumberOfOrders(), 14);  // the direction alone is no new camera
 }
 INSTANTIATE_TEST_SUITE_P(Orderers, AdapterOrder, ::testing::Values("xmpvo", "sxmpvo", "centroid"));
+
+TEST(Adapter, RunsAnExternalSorterAsTheOrderersProtocolDoes) {
+  Helix h;
+  vtkNew<vobVisibilitySort> sort;
+  ASSERT_TRUE(sort->SetExternalCommand(VOB_TEST_EXTERNAL_SORTER, 60));
+  vtkNew<vtkCamera> cam;
+  sort->SetInput(h.grid);
+  sort->SetCamera(cam);
+  sort->SetImageSize(300, 200);
+  auto direct = make_external_orderer(VOB_TEST_EXTERNAL_SORTER, 60);
+  PhaseClock clock;
+  direct->prepare(h.scene, clock);
+  std::vector<std::vector<int32_t>> orders;
+  for (int v : {0, 7}) {
+    set_camera(cam, h.views[v]);
+    sort->SetViewIndex(v);
+    set_external_view_index(*direct, v);
+    const auto got = traverse(sort);
+    ASSERT_TRUE(sort->GetLastError().empty()) << sort->GetLastError();
+    EXPECT_EQ(got, direct->order(h.views[v], clock).order) << "view " << v;
+    orders.push_back(got);
+  }
+  EXPECT_NE(orders[0], orders[1]);  // the camera reached the sorter
+}
 
 TEST(Adapter, PreparesOnANewInputAndOrdersOnANewCameraOnly) {
   Helix h;

@@ -60,7 +60,8 @@ void write_render_json(const RenderRun& run, const std::string& dir) {
     j["sorters"].push_back({{"label", s.label},
                             {"algorithm", s.algorithm},
                             {"claims", {{"object_exact", s.object_exact}, {"image_exact", s.image_exact}}},
-                            {"prepare_seconds", s.prepare_seconds}});
+                            {"prepare_seconds", s.prepare_seconds >= 0 ? nlohmann::json(s.prepare_seconds)
+                                                                       : nlohmann::json()}});
   j["reference"] = run.reference >= 0 ? nlohmann::json(run.sorters[run.reference].label) : nlohmann::json();
   j["views"] = nlohmann::json::array();
   for (const ViewFrames& v : run.views) {

@@ -15,7 +15,8 @@ struct SorterInfo {
   std::string label;      // "vtk-default" or the orderer spec
   std::string algorithm;  // "vtkCellCenterDepthSort" or the orderer spec
   bool object_exact = false, image_exact = false;
-  double prepare_seconds = 0;  // vobench orderers: the adapter's prepare on the warm-up frame
+  double prepare_seconds = -1;  // vobench orderers: the adapter's prepare on the warm-up frame;
+                                // -1 for VTK's (its cell centres are made inside the first sort)
 };
 
 struct SorterFrame {

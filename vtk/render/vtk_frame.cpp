@@ -93,7 +93,7 @@ std::string VtkStage::gl_renderer() {
   std::string line, out;
   while (std::getline(in, line))
     if (line.rfind("OpenGL renderer string:", 0) == 0 || line.rfind("OpenGL version string:", 0) == 0)
-      out += (out.empty() ? "" : "; ") + line.substr(line.find(':') + 2);
+      out += (out.empty() ? "" : "; ") + line.substr(line.find_first_not_of(' ', line.find(':') + 1));
   return out;
 }
 
