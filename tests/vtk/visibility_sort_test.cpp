@@ -166,6 +166,33 @@ TEST(Adapter, FollowsAModelTransform) {
   }
 }
 
+TEST(Adapter, MovesTheDataForAnAffineModelTransform) {
+  Helix h;
+  vtkNew<vtkMatrix4x4> m;  // x' = (x, 2y, z/2) + (1, 0, 0): no similarity, exact in binary
+  const double e[16] = {1, 0, 0, 1, 0, 2, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 1};
+  m->DeepCopy(e);
+  CellMesh world_mesh = h.scene.mesh();
+  for (Vec3& p : world_mesh.points) p = {p.x + 1, 2 * p.y, 0.5 * p.z};
+  const Scene world = Scene::from_mesh("world", world_mesh);
+  const std::vector<Camera> views = fibonacci_views(world.bounds(), 14, {300, 200});
+  vtkNew<vobVisibilitySort> sort;
+  ASSERT_TRUE(sort->SetOrderer("xmpvo"));
+  vtkNew<vtkCamera> cam;
+  sort->SetInput(h.grid);
+  sort->SetCamera(cam);
+  sort->SetModelTransform(m);
+  sort->SetImageSize(300, 200);
+  for (int v : {2, 11}) {
+    set_camera(cam, views[v]);
+    EXPECT_EQ(traverse(sort), own_order("xmpvo", world, views[v])) << "view " << v;
+  }
+  EXPECT_EQ(sort->GetNumberOfPrepares(), 1);
+  vtkNew<vtkMatrix4x4> identity;  // back to the data as they are: a new prepare
+  sort->SetModelTransform(identity);
+  traverse(sort);
+  EXPECT_EQ(sort->GetNumberOfPrepares(), 2);
+}
+
 TEST(Adapter, RefusesClearly) {
   vtkNew<vobVisibilitySort> sort;
   EXPECT_FALSE(sort->SetOrderer("no-such-orderer"));
