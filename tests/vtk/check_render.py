@@ -57,4 +57,26 @@ bad = subprocess.run(wrap + [prog, "render", "--dataset", "helix", "--algorithm"
 lines = bad.stderr.strip().splitlines()
 assert bad.returncode == 2 and len(lines) == 1 and lines[0].startswith("vobench-vtk: render: "), \
     (bad.returncode, bad.stderr)
+# A suite names the run: its "vtk_render" entry, datasets, views and sizes; the run goes to
+# OUT/vtk/LABEL-WxH, where `vobench report OUT` finds it.
+suite_dir = out + "-suite"
+shutil.rmtree(suite_dir, ignore_errors=True)
+os.makedirs(suite_dir)
+suite = {"name": "vtk", "datasets": [{"name": "helix", "set": {"cells": 2000}, "label": "helix"}],
+         "algorithms": ["xmpvo"], "views": 14, "view_indices": [3, 8], "sizes": ["160x120"],
+         "vtk_render": {"algorithms": ["xmpvo", "sxmpvo"], "repeats": 1}}
+with open(os.path.join(suite_dir, "suite.json"), "w") as f:
+    json.dump(suite, f)
+r = subprocess.run(wrap + [prog, "render", "--suite", os.path.join(suite_dir, "suite.json"), "-o", suite_dir],
+                   capture_output=True, text=True, timeout=600)
+assert r.returncode == 0, (r.returncode, r.stderr)
+run = json.load(open(os.path.join(suite_dir, "vtk", "helix-160x120", "render.json")))
+assert run["reference"] == "xmpvo" and [v["view_index"] for v in run["views"]] == [3, 8], run["views"]
+assert all(x["difference"]["pixels"] == 0 for v in run["views"] for x in v["results"] if x["sorter"] == "sxmpvo")
+del suite["vtk_render"]
+with open(os.path.join(suite_dir, "suite.json"), "w") as f:
+    json.dump(suite, f)
+bad = subprocess.run([prog, "render", "--suite", os.path.join(suite_dir, "suite.json"), "-o", suite_dir],
+                     capture_output=True, text=True, timeout=120)
+assert bad.returncode == 2 and "vtk_render: is missing" in bad.stderr, (bad.returncode, bad.stderr)
 print("ok")

@@ -1,201 +1,122 @@
 #include "vtk/render/render_command.h"
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-
-#include <vtkCellCenterDepthSort.h>
-#include <vtkCellData.h>
-#include <vtkDataSetTriangleFilter.h>
-#include <vtkDoubleArray.h>
-#include <vtkPointData.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkVersion.h>
-#include <vtkXMLUnstructuredGridWriter.h>
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/external_orderer.h"
+#include "harness/bench/jobs.h"
 #include "harness/bench/registry.h"
+#include "harness/bench/suite.h"
 #include "harness/scene/input_error.h"
-#include "vtk/render/render_report.h"
-#include "vtk/render/timed_sort.h"
-#include "vtk/vobench_visibility_sort.h"
-#include "vtk/vtk_scene.h"
 
 namespace vob {
 
-void RenderArgs::add_to(CLI::App& cmd) {
-  scene.add_to(cmd, false);
-  view.add_to(cmd);
-  cmd.add_option("--algorithm", algorithms, "a vobench orderer drawn beside VTK's sort (repeatable)");
-  cmd.add_option("--external", externals, "NAME=COMMAND: an external sorter (README), then --algorithm NAME");
-  cmd.add_option("--timeout", timeout, "seconds per external sorter answer")->check(number_in(0, 1e6, true, false));
-  cmd.add_option("--extinction", extinction,
-                 "extinction as a multiple of vobench's compositor's (1: a typical ray through the bounding "
-                 "sphere has optical depth about 2)")
+void RenderArgs::add_to(CLI::App& c) {
+  cmd = &c;
+  scene.add_to(c, false);
+  view.add_to(c);
+  c.add_option("--algorithm", settings.algorithms, "a vobench orderer drawn beside VTK's sort (repeatable)");
+  c.add_option("--external", externals, "NAME=COMMAND: an external sorter (README), then --algorithm NAME");
+  c.add_option("--timeout", timeout, "seconds per external sorter answer")->check(number_in(0, 1e6, true, false));
+  c.add_option("--extinction", settings.extinction,
+               "extinction as a multiple of vobench's compositor's (1: a typical ray through the bounding "
+               "sphere has optical depth about 2)")
       ->check(number_in(0, 1e6, true, false));
-  cmd.add_option("--repeats", repeats, "timed frames per view and sorter")->check(integer_in(1, 1000));
-  cmd.add_option("-o,--output", out, "output folder (render.json, render.html, PNGs)")->required();
+  c.add_option("--repeats", settings.repeats, "timed frames per view and sorter")->check(integer_in(1, 1000));
+  c.add_option("--suite", suite,
+               "every cell dataset and size of a suite, with the orderers of its \"vtk_render\" entry "
+               "({\"algorithms\": [...], \"repeats\": N, \"extinction\": F}), into OUT/vtk/LABEL-WxH");
+  c.add_option("-o,--output", out, "output folder (render.json, render.html, PNGs)")->required();
 }
 
 namespace {
-std::string file_label(const std::string& s) {
-  std::string o;
-  for (char c : s) o += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '.') ? c : '_';
-  return o;
+// The suite's "vtk_render" entry into `s`; InputError naming the suite and the key.
+void read_vtk_entry(const std::string& path, RenderSettings& s) {
+  const nlohmann::json j = read_json_file(path, "suite");
+  if (!j.is_object() || !j.contains("vtk_render"))
+    throw InputError(path, "vtk_render", "is missing (the orderers vobench-vtk draws: {\"algorithms\": [...]})");
+  const nlohmann::json& e = j["vtk_render"];
+  const auto bad = [&](const std::string& key, const std::string& why) {
+    throw InputError(path, "vtk_render." + key, why);
+  };
+  if (!e.is_object()) bad("", "must be an object");
+  for (const auto& [k, v] : e.items())
+    if (k != "algorithms" && k != "repeats" && k != "extinction" && k != "comment")
+      bad(k, "is not a known key (known: algorithms, repeats, extinction, comment)");
+  if (!e.contains("algorithms") || !e["algorithms"].is_array() || e["algorithms"].empty())
+    bad("algorithms", "must be a non-empty list of orderer names");
+  for (const auto& a : e["algorithms"]) {
+    if (!a.is_string()) bad("algorithms", "must hold strings");
+    s.algorithms.push_back(a.get<std::string>());
+  }
+  if (e.contains("repeats")) {
+    if (!e["repeats"].is_number_integer() || e["repeats"].get<int64_t>() < 1 || e["repeats"].get<int64_t>() > 1000)
+      bad("repeats", "must be an integer in [1, 1000]");
+    s.repeats = e["repeats"].get<int>();
+  }
+  if (e.contains("extinction")) {
+    if (!e["extinction"].is_number() || !(e["extinction"].get<double>() > 0) || e["extinction"].get<double>() > 1e6)
+      bad("extinction", "must be a number in (0, 1e6]");
+    s.extinction = e["extinction"].get<double>();
+  }
 }
 
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return "load average " + a + " " + b + " " + c + " (other jobs share the machine)";
+void print(const nlohmann::json& summary, const std::string& dir) {
+  for (const auto& s : summary) std::cout << s.dump() << "\n";
+  std::cout << "wrote " << dir << "/render.json and " << dir << "/render.html\n";
 }
 
-// The grid the mappers draw: the scene's cells, tetrahedralized by VTK when they are not
-// all tetrahedra (cell array vobench_cell_id: each tetrahedron's cell in the scene).
-vtkSmartPointer<vtkUnstructuredGrid> tetrahedra(const Scene& scene, bool& split) {
-  auto grid = grid_from_scene(scene);
-  const CellMesh& m = scene.mesh();
-  split = false;
-  for (CellType t : m.types) split = split || t != CellType::Tetra;
-  if (!split) return grid;
-  vtkNew<vtkDataSetTriangleFilter> filter;
-  filter->SetInputData(grid);
-  filter->TetrahedraOnlyOn();
-  filter->Update();
-  vtkSmartPointer<vtkUnstructuredGrid> out = filter->GetOutput();
-  return out;
+int run_suite(const RenderArgs& a, const std::string& command_line) {
+  for (const char* opt : {"--dataset", "--input", "--set", "--algorithm", "--extinction", "--repeats", "--views",
+                          "--view-index", "--orbit", "--eye", "--target", "--size", "--ortho-views", "--zoom"})
+    if (a.cmd->count(opt)) throw InputError(opt, "with --suite", "the suite says it (its vtk_render entry, views, sizes)");
+  const SuiteSpec suite = SuiteSpec::load(a.suite);
+  RenderSettings s;
+  read_vtk_entry(a.suite, s);
+  for (const std::string& alg : s.algorithms)
+    if (spec_orderer(alg).kind != SceneKind::Cells)
+      throw InputError(a.suite, "vtk_render.algorithms: " + alg, "orders no cells");
+  require_writable_folder(a.out);
+  for (const DatasetSpec& ds : suite.datasets) {
+    const Scene scene = make_scene(ds);
+    if (scene.kind() != SceneKind::Cells) {
+      std::cerr << "vobench-vtk: note: " << ds.row_label() << ": not cells, not drawn\n";
+      continue;
+    }
+    for (const auto& [w, h] : suite.sizes) {
+      const std::string dir = a.out + "/vtk/" + file_label(ds.row_label()) + "-" + std::to_string(w) + "x" +
+                              std::to_string(h);
+      std::filesystem::create_directories(dir);
+      print(render_scene(scene, suite_views(suite, ds, scene, w, h), s, dir,
+                         {{"tool", "vobench-vtk render"}, {"command", command_line}, {"suite", a.suite},
+                          {"scene", ds.to_json()}}),
+            dir);
+    }
+  }
+  return 0;
 }
 }  // namespace
 
 int run_render(const RenderArgs& a, const std::string& command_line) {
-  const DatasetSpec spec = a.scene.spec();
-  a.view.validate(spec);
   for (const std::string& e : a.externals) {
     const auto eq = e.find('=');
     if (eq == std::string::npos || eq == 0) throw InputError("--external", "'" + e + "'", "expected NAME=COMMAND");
     register_external_orderer(e.substr(0, eq), e.substr(eq + 1), SceneKind::Cells, a.timeout);
   }
-  for (const std::string& alg : a.algorithms) check_algorithm(alg, spec);
+  if (!a.suite.empty()) return run_suite(a, command_line);
+  const DatasetSpec spec = a.scene.spec();
+  a.view.validate(spec);
+  for (const std::string& alg : a.settings.algorithms) check_algorithm(alg, spec);
   require_writable_folder(a.out);
   const Scene scene = a.scene.load(spec);
   if (scene.kind() != SceneKind::Cells)
     throw InputError(source_name(spec), "scene", std::string("has ") + scene_kind_name(scene.kind()) +
                                                      "; the projected-tetrahedra mapper draws cells");
   std::filesystem::create_directories(a.out);
-  const auto cameras = a.view.cameras(spec, scene);
-  const int w = cameras.at(0).second.width, h = cameras.at(0).second.height;
-
-  bool split = false;
-  auto tets = tetrahedra(scene, split);
-  double range[2];
-  tets->GetPointData()->GetScalars()->GetRange(range);
-  std::string scalar_source = "the scene's point scalars";
-  const Aabb box = scene.bounds();
-  const double radius = 0.5 * length(box.hi - box.lo);
-  if (!(range[1] > range[0])) {  // one colour everywhere would make every order look alike
-    auto* s = vtkDoubleArray::SafeDownCast(tets->GetPointData()->GetScalars());
-    for (vtkIdType i = 0; i < tets->GetNumberOfPoints(); ++i) {
-      double p[3];
-      tets->GetPoint(i, p);
-      s->SetValue(i, 1.0 - length(Vec3{p[0], p[1], p[2]} - box.center()) / radius);
-    }
-    s->Modified();
-    s->GetRange(range);
-    scalar_source = "synthetic: 1 - distance from the box centre / bounding radius (the scene's are constant)";
-  }
-  if (split) {
-    vtkNew<vtkXMLUnstructuredGridWriter> writer;
-    writer->SetInputData(tets);
-    writer->SetFileName((a.out + "/tetrahedra.vtu").c_str());
-    writer->Write();
-  }
-
-  VtkStage stage(tets, range[0], range[1], radius / a.extinction, w, h);
-  RenderRun run;
-  vtkNew<vtkCellCenterDepthSort> vtk_sort;
-  vtkNew<vobTimedSort> timed;
-  timed->SetSort(vtk_sort);
-  stage.add_sorter(timed);
-  run.sorters.push_back({"vtk-default", "vtkCellCenterDepthSort"});
-  std::vector<vtkSmartPointer<vobVisibilitySort>> ours;
-  for (const std::string& alg : a.algorithms) {
-    auto sort = vtkSmartPointer<vobVisibilitySort>::New();
-    if (!sort->SetOrderer(alg)) throw InputError("--algorithm " + alg, "orderer", sort->GetLastError());
-    sort->SetRenderer(stage.renderer());
-    sort->SetAlwaysOrder(true);  // every timed frame sorts, as VTK's sort does
-    stage.add_sorter(sort);
-    ours.push_back(sort);
-    run.sorters.push_back({alg, alg, sort->GetObjectExact(), sort->GetImageExact()});
-    if (run.reference < 0 && (sort->GetObjectExact() || sort->GetImageExact()))
-      run.reference = static_cast<int>(run.sorters.size()) - 1;
-  }
-  const auto check = [&](size_t i, int view) {
-    if (i > 0 && !ours[i - 1]->GetLastError().empty())
-      throw InputError("--algorithm " + a.algorithms[i - 1], "view " + std::to_string(view),
-                       ours[i - 1]->GetLastError());
-  };
-  // Warm-up: prepares, shader compilation, buffers; the prepare is the adapter's.
-  for (size_t i = 0; i < run.sorters.size(); ++i) {
-    if (i > 0) ours[i - 1]->SetViewIndex(cameras[0].first);
-    stage.render(static_cast<int>(i), cameras[0].second);
-    check(i, cameras[0].first);
-    if (i > 0) run.sorters[i].prepare_seconds = ours[i - 1]->GetLastPrepareSeconds();
-  }
-  for (const auto& [index, cam] : cameras) {
-    if (cam.width != w || cam.height != h) throw InputError("--size", "views", "differ in size");
-    ViewFrames v;
-    v.view_index = index;
-    v.camera = cam;
-    v.sorters.resize(run.sorters.size());
-    std::vector<RgbImage> images(run.sorters.size());
-    for (int r = 0; r < a.repeats; ++r)
-      for (size_t i = 0; i < run.sorters.size(); ++i) {  // interleaved: one load for all
-        if (i > 0) ours[i - 1]->SetViewIndex(index);
-        const double t = stage.render(static_cast<int>(i), cam);
-        check(i, index);
-        v.sorters[i].frame_seconds.push_back(t);
-        v.sorters[i].sort_seconds.push_back(i == 0 ? timed->GetLastSortSeconds() : ours[i - 1]->GetLastSortSeconds());
-        if (r == a.repeats - 1) images[i] = stage.capture();
-      }
-    for (size_t i = 0; i < run.sorters.size(); ++i) {
-      SorterFrame& f = v.sorters[i];
-      const std::string base = "view" + std::to_string(index) + "-" + file_label(run.sorters[i].label);
-      f.image = base + ".png";
-      f.covered = covered_pixels(images[i]);
-      write_rgb_png(images[i], a.out + "/" + f.image);
-      if (run.reference >= 0) {
-        f.compared = true;
-        f.diff = compare_images(images[i], images[run.reference]);
-        f.diff_image = base + "-diff.png";
-        write_difference_png(images[i], images[run.reference], a.out + "/" + f.diff_image);
-      }
-    }
-    run.views.push_back(std::move(v));
-  }
-  run.context = {{"tool", "vobench-vtk render"},
-                 {"command", command_line},
-                 {"scene", spec.to_json()},
-                 {"cells", scene.num_primitives()},
-                 {"tetrahedra", tets->GetNumberOfCells()},
-                 {"tetrahedralized", split},
-                 {"id_map", split ? "tetrahedra.vtu, cell array vobench_cell_id: each tetrahedron's scene cell"
-                                  : "identity (the scene is tetrahedra)"},
-                 {"scalars", scalar_source},
-                 {"size", {w, h}},
-                 {"repeats", a.repeats},
-                 {"extinction", a.extinction},
-                 {"warmup", 1},
-                 {"vtk_version", vtkVersion::GetVTKVersion()},
-                 {"gl_renderer", stage.gl_renderer()},
-                 {"load", load_average()},
-                 {"timing", "frame: Render() to glFinish, interleaved over sorters per view and repeat; "
-                            "sort: the sort's InitTraversal and GetNextCells inside that frame"}};
-  write_render_json(run, a.out);
-  write_render_html(run, a.out);
-  for (const auto& s : summary(run)) std::cout << s.dump() << "\n";
-  std::cout << "wrote " << a.out << "/render.json and " << a.out << "/render.html\n";
+  print(render_scene(scene, a.view.cameras(spec, scene), a.settings, a.out,
+                     {{"tool", "vobench-vtk render"}, {"command", command_line}, {"scene", spec.to_json()}}),
+        a.out);
   return 0;
 }
 

@@ -1,7 +1,8 @@
 // `vobench-vtk render`: a scene and its views drawn by vtkOpenGLProjectedTetrahedraMapper,
-// once with VTK's own sort (vtkCellCenterDepthSort) and once per vobench orderer given,
-// interleaved per view and repeat; images, differences from the first exact orderer's
-// image, frame and sort times (render.json, render.html).
+// once with VTK's own sort (vtkCellCenterDepthSort) and once per vobench orderer given
+// (render_scene.h); or, with --suite, every cell dataset and size of a suite with the
+// orderers its "vtk_render" entry names, into OUT/vtk/LABEL-WxH/, where `vobench report
+// OUT` finds them ("What VTK shows").
 #pragma once
 #include <string>
 #include <vector>
@@ -9,19 +10,20 @@
 #include <CLI/CLI.hpp>
 
 #include "harness/cli/scene_args.h"
+#include "vtk/render/render_scene.h"
 
 namespace vob {
 
 struct RenderArgs {
   SceneArgs scene;
   ViewArgs view;
-  std::vector<std::string> algorithms;  // orderer specs, in order
-  std::vector<std::string> externals;   // NAME=COMMAND: external sorters, usable as NAME
+  RenderSettings settings;
+  std::vector<std::string> externals;  // NAME=COMMAND: external sorters, usable as NAME
   double timeout = 60.0;
-  int repeats = 3;
-  double extinction = 1.0;  // times the optical scale of vobench's compositor
+  std::string suite;
   std::string out;
   void add_to(CLI::App& cmd);
+  CLI::App* cmd = nullptr;
 };
 
 int run_render(const RenderArgs& args, const std::string& command_line);

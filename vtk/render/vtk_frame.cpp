@@ -59,7 +59,11 @@ int VtkStage::add_sorter(vtkVisibilitySort* sort) {
 }
 
 double VtkStage::render(int i, const Camera& c) {
-  if (c.width != width_ || c.height != height_) throw std::logic_error("VtkStage: camera size is not the window's");
+  if (c.width != width_ || c.height != height_) {  // fitted views have sizes of their own
+    width_ = c.width;
+    height_ = c.height;
+    window_->SetSize(width_, height_);
+  }
   for (size_t k = 0; k < volumes_.size(); ++k) volumes_[k]->SetVisibility(static_cast<int>(k) == i);
   vtkCamera* vc = renderer_->GetActiveCamera();
   vc->SetPosition(c.eye.x, c.eye.y, c.eye.z);

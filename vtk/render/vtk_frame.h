@@ -32,8 +32,8 @@ class VtkStage {
   VtkStage(vtkUnstructuredGrid* tets, double lo, double hi, double radius, int width, int height);
   ~VtkStage();
   int add_sorter(vtkVisibilitySort* sort);  // its index
-  // Draws sorter `i` alone for `camera` (its size must be the window's); returns the seconds
-  // from Render() to the GL's completion.
+  // Draws sorter `i` alone for `camera` (the window takes the camera's size); returns the
+  // seconds from Render() to the GL's completion.
   double render(int i, const Camera& camera);
   RgbImage capture();
   vtkRenderer* renderer() { return renderer_; }
