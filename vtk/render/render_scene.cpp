@@ -31,7 +31,7 @@ std::string load_average() {
   std::ifstream in("/proc/loadavg");
   std::string a, b, c;
   in >> a >> b >> c;
-  return "load average " + a + " " + b + " " + c + " (other jobs share the machine)";
+  return "load average " + a + " " + b + " " + c;
 }
 
 // The grid the mappers draw: the scene's cells, tetrahedralized by VTK when they are not
@@ -54,6 +54,7 @@ vtkSmartPointer<vtkUnstructuredGrid> tetrahedra(const Scene& scene, bool& split)
 nlohmann::json render_scene(const Scene& scene, const std::vector<std::pair<int, Camera>>& cameras,
                             const RenderSettings& s, const std::string& out, nlohmann::json context) {
   const int w = cameras.at(0).second.width, h = cameras.at(0).second.height;
+  const std::string load_at_start = load_average();
   bool split = false;
   auto tets = tetrahedra(scene, split);
   double range[2];
@@ -62,14 +63,14 @@ nlohmann::json render_scene(const Scene& scene, const std::vector<std::pair<int,
   const Aabb box = scene.bounds();
   const double radius = 0.5 * length(box.hi - box.lo);
   if (!(range[1] > range[0])) {  // one colour everywhere would make every order look alike
-    auto* s = vtkDoubleArray::SafeDownCast(tets->GetPointData()->GetScalars());
+    auto* values = vtkDoubleArray::SafeDownCast(tets->GetPointData()->GetScalars());
     for (vtkIdType i = 0; i < tets->GetNumberOfPoints(); ++i) {
       double p[3];
       tets->GetPoint(i, p);
-      s->SetValue(i, 1.0 - length(Vec3{p[0], p[1], p[2]} - box.center()) / radius);
+      values->SetValue(i, 1.0 - length(Vec3{p[0], p[1], p[2]} - box.center()) / radius);
     }
-    s->Modified();
-    s->GetRange(range);
+    values->Modified();
+    values->GetRange(range);
     scalar_source = "synthetic: 1 - distance from the box centre / bounding radius (the scene's are constant)";
   }
   if (split) {
@@ -141,21 +142,22 @@ nlohmann::json render_scene(const Scene& scene, const std::vector<std::pair<int,
     run.views.push_back(std::move(v));
   }
   run.context = std::move(context);
-  run.context.update(nlohmann::json{{"cells", scene.num_primitives()},
-                 {"tetrahedra", tets->GetNumberOfCells()},
-                 {"tetrahedralized", split},
-                 {"id_map", split ? "tetrahedra.vtu, cell array vobench_cell_id: each tetrahedron's scene cell"
-                                  : "identity (the scene is tetrahedra)"},
-                 {"scalars", scalar_source},
-                 {"size", {cameras.at(0).second.width, cameras.at(0).second.height}},
-                 {"repeats", s.repeats},
-                 {"extinction", s.extinction},
-                 {"warmup", 1},
-                 {"vtk_version", vtkVersion::GetVTKVersion()},
-                 {"gl_renderer", stage.gl_renderer()},
-                 {"load", load_average()},
-                 {"timing", "frame: Render() to glFinish, interleaved over sorters per view and repeat; "
-                            "sort: the sort's InitTraversal and GetNextCells inside that frame"}});
+  run.context.update(nlohmann::json{
+      {"cells", scene.num_primitives()},
+      {"tetrahedra", tets->GetNumberOfCells()},
+      {"tetrahedralized", split},
+      {"id_map", split ? "tetrahedra.vtu, cell array vobench_cell_id: each tetrahedron's scene cell"
+                       : "identity (the scene is tetrahedra)"},
+      {"scalars", scalar_source},
+      {"size", {w, h}},
+      {"repeats", s.repeats},
+      {"extinction", s.extinction},
+      {"warmup", 1},
+      {"vtk_version", vtkVersion::GetVTKVersion()},
+      {"gl_renderer", stage.gl_renderer()},
+      {"load", load_at_start + " at the start, " + load_average() + " at the end (other jobs share the machine)"},
+      {"timing", "frame: Render() to glFinish, interleaved over sorters per view and repeat; "
+                 "sort: the sort's InitTraversal and GetNextCells inside that frame"}});
   write_render_json(run, out);
   write_render_html(run, out);
   return summary(run);
