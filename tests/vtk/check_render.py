@@ -2,8 +2,9 @@
 """`vobench-vtk render` on the 2000-cell helix over 14 views (issue 18): VTK's own sort
 (vtkCellCenterDepthSort) shows pixel differences from sxmpvo in some view, and sxmpvo's image
 in VTK's projected-tetrahedra mapper equals xmpvo's in every view; every reference image
-covers pixels (identical blank images would prove nothing). A bad orderer is one line and
-exit 2. Runs the program under xvfb-run; exit 77 (skipped) only when no X server can start.
+covers pixels (identical blank images would prove nothing). The zoo's mixed cells through
+VTK's tetrahedralization (id map kept), a suite's vtk_render entry, and a bad orderer or suite
+(one line, exit 2). Runs the program under xvfb-run; exit 77 (skipped) only when no X server can start.
 
 usage: check_render.py VOBENCH_VTK OUTDIR"""
 import json
@@ -57,6 +58,19 @@ bad = subprocess.run(wrap + [prog, "render", "--dataset", "helix", "--algorithm"
 lines = bad.stderr.strip().splitlines()
 assert bad.returncode == 2 and len(lines) == 1 and lines[0].startswith("vobench-vtk: render: "), \
     (bad.returncode, bad.stderr)
+# Cells other than tetrahedra go through VTK's tetrahedralization, the id map kept; the
+# orderers order those tetrahedra exactly as well.
+zoo = out + "-zoo"
+r = subprocess.run(wrap + [prog, "render", "--dataset", "zoo", "--views", "14", "--view-index", "5", "--size",
+                           "160x120", "--algorithm", "xmpvo", "--algorithm", "sxmpvo", "--repeats", "1",
+                           "--extinction", "4", "-o", zoo], capture_output=True, text=True, timeout=600)
+assert r.returncode == 0, (r.returncode, r.stderr)
+run = json.load(open(os.path.join(zoo, "render.json")))
+assert run["tetrahedralized"] and run["tetrahedra"] > run["cells"], run
+assert "vobench_cell_id" in open(os.path.join(zoo, "tetrahedra.vtu"), errors="replace").read()
+res = {x["sorter"]: x for x in run["views"][0]["results"]}
+assert res["xmpvo"]["covered_pixels"] > 1000 and res["sxmpvo"]["difference"]["pixels"] == 0, res
+
 # A suite names the run: its "vtk_render" entry, datasets, views and sizes; the run goes to
 # OUT/vtk/LABEL-WxH, where `vobench report OUT` finds it.
 suite_dir = out + "-suite"
