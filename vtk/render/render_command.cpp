@@ -9,6 +9,7 @@
 #include "harness/bench/registry.h"
 #include "harness/bench/suite.h"
 #include "harness/scene/input_error.h"
+#include "vtk/render/x_display.h"
 
 namespace vob {
 
@@ -31,6 +32,12 @@ void RenderArgs::add_to(CLI::App& c) {
 }
 
 namespace {
+// VTK's X render window aborts the process without a display: say so first, as bad usage.
+void require_x_display() {
+  if (const std::string problem = x_display_problem(); !problem.empty())
+    throw InputError("DISPLAY", problem, "no X server to open (VTK's OpenGL window needs one: run under xvfb-run -a)");
+}
+
 // The suite's "vtk_render" entry into `s`; InputError naming the suite and the key.
 void read_vtk_entry(const std::string& path, RenderSettings& s) {
   const nlohmann::json j = read_json_file(path, "suite");
@@ -78,6 +85,7 @@ int run_suite(const RenderArgs& a, const std::string& command_line) {
     if (spec_orderer(alg).kind != SceneKind::Cells)
       throw InputError(a.suite, "vtk_render.algorithms: " + alg, "orders no cells");
   require_writable_folder(a.out);
+  require_x_display();
   for (const DatasetSpec& ds : suite.datasets) {
     const Scene scene = make_scene(ds);
     if (scene.kind() != SceneKind::Cells) {
@@ -109,6 +117,7 @@ int run_render(const RenderArgs& a, const std::string& command_line) {
   a.view.validate(spec);
   for (const std::string& alg : a.settings.algorithms) check_algorithm(alg, spec);
   require_writable_folder(a.out);
+  require_x_display();  // the options first: bad usage is named before a missing display
   const Scene scene = a.scene.load(spec);
   if (scene.kind() != SceneKind::Cells)
     throw InputError(source_name(spec), "scene", std::string("has ") + scene_kind_name(scene.kind()) +
