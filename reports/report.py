@@ -14,7 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from generic import figures, sections  # noqa: E402
+from generic import figures, sections, vtk_render  # noqa: E402
 from generic.load import load, revision  # noqa: E402
 from generic.page import Page, anchor  # noqa: E402
 from generic.rows import summarise  # noqa: E402
@@ -55,6 +55,7 @@ def build(a):
         page.para(sections.VERDICT_NOTE)
 
     def scaling(page):
+        vtk_render.section(page, out, a.results)  # vobench-vtk render runs beside the results
         if scaled:
             page.heading(2, "Scaling")
             page.figure("figures/scaling.png", "time against n",

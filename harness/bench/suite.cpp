@@ -374,7 +374,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   r.only_keys(j, "", {"name", "datasets", "algorithms", "probes", "views", "view_indices", "spread_views",
                       "view_directions", "orbit", "ortho", "zoom", "fit", "sizes", "repeats", "warmup", "threads", "oracle",
                       "supersample", "image_error", "image_views", "images_of_violations", "exterior_area",
-                      "comment"});
+                      "vtk_render", "comment"});  // vtk_render: read by vobench-vtk render --suite (vtk/)
   SuiteSpec s;
   s.name = j.contains("name") ? r.string(j["name"], "name") : "suite";
   if (s.name.find_first_of("|/") != std::string::npos) r.fail("name", "must not contain '|' or '/'");

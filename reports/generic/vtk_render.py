@@ -1,0 +1,50 @@
+"""What VTK shows: the runs of `vobench-vtk render` (vtk/render) found beside the results, in
+`vtk/NAME/render.json` under the report's folder or a results file's folder, as one table per
+run (per sorter: views and pixels differing from the first exact orderer's image in VTK's
+projected-tetrahedra mapper, frame time over VTK's own sort) with the view where VTK's sort
+differs most, and a link to the run's render.html."""
+import glob
+import json
+import os
+
+
+def find(out, results):
+    dirs = [out] + [p if os.path.isdir(p) else os.path.dirname(os.path.abspath(p)) for p in results]
+    found = []
+    for d in dirs:
+        for p in sorted(glob.glob(os.path.join(d, "vtk", "*", "render.json"))):
+            if os.path.abspath(p) not in [os.path.abspath(f) for f in found]:
+                found.append(p)
+    return found
+
+
+def section(page, out, results):
+    runs = find(out, results)
+    if not runs:
+        return
+    page.heading(2, "What VTK shows")
+    page.para("The same orders drawn by VTK's vtkOpenGLProjectedTetrahedraMapper (vobench-vtk render): a "
+              "pixel differs when any 8-bit channel differs from the image of the reference orderer.")
+    for path in runs:
+        run = json.load(open(path))
+        rel = os.path.relpath(os.path.dirname(path), out)
+        page.heading(3, f"{json.dumps(run['scene'])}: {run['tetrahedra']} tetrahedra, {run['size'][0]}x{run['size'][1]}")
+        page.para(f"{run['gl_renderer']}; {run['load']}; reference: {run['reference'] or 'none'}; "
+                  f"command: {run['command']}")
+        rows = []
+        for s in run["summary"]:
+            d = s.get("difference_from_reference", {})
+            rows.append([s["sorter"], str(d.get("views_differing", "-")), str(d.get("pixels", "-")),
+                         str(d.get("max", "-")), f"{1e3 * s['median_frame_seconds']:.1f}",
+                         f"{1e3 * s['median_sort_seconds']:.2f}", f"{s['median_frame_ratio_to_vtk_default']:.2f}"])
+        page.table(["sorter", "views differing", "pixels", "max", "frame ms", "sort ms", "frame / VTK's"], rows)
+        if run["reference"]:
+            def vtk_off(v):
+                return next(x["difference"]["pixels"] for x in v["results"] if x["sorter"] == "vtk-default")
+            worst = max(run["views"], key=vtk_off)
+            res = {x["sorter"]: x for x in worst["results"]}
+            page.image_row([(f"{rel}/{res[run['reference']]['image']}", f"{run['reference']} (reference)"),
+                            (f"{rel}/{res['vtk-default']['image']}", "VTK's sort"),
+                            (f"{rel}/{res['vtk-default']['difference']['image']}", "differing pixels")],
+                           caption=f"View {worst['view_index']}: VTK's sort differs in {vtk_off(worst)} pixels.")
+        page.link_list([("all views side by side", f"{rel}/render.html", "")])
