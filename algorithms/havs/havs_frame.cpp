@@ -111,31 +111,48 @@ std::vector<int32_t> cell_order_from_faces(const FaceData& fd, const std::vector
   return out;
 }
 
-RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
-                           const std::vector<int32_t>& face_order, int k, Image& image,
-                           FaceBins* scratch) {
-  check_k(k);
-  const SampleFrame frame(view, 1);
-  FaceBins local;
-  FaceBins& b = scratch ? *scratch : local;
-  bin_faces(fd, frame, face_order, b);
-  image.width = frame.cols();
-  image.height = frame.rows();
-  image.rgb.resize(size_t(3) * frame.num_samples());  // every pixel is stored below
-  const Shading shade{fd.tau0};
-  std::vector<RenderStats> per_band(b.bands);
-  tbb::parallel_for(0, b.bands, [&](int q) {
-    const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
-    const int64_t np = int64_t(row1 - row0) * frame.cols();
-    // Per-thread buffers kept from band to band and frame to frame (fresh ones cost page
-    // faults every frame); counters local, not in per_band (adjacent bands share a line).
+namespace {
+
+// A pixel's k-buffer, count and accumulator side by side: a fragment touches one cache line
+// rather than three (the profile's hottest loads were the separate acc and count arrays).
+template <int K>
+struct PixelState {
+  KEntry e[K];
+  PixelAccum acc;
+  uint8_t count;
+};
+
+// One band of the k-buffer pass. K > 0: k == K known at compile time (the paper's k = 2),
+// loops unrolled and PixelState; K == 0: any k, separate arrays. Same arithmetic either way.
+template <int K>
+RenderStats render_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q, int k,
+                        const Shading& shade, Image& image) {
+  const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
+  const int64_t np = int64_t(row1 - row0) * frame.cols();
+  int64_t segs = 0, frags = 0;
+  // Per-thread buffers kept from band to band and frame to frame (fresh ones cost page
+  // faults every frame).
+  if constexpr (K > 0) {
+    thread_local std::vector<PixelState<K>> px;
+    px.resize(np);
+    for (PixelState<K>& s : px) s.acc = PixelAccum{}, s.count = 0;
+    scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) {
+      ++frags;
+      PixelState<K>& s = px[p];
+      kbuffer_insert(s.e, s.count, K, e, [&](const KEntry& n1, const KEntry& n2) { segs += shade.segment(s.acc, n1, n2); });
+    });
+    for (int64_t p = 0; p < np; ++p) {
+      PixelState<K>& s = px[p];
+      kbuffer_flush(s.e, s.count, [&](const KEntry& n1, const KEntry& n2) { segs += shade.segment(s.acc, n1, n2); });
+      store_pixel(image, int64_t(row0) * frame.cols() + p, s.acc);
+    }
+  } else {
     thread_local std::vector<KEntry> entries;
     thread_local std::vector<uint8_t> count;
     thread_local std::vector<PixelAccum> acc;
     entries.resize(np * k);
     count.assign(np, 0);
     acc.assign(np, PixelAccum{});
-    int64_t segs = 0, frags = 0;
     scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) {
       ++frags;
       kbuffer_insert(&entries[p * k], count[p], k, e, [&](const KEntry& n1, const KEntry& n2) {
@@ -148,7 +165,29 @@ RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
       });
       store_pixel(image, int64_t(row0) * frame.cols() + p, acc[p]);
     }
-    per_band[q] = {frags, segs};
+  }
+  return {frags, segs};
+}
+
+}  // namespace
+
+RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
+                           const std::vector<int32_t>& face_order, int k, Image& image,
+                           FaceBins* scratch) {
+  check_k(k);
+  const SampleFrame frame(view, 1);
+  FaceBins local;
+  FaceBins& b = scratch ? *scratch : local;
+  bin_faces(fd, frame, face_order, b);
+  image.width = frame.cols();
+  image.height = frame.rows();
+  image.rgb.resize(size_t(3) * frame.num_samples());  // every pixel is stored below
+  const Shading shade{fd.tau0};
+  // Per band, written once per band (a counter per fragment here would share lines).
+  std::vector<RenderStats> per_band(b.bands);
+  tbb::parallel_for(0, b.bands, [&](int q) {
+    per_band[q] = k == 2 ? render_band<2>(fd, frame, b, q, k, shade, image)
+                         : render_band<0>(fd, frame, b, q, k, shade, image);
   });
   RenderStats total;
   for (const RenderStats& s : per_band) {
