@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "algorithms/havs/face_bins.h"
 #include "algorithms/havs/gl/gl_kbuffer.h"
 #include "algorithms/havs/havs_frame.h"
 #include "harness/scene/input_error.h"
@@ -89,7 +90,7 @@ class HavsOrderer final : public Orderer {
         rs.fragments = g.fragments;
         gl_draws_ = g.draws;
       } else {
-        rs = havs::render_kbuffer(fd_, view, face_order_, k_, image_);
+        rs = havs::render_kbuffer(fd_, view, face_order_, k_, image_, &bins_);
       }
     }
     // Harness bookkeeping, untimed: the cell permutation and the error analysis.
@@ -138,7 +139,7 @@ class HavsOrderer final : public Orderer {
 
   size_t bytes() const override {
     return fd_.bytes() + sort_.bytes() + face_order_.capacity() * 4 + image_.rgb.capacity() * 4 +
-           (gl_ ? gl_->bytes() : 0);
+           bins_.bytes() + (gl_ ? gl_->bytes() : 0);
   }
 
  private:
@@ -149,6 +150,7 @@ class HavsOrderer final : public Orderer {
   std::unique_ptr<havs::GlKBuffer> gl_;  // backend=gl; refers to fd_
   int gl_draws_ = 0;
   havs::SortBuffers sort_;
+  havs::FaceBins bins_;  // the k-buffer pass' binning buffers, kept from frame to frame
   std::vector<int32_t> face_order_;
   Image image_;
   // The analysis of the last order()'s face order, per view: deterministic, so repeats of

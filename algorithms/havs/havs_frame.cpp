@@ -1,5 +1,7 @@
 #include "algorithms/havs/havs_frame.h"
 
+#include "algorithms/havs/face_bins.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -15,9 +17,6 @@ namespace vob::havs {
 
 namespace {
 
-// Rows per band: 16 rows of 512 pixels with k = 8 entries is 1 MB of k-buffer, cache sized.
-constexpr int kBandRows = 16;
-
 FaceData::Linear triangle_fn(const Vec3& p0, const Vec3& p1, const Vec3& p2, double s0, double s1,
                              double s2) {
   const Vec3 n = cross(p1 - p0, p2 - p0);
@@ -26,97 +25,6 @@ FaceData::Linear triangle_fn(const Vec3& p0, const Vec3& p1, const Vec3& p2, dou
   // Gradient of the barycentric coordinate of p_i: n x (opposite edge) / |n|^2.
   const Vec3 g = (cross(n, p2 - p1) * s0 + cross(n, p0 - p2) * s1 + cross(n, p1 - p0) * s2) / nn;
   return {g, s0 - dot(g, p0)};
-}
-
-// The face's points, loaded for the rasterizer.
-int load_face(const FaceData& fd, int32_t f, Vec3* v) {
-  const int n = fd.faces->face_size(f);
-  const int32_t* ids = fd.faces->face_points(f);
-  for (int i = 0; i < n; ++i) v[i] = fd.scene.mesh().points[ids[i]];
-  return n;
-}
-
-// Faces listed per band of rows in drawing order (CSR), from their sample rectangles. Each
-// item carries its face and rectangle, so a band reads its list sequentially (the profile
-// of the k-buffer phase showed the scattered rect[position] loads as its hottest stall).
-struct BandItem {
-  int32_t face;
-  SampleRect rect;
-};
-struct BandLists {
-  int rows_per_band = kBandRows, bands = 0;
-  std::vector<int64_t> start;       // size bands + 1
-  std::vector<BandItem> items;      // per band, in drawing order
-};
-
-BandLists band_lists(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order) {
-  BandLists b;
-  b.bands = (frame.rows() + b.rows_per_band - 1) / b.rows_per_band;
-  std::vector<SampleRect> rect(order.size());
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, order.size(), 4096), [&](const auto& r) {
-    PolygonRaster pr;
-    Vec3 v[4];
-    for (size_t i = r.begin(); i < r.end(); ++i) {
-      const int n = load_face(fd, order[i], v);
-      rect[i] = pr.setup(frame, v, n) ? pr.bounds().intersect(frame.bounds()) : SampleRect{};
-    }
-  });
-  std::vector<int64_t> count(b.bands + 1, 0);
-  for (const SampleRect& r : rect)
-    if (!r.empty())
-      for (int q = r.y0 / b.rows_per_band; q <= r.y1 / b.rows_per_band; ++q) ++count[q + 1];
-  std::partial_sum(count.begin(), count.end(), count.begin());
-  b.start = count;
-  b.items.resize(b.start.back());
-  for (size_t i = 0; i < rect.size(); ++i) {
-    const SampleRect& r = rect[i];
-    if (r.empty()) continue;
-    for (int q = r.y0 / b.rows_per_band; q <= r.y1 / b.rows_per_band; ++q)
-      b.items[count[q]++] = BandItem{order[i], r};
-  }
-  return b;
-}
-
-// Calls visit(local pixel index, entry) for every fragment of band q, in drawing order.
-template <class Visit>
-void scan_band(const FaceData& fd, const SampleFrame& frame,
-               const BandLists& b, int q, Visit&& visit) {
-  const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
-  const SampleRect band{0, row0, frame.cols() - 1, row1 - 1};
-  const bool ortho = frame.ortho();
-  const Vec3 eye = frame.eye(), fwd = frame.forward();
-  PolygonRaster pr;
-  Vec3 v[4];
-  const int64_t end = b.start[q + 1];
-  const MeshFaces& mf = *fd.faces;
-  const Vec3* points = fd.scene.mesh().points.data();
-  for (int64_t it = b.start[q]; it < end; ++it) {
-    // Faces arrive in depth order, so their data is scattered in memory: prefetch the
-    // per-face records 16 items ahead and, once their offsets are cached, the points 8 ahead.
-    if (it + 16 < end) {
-      const int32_t g = b.items[it + 16].face;
-      __builtin_prefetch(&mf.offsets[g]);
-      __builtin_prefetch(&fd.boundary[g]);
-      __builtin_prefetch(&fd.quad_slot[g]);
-      __builtin_prefetch(&fd.scalar[g]);
-    }
-    if (it + 8 < end) {
-      const int32_t g = b.items[it + 8].face;
-      const int32_t* ids = mf.face_points(g);
-      __builtin_prefetch(ids);
-      for (int i = 0, n = mf.face_size(g); i < n; ++i) __builtin_prefetch(&points[ids[i]]);
-    }
-    const BandItem& item = b.items[it];
-    const int32_t f = item.face;
-    const int n = load_face(fd, f, v);
-    if (!pr.setup(frame, v, n)) continue;
-    const int32_t tag = f * 2 + fd.boundary[f];
-    pr.scan(item.rect.intersect(band), [&](int sx, int sy, double t) {
-      const Vec3 x = frame.x(sx, sy);
-      const Vec3 p = ortho ? x + fwd * t : eye + x * (t / length(x));
-      visit((sy - row0) * frame.cols() + sx, KEntry{float(t), fd.scalar_at(f, p), tag});
-    });
-  }
 }
 
 void store_pixel(Image& img, int64_t pixel, const PixelAccum& a) {
@@ -173,17 +81,14 @@ FaceData build_face_data(const Scene& scene) {
 }
 
 void sort_faces(const FaceData& fd, const Camera& view, SortBuffers& buf, std::vector<int32_t>& order) {
-  const std::vector<Vec3>& c = fd.centroids->points;
-  const size_t n = c.size();
-  buf.keys.resize(n);
+  const Vec3* c = fd.centroids->points.data();
+  const size_t n = fd.centroids->points.size();
   order.resize(n);
   const Vec3 eye = view.eye, f = view.forward();
-  for (size_t i = 0; i < n; ++i) {
-    const Vec3 d = c[i] - eye;
-    buf.keys[i] = static_cast<float>(view.ortho ? dot(d, f) : length(d));
-    order[i] = static_cast<int32_t>(i);
-  }
-  radix_sort_by_key(buf.keys, order, buf.scratch_keys, buf.scratch_ids);
+  if (view.ortho)
+    buf.sort.sort(n, [=](size_t i) { return float_sort_key(static_cast<float>(dot(c[i] - eye, f))); }, order.data());
+  else
+    buf.sort.sort(n, [=](size_t i) { return float_sort_key(static_cast<float>(length(c[i] - eye))); }, order.data());
 }
 
 std::vector<int32_t> cell_order_from_faces(const FaceData& fd, const std::vector<int32_t>& face_order) {
@@ -206,26 +111,50 @@ std::vector<int32_t> cell_order_from_faces(const FaceData& fd, const std::vector
   return out;
 }
 
-RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
-                           const std::vector<int32_t>& face_order, int k, Image& image) {
-  check_k(k);
-  const SampleFrame frame(view, 1);
-  const BandLists b = band_lists(fd, frame, face_order);
-  image.width = frame.cols();
-  image.height = frame.rows();
-  image.rgb.assign(size_t(3) * frame.num_samples(), 0.f);
-  const Shading shade{fd.tau0};
-  std::vector<RenderStats> per_band(b.bands);
-  tbb::parallel_for(0, b.bands, [&](int q) {
-    const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
-    const int64_t np = int64_t(row1 - row0) * frame.cols();
-    std::vector<KEntry> entries(np * k);
-    std::vector<uint8_t> count(np, 0);
-    std::vector<PixelAccum> acc(np);
-    RenderStats& st = per_band[q];
-    int64_t segs = 0;
+namespace {
+
+// A pixel's k-buffer, count and accumulator side by side: a fragment touches one cache line
+// rather than three (the profile's hottest loads were the separate acc and count arrays).
+template <int K>
+struct PixelState {
+  KEntry e[K];
+  PixelAccum acc;
+  uint8_t count;
+};
+
+// One band of the k-buffer pass. K > 0: k == K known at compile time (the paper's k = 2),
+// loops unrolled and PixelState; K == 0: any k, separate arrays. Same arithmetic either way.
+template <int K>
+RenderStats render_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q, int k,
+                        const Shading& shade, Image& image) {
+  const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
+  const int64_t np = int64_t(row1 - row0) * frame.cols();
+  int64_t segs = 0, frags = 0;
+  // Per-thread buffers kept from band to band and frame to frame (fresh ones cost page
+  // faults every frame).
+  if constexpr (K > 0) {
+    thread_local std::vector<PixelState<K>> px;
+    px.resize(np);
+    for (PixelState<K>& s : px) s.acc = PixelAccum{}, s.count = 0;
     scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) {
-      ++st.fragments;
+      ++frags;
+      PixelState<K>& s = px[p];
+      kbuffer_insert(s.e, s.count, K, e, [&](const KEntry& n1, const KEntry& n2) { segs += shade.segment(s.acc, n1, n2); });
+    });
+    for (int64_t p = 0; p < np; ++p) {
+      PixelState<K>& s = px[p];
+      kbuffer_flush(s.e, s.count, [&](const KEntry& n1, const KEntry& n2) { segs += shade.segment(s.acc, n1, n2); });
+      store_pixel(image, int64_t(row0) * frame.cols() + p, s.acc);
+    }
+  } else {
+    thread_local std::vector<KEntry> entries;
+    thread_local std::vector<uint8_t> count;
+    thread_local std::vector<PixelAccum> acc;
+    entries.resize(np * k);
+    count.assign(np, 0);
+    acc.assign(np, PixelAccum{});
+    scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) {
+      ++frags;
       kbuffer_insert(&entries[p * k], count[p], k, e, [&](const KEntry& n1, const KEntry& n2) {
         segs += shade.segment(acc[p], n1, n2);
       });
@@ -236,7 +165,29 @@ RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
       });
       store_pixel(image, int64_t(row0) * frame.cols() + p, acc[p]);
     }
-    st.segments = segs;
+  }
+  return {frags, segs};
+}
+
+}  // namespace
+
+RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
+                           const std::vector<int32_t>& face_order, int k, Image& image,
+                           FaceBins* scratch) {
+  check_k(k);
+  const SampleFrame frame(view, 1);
+  FaceBins local;
+  FaceBins& b = scratch ? *scratch : local;
+  bin_faces(fd, frame, face_order, b);
+  image.width = frame.cols();
+  image.height = frame.rows();
+  image.rgb.resize(size_t(3) * frame.num_samples());  // every pixel is stored below
+  const Shading shade{fd.tau0};
+  // Per band, written once per band (a counter per fragment here would share lines).
+  std::vector<RenderStats> per_band(b.bands);
+  tbb::parallel_for(0, b.bands, [&](int q) {
+    per_band[q] = k == 2 ? render_band<2>(fd, frame, b, q, k, shade, image)
+                         : render_band<0>(fd, frame, b, q, k, shade, image);
   });
   RenderStats total;
   for (const RenderStats& s : per_band) {
@@ -256,7 +207,8 @@ Analysis analyze(const FaceData& fd, const Camera& view, const std::vector<int32
                  int k, const AnalysisOptions& opt) {
   check_k(k);
   const SampleFrame frame(view, 1);
-  const BandLists b = band_lists(fd, frame, face_order);
+  FaceBins b;
+  bin_faces(fd, frame, face_order, b);
   const int cols = frame.cols();
   Analysis a;
   a.k = k;
@@ -267,7 +219,7 @@ Analysis analyze(const FaceData& fd, const Camera& view, const std::vector<int32
     img->height = frame.rows();
     img->rgb.assign(size_t(3) * frame.num_samples(), 0.f);
   }
-  const Shading shade{fd.tau0};
+  const Shading shade{fd.tau0}, reference{fd.tau0, true};  // k-buffer as rendered; exact in double
   struct BandOut {
     int64_t fragments = 0, covered = 0, violating = 0, bad_segments = 0;
     int max_list = 0;
@@ -323,7 +275,7 @@ Analysis analyze(const FaceData& fd, const Camera& view, const std::vector<int32
       PixelAccum exact;
       exact_pairs.clear();
       for (int i = 0; i + 1 < n; ++i) {
-        shade.segment(exact, sorted[i], sorted[i + 1]);
+        reference.segment(exact, sorted[i], sorted[i + 1]);
         exact_pairs.emplace_back(sorted[i].tag, sorted[i + 1].tag);
       }
       store_pixel(a.exact_image, int64_t(row0) * cols + p, exact);

@@ -6,13 +6,13 @@
 //   marks the same faces on a tetrahedral mesh) and a linear function giving the normalised
 //   scalar at any point of the face (quads: one per half, split along the 0-2 diagonal).
 // - sort_faces ("cpu sort"): face centroid distances to the eye as float keys, sorted front to
-//   back by the LSD radix sort.
+//   back by the LSD radix argsort (stable: ties in face id order).
 // - render_kbuffer ("k-buffer"): the faces are rasterized in sorted order at pixel centres by
 //   the harness rasterizer (top-left rule, so every face crossing a ray gives one fragment);
 //   each fragment goes through its pixel's k-buffer (kbuffer.h); a final flush. The image is
-//   cut into bands of rows processed in parallel: a pixel's result depends only on the
-//   fragments reaching it, in face order, so bands are independent and the result does not
-//   depend on threads.
+//   cut into bands of rows processed in parallel, the faces binned per band first
+//   (face_bins.h): a pixel's result depends only on the fragments reaching it, in face order,
+//   so bands are independent and the result does not depend on threads.
 // - analyze: per pixel, the fragment stream in arrival order, its A-buffer (sorted) order,
 //   k_needed (kbuffer.h), and the k-buffer rerun on the stream, segment by segment against
 //   the A-buffer's; both images. Untimed.
@@ -21,11 +21,14 @@
 #include <vector>
 
 #include "algorithms/havs/kbuffer.h"
+#include "harness/sort/radix_argsort.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/scene.h"
 #include "harness/view/camera.h"
 
 namespace vob::havs {
+
+inline float clamp01(double s) { return float(s < 0 ? 0 : (s > 1 ? 1 : s)); }
 
 struct FaceData {
   Scene scene;                        // shares the mesh and its derived faces
@@ -46,16 +49,14 @@ struct FaceData {
   float scalar_at(int32_t f, const Vec3& p) const {
     const int32_t q = quad_slot[f];
     const double s = (q >= 0 && quad_split[q].at(p) > 0) ? quad_half2[q].at(p) : scalar[f].at(p);
-    return float(s < 0 ? 0 : (s > 1 ? 1 : s));
+    return clamp01(s);
   }
 };
 FaceData build_face_data(const Scene& scene);
 
 struct SortBuffers {
-  std::vector<float> keys;
-  std::vector<uint32_t> scratch_keys;
-  std::vector<int32_t> scratch_ids;
-  size_t bytes() const { return keys.capacity() * 4 + scratch_keys.capacity() * 4 + scratch_ids.capacity() * 4; }
+  RadixArgsort sort;  // fused key pass + range-limited LSD passes, parallel under the TBB limit
+  size_t bytes() const { return sort.bytes(); }
 };
 // Face ids front to back by centroid distance to the eye (view depth in ortho).
 void sort_faces(const FaceData& fd, const Camera& view, SortBuffers& buf, std::vector<int32_t>& order);
@@ -71,8 +72,11 @@ struct RenderStats {
 };
 // The k-buffer pass; `image` is resized to the view. k in [1, kMaxK].
 constexpr int kMaxK = 16;
+struct FaceBins;  // face_bins.h
+// `scratch` (optional): the binning buffers, kept by a caller that renders frame after frame.
 RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
-                           const std::vector<int32_t>& face_order, int k, Image& image);
+                           const std::vector<int32_t>& face_order, int k, Image& image,
+                           FaceBins* scratch = nullptr);
 
 struct Segment {
   float d1 = 0, d2 = 0;

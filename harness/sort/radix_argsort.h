@@ -1,8 +1,10 @@
 // Stable argsort of uint32 keys made on the fly: the key pass writes the keys and their
 // range in one streamed pass; an LSD radix sort then runs over only the bits in which the
-// keys differ (key - min, digits of <= 11 bits: a 22-bit range takes 2 passes, 1M view
-// depths of a mesh ~24 bits take 3), the ids 0..n-1 made in the first scatter and the last
-// pass writing the caller's output (no key transform pass, no keys written back, no copy).
+// keys differ (key - min, digits of <= 11 bits: a 22-bit range takes 2 passes), the ids
+// 0..n-1 made in the first scatter and the last pass writing the caller's output (no key
+// transform pass, no keys written back, no copy). Ranges of 23 to 27 bits (1M view depths
+// of a mesh span ~24) take one scatter by their top bits and then sort each bucket by its
+// low 16 bits in cache: two trips through memory instead of three.
 // Blocks run in parallel with TBB when the global thread limit allows; per-block counts keep
 // it stable, so the order never depends on the thread count.
 #pragma once
@@ -75,6 +77,8 @@ class RadixArgsort {
 
  private:
   void plan(size_t n);         // sizes the buffers, picks the blocks from the thread limit
+  // Ranges of 23 to 27 bits: one scatter by the top bits, then each bucket in cache.
+  void sort_two_level(int32_t* out, uint32_t mn, int bits);
 
   template <class F>
   void for_blocks(F&& f) {
@@ -94,6 +98,7 @@ class RadixArgsort {
   HugeWords keys_, pairs_, pairs2_;  // pairs: (key << 32 | id), two words each
   std::vector<uint32_t> block_min_, block_max_;
   std::vector<uint32_t> counts_;  // nblocks x radix: counts, then each block's next slot
+  std::vector<uint32_t> bucket_start_;  // sort_two_level: each top-digit bucket's first slot
 };
 
 }  // namespace vob

@@ -2,12 +2,16 @@
 // on the ~1M centroids of a 55^3 x 6 tet block: the fused argsort (RadixArgsort) against the
 // old path (a key pass into KeySort, its four-histogram 8-bit radix sort, then a copy), both
 // keys, at 1 and 2 threads (tbb::global_control; the old path is serial). items/s = cells.
+// BM_CentroidPeer: whole order() calls of centroid, centroid:key=view and vtk-centroid on
+// the same block at 1 and 2 threads, process CPU time and real time: the centroid / vtk
+// ratio of issue 16 within one run of one binary (build it before and after a change).
 #include <benchmark/benchmark.h>
 #include <tbb/global_control.h>
 
 #include <cmath>
 #include <vector>
 
+#include "harness/bench/registry.h"
 #include "harness/scene/scene.h"
 #include "harness/sort/radix_argsort.h"
 #include "harness/sort/radix_sort.h"
@@ -91,5 +95,30 @@ BENCHMARK(BM_CentroidKeySortFused)
     ->Args({1, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// range(0): the thread limit.
+void BM_CentroidPeer(benchmark::State& state, const char* spec) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                            static_cast<size_t>(state.range(0)));
+  static const vob::Scene scene = vob::Scene::from_mesh("tet-block-55", vob::testing::tet_block(55, 55, 55));
+  auto orderer = vob::make_orderer(spec);
+  vob::PhaseClock prep;
+  const vob::Scene own = scene.fresh();
+  orderer->prepare(own, prep);
+  const vob::Camera view = vob::fibonacci_view(scene.bounds(), 14, 0);
+  for (auto _ : state) {
+    vob::PhaseClock clock;
+    auto o = orderer->order(view, clock);
+    benchmark::DoNotOptimize(o.order.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(scene.num_primitives()));
+}
+
+BENCHMARK_CAPTURE(BM_CentroidPeer, centroid, "centroid")
+    ->ArgNames({"threads"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK_CAPTURE(BM_CentroidPeer, centroid_view, "centroid:key=view")
+    ->ArgNames({"threads"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK_CAPTURE(BM_CentroidPeer, vtk_centroid, "vtk-centroid")
+    ->ArgNames({"threads"})->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
 }  // namespace

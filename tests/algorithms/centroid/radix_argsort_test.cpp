@@ -41,7 +41,7 @@ TEST(RadixArgsort, MatchesStableSortForEveryKeyRangeAndThreadCount) {
   for (int threads : {1, 2}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     for (size_t n : {0u, 1u, 2u, 17u, 1000u, 70000u, 300000u}) {
-      for (int bits : {0, 1, 5, 11, 12, 22, 23, 24, 31, 32}) {
+      for (int bits : {0, 1, 5, 11, 12, 22, 23, 24, 27, 28, 31, 32}) {
         const uint32_t base = bits == 32 ? 0 : static_cast<uint32_t>(rng()) >> bits;  // no wrap
         const uint32_t span = bits == 32 ? 0xffffffffu : (bits == 0 ? 0 : (1u << bits) - 1);
         std::uniform_int_distribution<uint32_t> u(0, span);

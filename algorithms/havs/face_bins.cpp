@@ -1,0 +1,103 @@
+#include "algorithms/havs/face_bins.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace vob::havs {
+
+namespace {
+
+// Rows per band: 16 rows of 512 pixels with k = 8 entries is 1 MB of k-buffer, cache sized.
+constexpr int kBandRows = 16;
+constexpr size_t kChunk = 8192;  // faces per binning task; chunks keep the drawing order
+
+// The sample centres a face with projected points q[0..n) may cover: the range that
+// PolygonRaster::setup's rejection test (may_cover_a_sample) uses, with its margin; the whole
+// frame when a point is not in front of the eye (the projection then says nothing).
+SampleRect reach(const SampleFrame& frame, const ProjectedVertex* q, int n) {
+  double lx = 0, hx = 0, ly = 0, hy = 0;
+  for (int i = 0; i < n; ++i) {
+    if (!q[i].in_front) return frame.bounds();
+    if (i == 0 || q[i].x < lx) lx = q[i].x;
+    if (i == 0 || q[i].x > hx) hx = q[i].x;
+    if (i == 0 || q[i].y < ly) ly = q[i].y;
+    if (i == 0 || q[i].y > hy) hy = q[i].y;
+  }
+  const double m = 1e-6 * (1.0 + std::max({std::fabs(lx), std::fabs(hx), std::fabs(ly), std::fabs(hy)}));
+  const double x0 = std::ceil(lx - m - 0.5), x1 = std::floor(hx + m - 0.5);
+  const double y0 = std::ceil(ly - m - 0.5), y1 = std::floor(hy + m - 0.5);
+  if (!(x0 <= x1 && y0 <= y1 && x1 >= 0 && y1 >= 0 && x0 < frame.cols() && y0 < frame.rows()))
+    return {};
+  return SampleRect{int(std::max(x0, 0.0)), int(std::max(y0, 0.0)),
+                    int(std::min(x1, frame.cols() - 1.0)), int(std::min(y1, frame.rows() - 1.0))};
+}
+
+}  // namespace
+
+void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b) {
+  b.rows_per_band = kBandRows;
+  b.bands = (frame.rows() + b.rows_per_band - 1) / b.rows_per_band;
+  const std::vector<Vec3>& pts = fd.scene.mesh().points;
+  b.projected.resize(pts.size());
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, pts.size(), 4096), [&](const auto& r) {
+    for (size_t i = r.begin(); i < r.end(); ++i) b.projected[i] = ProjectedVertex::of(frame, pts[i]);
+  });
+  if (!frame.ortho()) {
+    b.inv_len.resize(frame.num_samples());
+    tbb::parallel_for(0, frame.rows(), [&](int sy) {
+      for (int sx = 0; sx < frame.cols(); ++sx) b.inv_len[frame.index(sx, sy)] = 1.0 / length(frame.x(sx, sy));
+    });
+  }
+  // Two passes over chunks of the drawing order: count per (chunk, band), then place; the
+  // slots are band-major, chunk-minor, so every band's list keeps the drawing order.
+  const MeshFaces& mf = *fd.faces;
+  const size_t n = order.size(), chunks = (n + kChunk - 1) / kChunk, nb = size_t(b.bands);
+  std::vector<SampleRect>& rect = b.rect;
+  std::vector<int64_t>& slot = b.slot;
+  rect.resize(n);
+  slot.assign(chunks * nb, 0);
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    int64_t* cnt = &slot[c * nb];
+    ProjectedVertex q[4];
+    for (size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
+      if (i + 16 < e) __builtin_prefetch(&mf.offsets[order[i + 16]]);
+      if (i + 8 < e) __builtin_prefetch(mf.face_points(order[i + 8]));
+      const int32_t f = order[i];
+      const int32_t* ids = mf.face_points(f);
+      const int m = mf.face_size(f);
+      for (int j = 0; j < m; ++j) q[j] = b.projected[ids[j]];
+      const SampleRect r = reach(frame, q, m);
+      rect[i] = r;
+      if (!r.empty())
+        for (int band = r.y0 / b.rows_per_band; band <= r.y1 / b.rows_per_band; ++band) ++cnt[band];
+    }
+  });
+  b.start.assign(nb + 1, 0);
+  int64_t sum = 0;
+  for (size_t band = 0; band < nb; ++band) {
+    b.start[band] = sum;
+    for (size_t c = 0; c < chunks; ++c) {
+      const int64_t k = slot[c * nb + band];
+      slot[c * nb + band] = sum;
+      sum += k;
+    }
+  }
+  b.start[nb] = sum;
+  b.items.resize(sum);
+  tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
+    int64_t* next = &slot[c * nb];
+    for (size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
+      const SampleRect& r = rect[i];
+      if (r.empty()) continue;
+      BandItem item{order[i], {-1, -1, -1, -1}, r};
+      const int32_t* ids = mf.face_points(order[i]);
+      for (int j = 0, m = mf.face_size(order[i]); j < m; ++j) item.ids[j] = ids[j];
+      for (int band = r.y0 / b.rows_per_band; band <= r.y1 / b.rows_per_band; ++band) b.items[next[band]++] = item;
+    }
+  });
+}
+
+}  // namespace vob::havs

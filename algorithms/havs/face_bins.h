@@ -1,0 +1,114 @@
+// The faces of one HAVS frame binned into bands of rows, in drawing order, and the scan of a
+// band that turns them into k-buffer fragments (used by the timed k-buffer pass and by the
+// untimed analysis, so both see the same fragments).
+//
+// Binning costs a projection per mesh point (not per face vertex) and a rectangle per face:
+// the rectangle is the range of sample centres the projected face can reach, the same range
+// PolygonRaster's own rejection test uses, so a face lands only in bands it may cover and
+// the harness rasterizer's setup runs once per (face, band), reusing the projected points.
+// Items carry the face's point ids, so a band reads its list sequentially (the profile
+// showed the scattered face records and point ids as the scan's hottest stalls).
+// The scalar at a fragment is the face's linear function along the sample's ray, evaluated
+// from the ray parameter t without forming the 3D point: s = A + (t / |D|) (g . D) in
+// perspective, 1/|D| tabled per sample (the same value as before up to double rounding).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "algorithms/havs/havs_frame.h"
+#include "harness/raster/polygon_raster.h"
+#include "harness/raster/sample_frame.h"
+
+namespace vob::havs {
+
+struct BandItem {
+  int32_t face;
+  int32_t ids[4];   // the face's points; ids[3] = -1 for a triangle
+  SampleRect rect;  // the sample centres the face may cover
+};
+
+struct FaceBins {
+  int rows_per_band = 16, bands = 0;
+  std::vector<int64_t> start;                // size bands + 1
+  std::vector<BandItem> items;               // per band, in drawing order
+  std::vector<ProjectedVertex> projected;    // per mesh point
+  std::vector<double> inv_len;               // per sample: 1 / |D| (perspective only)
+  std::vector<SampleRect> rect;              // binning scratch: per face in drawing order
+  std::vector<int64_t> slot;                 // binning scratch: per (chunk, band)
+  size_t bytes() const {
+    return items.capacity() * sizeof(BandItem) + projected.capacity() * sizeof(ProjectedVertex) +
+           inv_len.capacity() * 8 + rect.capacity() * sizeof(SampleRect) + (start.capacity() + slot.capacity()) * 8;
+  }
+};
+
+// Bins the faces of `order` (drawing order) for `frame` into `b` (its buffers reused);
+// parallel under the TBB limit, the result independent of the thread count.
+void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b);
+
+// Calls visit(local pixel index, entry) for every fragment of band q, in drawing order.
+template <class Visit>
+void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q, Visit&& visit) {
+  const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
+  const SampleRect band{0, row0, frame.cols() - 1, row1 - 1};
+  const bool ortho = frame.ortho();
+  const Vec3 eye = frame.eye(), fwd = frame.forward();
+  const int cols = frame.cols();
+  const Vec3* points = fd.scene.mesh().points.data();
+  const double* inv_len = b.inv_len.data();
+  PolygonRaster pr;
+  Vec3 v[4];
+  ProjectedVertex pv[4];
+  const int64_t end = b.start[q + 1];
+  for (int64_t it = b.start[q]; it < end; ++it) {
+    if (it + 8 < end) {  // faces arrive in depth order: their records are scattered
+      const BandItem& ahead = b.items[it + 8];
+      __builtin_prefetch(&fd.boundary[ahead.face]);
+      __builtin_prefetch(&fd.quad_slot[ahead.face]);
+      __builtin_prefetch(&fd.scalar[ahead.face]);
+      for (int i = 0; i < 4 && ahead.ids[i] >= 0; ++i) {
+        __builtin_prefetch(&points[ahead.ids[i]]);
+        __builtin_prefetch(&b.projected[ahead.ids[i]]);
+      }
+    }
+    const BandItem& item = b.items[it];
+    const int n = item.ids[3] < 0 ? 3 : 4;
+    for (int i = 0; i < n; ++i) {
+      v[i] = points[item.ids[i]];
+      pv[i] = b.projected[item.ids[i]];
+    }
+    if (!pr.setup(frame, v, n, pv)) continue;
+    const int32_t f = item.face;
+    const int32_t tag = f * 2 + fd.boundary[f];
+    // s(t) along the ray X: perspective p = eye + X t/|X|, orthographic p = X + fwd t.
+    const auto along = [&](const FaceData::Linear& l, double& a, double& b_t) {
+      a = ortho ? l.c : l.c + dot(l.g, eye);
+      b_t = ortho ? dot(l.g, fwd) : 0;
+    };
+    const int32_t qs = fd.quad_slot[f];
+    const FaceData::Linear& l1 = fd.scalar[f];
+    double a1, b1;
+    along(l1, a1, b1);
+    if (qs < 0) {
+      pr.scan(item.rect.intersect(band), [&](int sx, int sy, double t) {
+        const Vec3 x = frame.x(sx, sy);
+        const double lam = ortho ? 1.0 : t * inv_len[int64_t(sy) * cols + sx];
+        const double s = a1 + b1 * t + lam * dot(l1.g, x);
+        visit((sy - row0) * cols + sx, KEntry{float(t), clamp01(s), tag});
+      });
+    } else {
+      const FaceData::Linear &l2 = fd.quad_half2[qs], &ls = fd.quad_split[qs];
+      double a2, b2, as, bs;
+      along(l2, a2, b2);
+      along(ls, as, bs);
+      pr.scan(item.rect.intersect(band), [&](int sx, int sy, double t) {
+        const Vec3 x = frame.x(sx, sy);
+        const double lam = ortho ? 1.0 : t * inv_len[int64_t(sy) * cols + sx];
+        const bool second = as + bs * t + lam * dot(ls.g, x) > 0;
+        const double s = second ? a2 + b2 * t + lam * dot(l2.g, x) : a1 + b1 * t + lam * dot(l1.g, x);
+        visit((sy - row0) * cols + sx, KEntry{float(t), clamp01(s), tag});
+      });
+    }
+  }
+}
+
+}  // namespace vob::havs
