@@ -14,6 +14,7 @@
 #include "harness/cli/reproduce.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/cli/thread_option.h"
+#include "harness/cli/raster_option.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -60,6 +61,8 @@ Command add_reproduce_command(CLI::App& app) {
       ->check(CLI::IsMember({"jsonl", "gbench"}));
   auto threads = std::make_shared<ThreadOption>();
   threads->add_to(*cmd);
+  auto raster = std::make_shared<RasterOption>();
+  raster->add_to(*cmd);
   return [=]() {
     const auto limit = threads->limit();
     // Google Benchmark's JSON of the finished folder, beside its results.jsonl.
@@ -83,6 +86,7 @@ Command add_reproduce_command(CLI::App& app) {
       for (const auto& e : list_reproductions(suites_dir)) {
         Reproduction rep = load_reproduction(e.path, scale, suites_dir);
         threads->apply(rep);
+        raster->apply(rep);
         if (!rep.paper.empty()) reps.push_back(std::move(rep));
       }
       if (*dry_run) {
@@ -97,6 +101,7 @@ Command add_reproduce_command(CLI::App& app) {
     if (path.empty()) unknown_reproduction(*name, suites_dir);
     Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
     threads->apply(rep);
+    raster->apply(rep);
     if (*dry_run) {
       dry_run_reproductions({rep}, out, *force);
       return 0;

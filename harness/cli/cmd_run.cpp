@@ -11,6 +11,7 @@
 #include "harness/scene/input_error.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/cli/thread_option.h"
+#include "harness/cli/raster_option.h"
 
 namespace vob {
 
@@ -38,9 +39,12 @@ Command add_run_command(CLI::App& app) {
                 "writes nothing");
   auto threads = std::make_shared<ThreadOption>();
   threads->add_to(*cmd);
+  auto raster = std::make_shared<RasterOption>();
+  raster->add_to(*cmd);
   return [=]() {
     SuiteSpec s = SuiteSpec::load(*suite);
     threads->apply(s);
+    raster->apply(s);
     const auto limit = threads->limit();
     std::error_code ec;
     if (std::filesystem::exists(*out, ec) && !std::filesystem::is_regular_file(*out, ec))
