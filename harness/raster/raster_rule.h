@@ -19,11 +19,12 @@
 //   rule in a y-down frame, so left edges and the edges at the bottom in GL's y-up window);
 // - within llvmpipe's bounding box: x in [min X >> 8, (max X - 1) >> 8], y likewise;
 // - depth as a GL depth test compares it: window depth z in [0, 1] (gl_depth_range below)
-//   rounded to the 24-bit depth buffer, round(z * (2^24 - 1)); fragments of equal 24-bit
-//   depth are ties.
+//   on the plane through the snapped vertices (polygon_raster.h), rounded to the 24-bit
+//   depth buffer, round(z * (2^24 - 1)); fragments of equal 24-bit depth are ties.
 // The rule describes llvmpipe given those window coordinates: the GL backends hand
-// llvmpipe the snapped coordinates themselves (gl_window_vertex), so its own float vertex
-// transform does not enter. Other GL implementations snap to other grids (most desktop
+// llvmpipe the snapped coordinates themselves (harness/gl/window_vertices.h), so its own
+// float vertex transform does not enter. Not described: llvmpipe's float interpolation of
+// depth, which on steep triangles can differ from the plane by tens of 24-bit steps. Other GL implementations snap to other grids (most desktop
 // GPUs also use 8 subpixel bits, some 4) and may own other edges; the rule is llvmpipe's.
 #pragma once
 #include <cmath>
