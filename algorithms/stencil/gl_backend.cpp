@@ -11,10 +11,12 @@
 #include "harness/gl/gl_functions.h"
 #include "harness/gl/osmesa_context.h"
 #include "harness/gl/shader_program.h"
-#include "harness/gl/view_projection.h"
+#include "harness/gl/window_vertices.h"
 #include "algorithms/stencil/shaders.h"
 #include "algorithms/stencil/software_backend.h"
 #include "harness/raster/polygon_raster.h"
+#include "harness/raster/raster_rule.h"
+#include "harness/raster/sample_frame.h"
 #include "harness/scene/input_error.h"
 
 namespace vob::stencil {
@@ -35,8 +37,12 @@ struct GlBackend::Impl {
   GLuint program = 0, vao = 0, vbo = 0, ibo = 0, fbo = 0, colour_rb = 0, depth_rb = 0;
   GLint mvp_loc = -1;
   int w = 0, h = 0;
+  gl::Pow2Viewport viewport{1, 1};
   std::vector<uint32_t> first;   // per primitive: first vertex
   std::vector<uint8_t> count;    // per primitive: 3 or 6 vertices
+  std::vector<Vec3> world;       // per vertex: its world position
+  std::vector<Vertex> verts;     // per vertex, per frame: NDC of its snapped window position
+  std::vector<uint8_t> drawable;  // per primitive, per frame: every vertex in front of the eye
   size_t vertex_bytes = 0;
   std::vector<uint32_t> index;   // per pass
   std::vector<uint32_t> rows32;  // a read rectangle, GL row order
@@ -98,7 +104,8 @@ struct GlBackend::Impl {
     const GLenum buf = GL_COLOR_ATTACHMENT0;
     gl.glDrawBuffers(1, &buf);
     gl.glReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl.glViewport(0, 0, w, h);
+    viewport = gl::Pow2Viewport(w, h);  // window_vertices.h: positions reach llvmpipe exactly
+    gl.glViewport(0, 0, viewport.w, viewport.h);
     gl.check("framebuffer");
   }
 
@@ -114,22 +121,23 @@ struct GlBackend::Impl {
     gl.glClearBufferfi(GL_DEPTH_STENCIL, 0, depth, 0);
   }
 
-  // Our rows [r.y, r.y + r.h) of the upside-down image (see begin_frame), read in one call
-  // through `rows` and copied into dst (w values a row) in reverse row order.
+  // Rows [r.y, r.y + r.h) (GL's row order is ours: row 0 at the bottom), read in one call
+  // through `rows` and copied into dst (w values a row).
   template <class T>
   void read_rows(const PixelRect& r, GLenum format, GLenum type, std::vector<T>& rows, T* dst) {
     rows.resize(size_t(r.w) * r.h);
     gl.glPixelStorei(GL_PACK_ALIGNMENT, 1);
     gl.glPixelStorei(GL_PACK_ROW_LENGTH, 0);
-    gl.glReadPixels(r.x, h - r.y - r.h, r.w, r.h, format, type, rows.data());
+    gl.glReadPixels(r.x, r.y, r.w, r.h, format, type, rows.data());
     for (int k = 0; k < r.h; ++k)
-      std::memcpy(dst + size_t(r.y + k) * w + r.x, &rows[size_t(r.h - 1 - k) * r.w], size_t(r.w) * sizeof(T));
+      std::memcpy(dst + size_t(r.y + k) * w + r.x, &rows[size_t(k) * r.w], size_t(r.w) * sizeof(T));
   }
 
   void draw(const std::vector<int32_t>& ids) {
     index.clear();
     for (int32_t id : ids)
-      for (uint32_t k = 0; k < count[id]; ++k) index.push_back(first[id] + k);
+      if (drawable[size_t(id)])
+        for (uint32_t k = 0; k < count[id]; ++k) index.push_back(first[id] + k);
     gl.glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(index.size() * 4), index.data(), GL_STREAM_DRAW);
     if (!index.empty()) gl.glDrawElements(GL_TRIANGLES, GLsizei(index.size()), GL_UNSIGNED_INT, nullptr);
   }
@@ -168,9 +176,10 @@ void GlBackend::set_primitives(const std::vector<Vec3>& points, const std::vecto
   v.reserve(sizes.size() * 3);
   g.first.resize(sizes.size());
   g.count.resize(sizes.size());
+  g.world.clear();
   auto put = [&](const Vec3& p, uint32_t id) {
-    const Vec3 d = p - g.centre;
-    v.push_back({float(d.x), float(d.y), float(d.z), id});
+    g.world.push_back(p);
+    v.push_back({0.f, 0.f, 0.f, id});
   };
   for (size_t i = 0; i < sizes.size(); ++i) {
     const Vec3* p = &points[4 * i];
@@ -190,10 +199,9 @@ void GlBackend::set_primitives(const std::vector<Vec3>& points, const std::vecto
       g.count[i] = 6;
     }
   }
-  g.gl.glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
-  g.gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(Vertex)), v.data(), GL_STATIC_DRAW);
-  g.vertex_bytes = v.size() * sizeof(Vertex);
-  g.gl.check("vertex upload");
+  g.verts = std::move(v);
+  g.drawable.assign(sizes.size(), 1);
+  g.vertex_bytes = g.verts.size() * sizeof(Vertex);
 }
 
 void GlBackend::begin_frame(const Camera& view) {
@@ -204,27 +212,30 @@ void GlBackend::begin_frame(const Camera& view) {
   g.gl.glBindFramebuffer(GL_FRAMEBUFFER, g.fbo);
   g.gl.glUseProgram(g.program);
   g.gl.glBindVertexArray(g.vao);
-  // Model-view-projection in doubles (world = position + centre), near and far planes
-  // around the scene's bounding sphere. Upside down: GL row H-1-j is our row j.
-  // llvmpipe's fill rule owns the edges that are bottom edges in GL's y-up window (D3D's
-  // top-left rule in a y-down frame); the harness owns top and left edges (y up). Flipping
-  // y makes the two rules the same.
-  gl::ProjectionOptions po;
-  po.origin = g.centre;
-  po.depth = true;
-  po.flip_y = true;
-  const double d = dot(g.centre - view.eye, view.forward());  // view depth of the centre
-  if (view.ortho) {
-    po.near = std::max(d - 1.01 * g.radius, 0.0);
-    po.far = std::max(d + 1.01 * g.radius, po.near + 1e-6 * g.radius);
-  } else {
-    po.near = std::max(d - 1.01 * g.radius, 1e-3 * g.radius);
-    po.far = std::max(d + 1.01 * g.radius, 2 * po.near);
+  // The gl sampling rule's window coordinates (raster_rule.h), snapped to llvmpipe's grid
+  // here, handed over as NDC with w = 1 under an identity matrix: llvmpipe's own snapping
+  // then reproduces them bit for bit. Window depth from the same near and far planes.
+  const SampleFrame frame(view, 1);
+  const GlDepthRange range = gl_depth_range(view, g.centre, g.radius);
+  for (size_t p = 0; p < g.first.size(); ++p) {
+    bool front = true;
+    for (uint32_t k = g.first[p]; k < g.first[p] + g.count[p]; ++k) {
+      double x, y, zc;
+      front = frame.project(g.world[k], x, y, zc) && front;
+      if (!front) break;
+      Vertex& v = g.verts[k];
+      const auto ndc = g.viewport.ndc(gl_unsnap(gl_snap(x)), gl_unsnap(gl_snap(y)));
+      v.x = ndc[0];
+      v.y = ndc[1];
+      v.z = float(2 * gl_window_depth(view, range, zc) - 1);
+    }
+    g.drawable[p] = front;  // a vertex behind the eye: the rule covers nothing, so draw nothing
   }
-  const std::array<double, 16> md = gl::view_projection(view, po);
-  float m[16];
-  for (int i = 0; i < 16; ++i) m[i] = float(md[i]);
-  g.gl.glUniformMatrix4fv(g.mvp_loc, 1, GL_FALSE, m);
+  g.gl.glBindBuffer(GL_ARRAY_BUFFER, g.vbo);
+  g.gl.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(g.verts.size() * sizeof(Vertex)), g.verts.data(),
+                    GL_STREAM_DRAW);
+  const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  g.gl.glUniformMatrix4fv(g.mvp_loc, 1, GL_FALSE, identity);
   g.gl.check("begin frame");
 }
 
@@ -249,8 +260,6 @@ void GlBackend::finish() {
   impl_->gl.check("rendering");
 }
 
-// The image is drawn upside down (see begin_frame): our rows [y, y + h) are GL rows
-// [H - y - h, H - y), read in one call and copied back in reverse row order.
 void GlBackend::read_colour(const PixelRect& r, uint32_t* dst) {
   impl_->read_rows(r, GL_RED_INTEGER, GL_UNSIGNED_INT, impl_->rows32, dst);
 }

@@ -5,20 +5,18 @@
 // GL_RED_INTEGER and GL_STENCIL_INDEX rectangles straight into the caller's W x H arrays
 // (GL_PACK_ROW_LENGTH = W).
 //
-// Fill rule: llvmpipe owns left edges and the edges that are bottom edges in GL's y-up
-// window (D3D's top-left rule in a y-down frame); the harness rasterizer owns left and top
-// edges (y up). The image is therefore drawn upside down (GL row H-1-j is our row j) and
-// reads flip it back: then the rules agree at pixel centres exactly on edges (a test
-// checks 16 edge directions and whole scenes). What still differs: llvmpipe snaps window
-// coordinates to 1/256 pixel, so centres within about 1/256 pixel of an edge may change
-// sides, and depth is interpolated in floats into 24 bits.
+// Coverage and depth: what the gl sampling rule describes (harness/raster/raster_rule.h).
+// Per frame the vertices are projected by the harness (SampleFrame::project), snapped to
+// llvmpipe's 1/256-pixel grid and handed to it as NDC with w = 1 under an identity matrix
+// and a power-of-two viewport (harness/gl/window_vertices.h), so llvmpipe rasterizes
+// exactly those window positions with its own fill rule; the image is not flipped. Window
+// depth comes from near and far planes around the primitives' bounding sphere
+// (gl_depth_range), interpolated by llvmpipe into the 24-bit buffer. A primitive with a
+// vertex behind the eye is not drawn (the rule covers nothing there).
 //
-// Geometry: vertices are uploaded once, in floats relative to the primitives' bounding-box
-// centre; quads are drawn as two triangles split along the diagonal through their
-// lexicographically smallest vertex (the harness rasterizer's split). The projection is the
-// harness camera's (camera.h: OpenGL conventions), with near and far planes around the
-// bounding sphere (near >= 0 in orthographic views: only what is in front of the eye plane,
-// as in the harness). Each pass uploads an index buffer of the primitives it draws.
+// Geometry: quads are drawn as two triangles split along the diagonal through their
+// lexicographically smallest vertex (the harness rasterizer's split). Each pass uploads an
+// index buffer of the primitives it draws.
 //
 // The context is created by the constructor; failure is std::runtime_error with one line
 // saying what OSMesa could not do.

@@ -36,7 +36,7 @@ class LayerBackend {
   // face lie in one plane and meet every ray through their overlap at one depth; a backend
   // that honours this orders such a tie exactly: the back-facing face is nearer, since the
   // ray leaves its cell before entering the other's (coplanar_order in
-  // algorithms/xmpvo/face_pairs.h). The GL backend ignores it (it claims no exactness).
+  // algorithms/xmpvo/face_pairs.h). The GL backend ignores it (cell scenes are not judged by the gl rule).
   virtual void set_facing(const std::vector<uint8_t>* /*front_facing*/) {}
   // Per frame: the camera fixes the buffer size (W x H) and the projection.
   virtual void begin_frame(const Camera& view) = 0;

@@ -14,11 +14,17 @@ void SoftwareBackend::set_primitives(const std::vector<Vec3>& points,
                                      const std::vector<int8_t>& sizes) {
   points_ = points;
   sizes_ = sizes;
+  Aabb box;  // the GL backend's bounding sphere (gl rule depths)
+  for (size_t i = 0; i < sizes.size(); ++i)
+    for (int k = 0; k < sizes[i]; ++k) box.add(points[4 * i + k]);
+  centre_ = sizes.empty() ? Vec3{} : box.center();
+  radius_ = sizes.empty() ? 1.0 : std::max(box.radius(), 1e-300);
   coplanar_.clear();
 }
 
 void SoftwareBackend::begin_frame(const Camera& view) {
-  frame_ = std::make_unique<SampleFrame>(view, 1);
+  frame_ = std::make_unique<SampleFrame>(view, 1, rule_);
+  range_ = gl_depth_range(view, centre_, radius_);
   w_ = frame_->cols();
   h_ = frame_->rows();
   const size_t n = size_t(w_) * h_;
@@ -43,6 +49,8 @@ void SoftwareBackend::draw(const std::vector<int32_t>& ids, bool keep_far) {
     if (!raster.setup(*frame_, &points_[4 * size_t(id)], sizes_[id])) continue;
     const uint32_t c = uint32_t(id) + 1;
     raster.scan(all, [&](int sx, int sy, double t) {
+      if (rule_ == RasterRule::gl)  // the 24-bit value the GL depth test compares
+        t = double(gl_depth24(gl_window_depth(frame_->camera(), range_, t / frame_->dir_length(sx, sy))));
       const size_t p = size_t(sy) * w_ + sx;
       if (keep_far && stencil_[p] < 255) ++stencil_[p];  // GL_INCR on depth pass and fail
       const int tie = colour_[p] ? tie_order(id, t, int32_t(colour_[p]) - 1, depth_[p]) : 0;

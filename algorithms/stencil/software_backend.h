@@ -3,6 +3,9 @@
 // the oracle, so the layers it yields are exact for the oracle's samples. Passes follow the
 // OpenGL configurations of layer_backend.h fragment by fragment, in drawing order: GL_LESS
 // keeps the first of equal depths, GL_GEQUAL the last; GL_INCR saturates at 255.
+// Under the gl sampling rule (constructor) it draws what the GL backend draws: llvmpipe's
+// coverage and depths compared as 24-bit values (raster_rule.h), so the two can be compared
+// buffer for buffer.
 // With set_facing, a depth tie between exactly coplanar faces facing opposite ways (their
 // interpolated depths differ only by rounding) is decided by the facing rule instead.
 #pragma once
@@ -16,6 +19,7 @@ namespace vob::stencil {
 
 class SoftwareBackend final : public LayerBackend {
  public:
+  explicit SoftwareBackend(RasterRule rule = RasterRule::exact) : rule_(rule) {}
   std::string name() const override { return "software"; }
   void set_primitives(const std::vector<Vec3>& points, const std::vector<int8_t>& sizes) override;
   void begin_frame(const Camera& view) override;
@@ -36,6 +40,10 @@ class SoftwareBackend final : public LayerBackend {
   int tie_order(int32_t a, double ta, int32_t b, double tb);
   bool coplanar(int32_t a, int32_t b);
 
+  RasterRule rule_;
+  GlDepthRange range_;  // gl rule: the GL backend's near and far planes
+  Vec3 centre_{};
+  double radius_ = 1;
   std::vector<Vec3> points_;
   std::vector<int8_t> sizes_;
   std::unique_ptr<SampleFrame> frame_;

@@ -17,7 +17,8 @@ class StencilLayers final : public Orderer {
 
   Claims claims() const override {
     Claims c;
-    c.image_exact = x_.backend_name == "software";
+    c.image_exact = true;  // the GL backend under the gl sampling rule (what llvmpipe draws)
+    if (x_.backend_name == "gl") c.image_exact_under = RasterRule::gl;
     c.detects_cycles = true;
     return c;
   }

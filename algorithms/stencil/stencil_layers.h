@@ -28,11 +28,9 @@
 //
 // Claims: software: image_exact (exact at the pixel centres of the view for scenes without
 // visibility cycles: every layer is front-most wherever it covers a pixel centre, with the
-// oracle's rasterizer) and detects_cycles. gl: heuristic in general (same fill rule, but
-// llvmpipe snaps vertices to 1/256 pixel and keeps 24-bit depth, so pixel centres within
-// ~1/256 pixel of an edge can change triangle, and a front and a back triangle near their
-// shared silhouette edge can compare wrongly, which makes false cycles; gl_backend.h),
-// detects_cycles.
+// oracle's rasterizer) and detects_cycles. gl: image_exact under the gl sampling rule
+// (claims.image_exact_under "gl": llvmpipe's 1/256-pixel snapping, fill rule and 24-bit
+// depth, harness/raster/raster_rule.h; `vobench check --raster gl`), detects_cycles.
 #pragma once
 #include "harness/bench/registry.h"
 

@@ -125,7 +125,8 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
   // Every setting that changes an orderer record (docs/pipeline.md "Jobs and keys").
   const std::string settings = "|r" + std::to_string(suite.repeats) + "w" + std::to_string(suite.warmup) +
                                (suite.oracle ? "|oracle" : "|nooracle") + "|ss" +
-                               std::to_string(suite.supersample) + (suite.image_error ? "|imgerr" : "");
+                               std::to_string(suite.supersample) + (suite.image_error ? "|imgerr" : "") +
+                               (suite.raster == RasterRule::gl ? "|rgl" : "");
   const auto counts = thread_counts(suite);
   // Per spec, its thread counts one after the other: their times are side by side in time too.
   if (plan.orderers)

@@ -41,6 +41,7 @@ void fill_orderer_identity(Record& rec, const PreparedOrderer& p) {
   const Claims cl = p.orderer->claims();
   rec.claims = {{"object_exact", cl.object_exact}, {"image_exact", cl.image_exact},
                 {"composites", cl.composites}};
+  if (cl.image_exact) rec.claims["image_exact_under"] = raster_rule_name(cl.image_exact_under);
 }
 }  // namespace
 
@@ -116,6 +117,7 @@ Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene&
   rec.camera = job.camera;
   rec.repeats = suite.repeats;
   rec.warmup = suite.warmup;
+  rec.raster = raster_rule_name(suite.raster);
   rec.phases = m.phases_json();
   rec.total = m.total_json();
   nlohmann::json prep_phases = nlohmann::json::object();
@@ -134,6 +136,7 @@ Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene&
     // The one verdict (verdict.h), untimed; its mask only when images may be written.
     OracleOptions oo;
     oo.supersample = suite.supersample;
+    oo.raster = suite.raster;
     oo.violation_mask = !suite.image_views.empty() || suite.images_of_violations;
     out.verdict = judge(*p.orderer, p.spec, scene, job.camera, m.ordering, oo, "supersample");
     const Verdict& v = *out.verdict;

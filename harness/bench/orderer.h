@@ -13,6 +13,7 @@
 
 #include "harness/bench/phase_clock.h"
 #include "harness/oracle/oracle.h"
+#include "harness/raster/raster_rule.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/scene.h"
 #include "harness/view/camera.h"
@@ -22,6 +23,9 @@ namespace vob {
 struct Claims {
   bool object_exact = false;  // exact for every ray (any resolution)
   bool image_exact = false;   // exact at the pixel centres of the view it was given
+  // The sampling rule under which image_exact holds (harness/raster/raster_rule.h): gl for
+  // what an OpenGL backend draws (llvmpipe's coverage and 24-bit depth), else exact.
+  RasterRule image_exact_under = RasterRule::exact;
   bool detects_cycles = false;  // finds visibility cycles among the relations it builds
   // Composites its own image and fixes the order per pixel there (HAVS's k-buffer): it is
   // judged on what it composites (Orderer::composited_verdict), one verdict everywhere; the

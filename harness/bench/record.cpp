@@ -31,6 +31,7 @@ nlohmann::json Record::to_json() const {
     j["algorithm"] = algorithm;
     j["orderer"] = orderer;
     j["claims"] = claims;
+    j["raster"] = raster;
     j["w"] = w;
     j["h"] = h;
     j["pixels"] = int64_t(w) * h;

@@ -31,6 +31,7 @@ struct Record {
   std::string algorithm;          // the spec as the suite gave it
   std::string orderer;            // registry name
   nlohmann::json parameters, claims;
+  std::string raster = "exact";   // the oracle's sampling rule (harness/raster/raster_rule.h)
   int w = 0, h = 0, view_index = 0, views = 0;
   Camera camera;
   nlohmann::json phases, total, prepare, bytes, cycles, counters;

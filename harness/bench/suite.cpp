@@ -373,7 +373,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   const nlohmann::json j = apply_scale(input, "default", source);
   r.only_keys(j, "", {"name", "datasets", "algorithms", "probes", "views", "view_indices", "spread_views",
                       "view_directions", "orbit", "ortho", "zoom", "fit", "sizes", "repeats", "warmup", "threads", "oracle",
-                      "supersample", "image_error", "image_views", "images_of_violations", "exterior_area",
+                      "supersample", "raster", "image_error", "image_views", "images_of_violations", "exterior_area",
                       "vtk_render", "comment"});  // vtk_render: read by vobench-vtk render --suite (vtk/)
   SuiteSpec s;
   s.name = j.contains("name") ? r.string(j["name"], "name") : "suite";
@@ -403,6 +403,13 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   if (j.contains("threads")) s.threads = read_threads(r, j["threads"]);
   if (j.contains("oracle")) s.oracle = r.boolean(j["oracle"], "oracle");
   if (j.contains("supersample")) s.supersample = r.integer(j["supersample"], "supersample", 1, 16);
+  if (j.contains("raster")) {
+    const std::string rule = r.string(j["raster"], "raster");
+    if (rule != "exact" && rule != "gl") r.fail("raster", "'" + rule + "' is not a sampling rule (exact or gl)");
+    s.raster = parse_raster_rule(rule, "raster");
+    if (s.raster == RasterRule::gl && s.supersample != 1)
+      r.fail("raster", "\"gl\" samples pixel centres only: supersample must be 1");
+  }
   if (j.contains("image_error")) s.image_error = r.boolean(j["image_error"], "image_error");
   if (j.contains("image_views")) s.image_views = read_view_list(r, j["image_views"], "image_views", s.views);
   if (j.contains("images_of_violations"))

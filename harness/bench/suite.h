@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/geometry/vec3.h"
+#include "harness/raster/raster_rule.h"
 #include "harness/scene/scene.h"
 
 namespace vob {
@@ -71,6 +72,7 @@ struct SuiteSpec {
   std::vector<int> threads{0};
   bool oracle = true;
   int supersample = 1;
+  RasterRule raster = RasterRule::exact;  // "raster": the oracle's sampling rule (raster_rule.h)
   bool image_error = false;
   std::vector<int> image_views;   // views whose images are written
   bool images_of_violations = false;  // also every view the oracle finds violations in

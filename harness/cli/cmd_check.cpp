@@ -24,6 +24,7 @@
 #include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
 #include "harness/cli/thread_option.h"
+#include "harness/cli/raster_option.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/input_error.h"
 
@@ -85,6 +86,8 @@ Command add_check_command(CLI::App& app) {
   cmd->add_option("--junit", *junit, "write JUnit XML here: one test case per view, the counts in its message");
   auto threads = std::make_shared<ThreadOption>();
   threads->add_to(*cmd);
+  auto raster = std::make_shared<RasterOption>();
+  raster->add_to(*cmd);
   return [=]() {
     const auto limit = threads->limit();
     const int sources = !algorithm->empty() + !order_path->empty() + !command->empty();
@@ -123,10 +126,12 @@ Command add_check_command(CLI::App& app) {
     const bool want_error = !images->empty() || *max_rmse >= 0;
     OracleOptions oo;
     oo.supersample = *supersample;
+    oo.raster = raster->rule();
     oo.violation_mask = !images->empty();
     nlohmann::json out{{"algorithm", label}, {"dataset", spec.to_json()},
                        {"judged", p.orderer->claims().composites ? "composited" : "order"},
                        {"primitives", scene.num_primitives()}, {"supersample", *supersample},
+                       {"raster", raster_rule_name(raster->rule())},
                        {"threads", run_threads()},
                        {"views", nlohmann::json::array()}};
     if (file) out["order_file"] = file->path;

@@ -31,6 +31,7 @@ Command add_list_command(CLI::App& app) {
                                  {"summary", o.summary},
                                  {"claims", {{"object_exact", c.object_exact},
                                              {"image_exact", c.image_exact},
+                                             {"image_exact_under", raster_rule_name(c.image_exact_under)},
                                              {"detects_cycles", c.detects_cycles},
                                              {"composites", c.composites}}},
                                  {"params", params}});

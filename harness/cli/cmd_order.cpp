@@ -10,6 +10,7 @@
 #include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
 #include "harness/cli/thread_option.h"
+#include "harness/cli/raster_option.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -32,6 +33,8 @@ Command add_order_command(CLI::App& app) {
                   "violating_fragments (the oracle on this order at this view) and in_cycle");
   auto threads = std::make_shared<ThreadOption>();
   threads->add_to(*cmd);
+  auto raster = std::make_shared<RasterOption>();
+  raster->add_to(*cmd);
   return [=]() {
     const auto limit = threads->limit();
     const DatasetSpec spec = scene_args->spec();
@@ -65,13 +68,17 @@ Command add_order_command(CLI::App& app) {
     if (!m.ordering.layers.empty()) j["layers"] = m.ordering.layers;
     if (*check) {
       // The one verdict (verdict.h): a compositing orderer's is on what it composited.
-      const Verdict v = judge(*p.orderer, *algorithm, scene, cam, m.ordering, {}, "--supersample");
+      OracleOptions oo;
+      oo.raster = raster->rule();
+      const Verdict v = judge(*p.orderer, *algorithm, scene, cam, m.ordering, oo, "--supersample");
+      j["raster"] = raster_rule_name(raster->rule());
       j["oracle"] = v.json();
       if (v.cell_order) j["oracle_cell_order"] = v.cell_order_json();
     }
     if (!vtu->empty()) {
       OracleOptions per_cell;
       per_cell.per_primitive = true;
+      per_cell.raster = raster->rule();
       write_order_vtu(scene, m.ordering, check_ordering(scene, cam, m.ordering.order, per_cell), *vtu);
     }
     write_file_atomically(*out, j.dump() + "\n");

@@ -16,6 +16,7 @@
 #include "harness/cli/shard.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/cli/thread_option.h"
+#include "harness/cli/raster_option.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -112,6 +113,8 @@ Command add_reproduce_command(CLI::App& app) {
   threads->add_to(*cmd);
   auto spread = std::make_shared<SpreadOptions>();
   spread->add_to(*cmd);
+  auto raster = std::make_shared<RasterOption>();
+  raster->add_to(*cmd);
   return [=]() {
     spread->check(*dry_run);
     const auto limit = threads->limit();
@@ -137,6 +140,7 @@ Command add_reproduce_command(CLI::App& app) {
       for (const auto& e : list_reproductions(suites_dir)) {
         Reproduction rep = load_reproduction(e.path, scale, suites_dir);
         threads->apply(rep);
+        raster->apply(rep);
         if (!rep.paper.empty()) reps.push_back(std::move(rep));
       }
       if (*dry_run) return spread_dry_run(reps, out, *force, *spread);
@@ -154,6 +158,7 @@ Command add_reproduce_command(CLI::App& app) {
     if (path.empty()) unknown_reproduction(*name, suites_dir);
     Reproduction rep = load_reproduction(path, scale, suites_dir);  // every suite, before any work
     threads->apply(rep);
+    raster->apply(rep);
     if (*dry_run) return spread_dry_run({rep}, out, *force, *spread);
     if (spread->mpi)
       return exit_status(farm_reproductions({rep}, out, *force, *spread, [=](int status) {

@@ -12,6 +12,7 @@
 #include "harness/scene/input_error.h"
 #include "harness/cli/stop_signals.h"
 #include "harness/cli/thread_option.h"
+#include "harness/cli/raster_option.h"
 
 namespace vob {
 
@@ -41,10 +42,13 @@ Command add_run_command(CLI::App& app) {
   threads->add_to(*cmd);
   auto spread = std::make_shared<SpreadOptions>();
   spread->add_to(*cmd);
+  auto raster = std::make_shared<RasterOption>();
+  raster->add_to(*cmd);
   return [=]() {
     spread->check(*dry_run);
     SuiteSpec s = SuiteSpec::load(*suite);
     threads->apply(s);
+    raster->apply(s);
     const auto limit = threads->limit();
     std::error_code ec;
     if (std::filesystem::exists(*out, ec) && !std::filesystem::is_regular_file(*out, ec))

@@ -136,9 +136,12 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   CollectOptions co;
   co.supersample = opt.supersample;
   co.splat_radius_px = opt.splat_radius_px;
+  co.raster = opt.raster;
   const FragmentCollector collector(scene, view, order, co);
   const SampleFrame& frame = collector.frame();
   const bool cells = scene.kind() == SceneKind::Cells;
+  const bool depth24 = opt.raster == RasterRule::gl && !cells;
+  const GlDepthRange range = gl_depth_range(view, scene.bounds().center(), scene.bounds().radius());
   const double tie = kDepthTieRelative *
                      (scene.bounds().radius() + length(view.eye - scene.bounds().center()));
   const size_t max_examples = static_cast<size_t>(opt.max_examples);
@@ -180,9 +183,16 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
         });
       s.in.resize(n);
       s.query.resize(n);
-      for (int j = 0; j < n; ++j) {
-        s.in[j] = frags[j].t_in;
-        s.query[j] = cells ? frags[j].mid() : frags[j].t_in - tie;
+      if (depth24) {  // the 24-bit value a GL depth test compares; equal values tie
+        const int sy = fl.row0 + int(i / fl.cols), sx = int(i % fl.cols);
+        const double len = frame.dir_length(sx, sy);  // view depth = t / |D|
+        for (int j = 0; j < n; ++j)
+          s.in[j] = s.query[j] = double(gl_depth24(gl_window_depth(view, range, frags[j].t_in / len)));
+      } else {
+        for (int j = 0; j < n; ++j) {
+          s.in[j] = frags[j].t_in;
+          s.query[j] = cells ? frags[j].mid() : frags[j].t_in - tie;
+        }
       }
       // z-buffer pass: nearest key drawn so far and who holds it.
       double nearest = std::numeric_limits<double>::infinity();

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "harness/raster/cell_clip.h"
+#include "harness/raster/raster_rule.h"
 #include "harness/scene/scene.h"
 #include "harness/view/camera.h"
 
@@ -23,6 +24,9 @@ struct OracleOptions {
   int max_examples = 5;         // violating fragments (and overlapping pairs) described
   bool violation_mask = false;  // fill OracleResult::violation_mask (costs w*h*S*S bytes)
   bool per_primitive = false;   // fill OracleResult::violating_fragments_per_primitive
+  // The sampling rule (harness/raster/raster_rule.h). gl: llvmpipe's coverage at the pixel
+  // centres, and triangle depths compared as a 24-bit depth test compares them.
+  RasterRule raster = RasterRule::exact;
 };
 
 struct OracleResult {
@@ -76,7 +80,9 @@ struct OracleResult {
 // - triangles and voxels: a fragment violates when its depth exceeds the nearest depth drawn
 //   so far by more than kDepthTieRelative * (scene radius + eye distance to its centre).
 //   Equal depths (coplanar triangles, voxels at the same distance) are ties, not violations:
-//   no order between them is more correct than another.
+//   no order between them is more correct than another. Under the gl rule a triangle
+//   fragment violates when its 24-bit window depth (raster_rule.h) exceeds the nearest
+//   one's: what a GL depth test cannot tell apart is a tie.
 // The blocking primitive of a violation is the one holding the nearest depth (or t_in).
 // Overlap (cells): at every sample the segments, sorted by t_in, are swept for pairs that
 // overlap by more than kOverlapRelative * scene radius. Face neighbours compute the shared

@@ -37,7 +37,10 @@ class FragmentSink {
 
 FragmentCollector::FragmentCollector(const Scene& scene, const Camera& view,
                                      const std::vector<int32_t>& order, const CollectOptions& opt)
-    : scene_(scene), order_(order), frame_(view, opt.supersample) {
+    : scene_(scene), order_(order), frame_(view, opt.supersample, opt.raster) {
+  if (opt.raster == RasterRule::gl && scene.kind() != SceneKind::Triangles)
+    throw InputError("--raster gl", std::string(scene_kind_name(scene.kind())),
+                     "the gl sampling rule covers triangle scenes only so far");
   if (opt.splat_radius_px < 0 || !std::isfinite(opt.splat_radius_px))
     throw InputError("oracle", "splat radius", "must be a finite number >= 0");
   splat_radius_px_ = opt.splat_radius_px;

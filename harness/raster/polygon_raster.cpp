@@ -84,7 +84,23 @@ bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n,
     throw InputError("raster", "polygon", "has " + std::to_string(n) + " vertices, not 3 or 4");
   frame_ = &frame;
   count_ = 0;
+  gl_ = frame.rule() == RasterRule::gl;
+  if (gl_) return setup_gl(frame, v, n, projected);
   if (!may_cover_a_sample(frame, v, n, projected)) return false;
+  if (!set_plane(frame, v, n)) return false;
+  if (n == 3) {
+    add_triangle(v[0], v[1], v[2]);
+  } else {
+    int m = 0;
+    for (int i = 1; i < 4; ++i)
+      if (lex_less(v[i], v[m])) m = i;
+    add_triangle(v[m], v[(m + 1) % 4], v[(m + 2) % 4]);
+    add_triangle(v[m], v[(m + 2) % 4], v[(m + 3) % 4]);
+  }
+  return count_ > 0;
+}
+
+bool PolygonRaster::set_plane(const SampleFrame& frame, const Vec3* v, int n) {
   Vec3 on_plane = v[0];
   if (n == 3) {
     plane_.n = cross(v[1] - v[0], v[2] - v[0]);
@@ -101,16 +117,7 @@ bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n,
   } else {
     num_ = -dot(plane_.n, frame.eye() - on_plane);  // no cancellation of large terms
   }
-  if (n == 3) {
-    add_triangle(v[0], v[1], v[2]);
-  } else {
-    int m = 0;
-    for (int i = 1; i < 4; ++i)
-      if (lex_less(v[i], v[m])) m = i;
-    add_triangle(v[m], v[(m + 1) % 4], v[(m + 2) % 4]);
-    add_triangle(v[m], v[(m + 2) % 4], v[(m + 3) % 4]);
-  }
-  return count_ > 0;
+  return true;
 }
 
 bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
@@ -182,9 +189,9 @@ bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2)
 
 SampleRect PolygonRaster::bounds() const {
   if (count_ == 0) return {};
-  SampleRect r = tri_[0].box;
+  SampleRect r = gl_ ? gl_tri_[0].box : tri_[0].box;
   for (int i = 1; i < count_; ++i) {
-    const SampleRect& b = tri_[i].box;
+    const SampleRect& b = gl_ ? gl_tri_[i].box : tri_[i].box;
     r = {std::min(r.x0, b.x0), std::min(r.y0, b.y0), std::max(r.x1, b.x1), std::max(r.y1, b.y1)};
   }
   return r;

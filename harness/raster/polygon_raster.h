@@ -18,6 +18,14 @@
 // smallest vertex, the same split for every polygon listing those four points, and both
 // halves take their depth from the quad's Newell plane.
 //
+// Under the gl sampling rule (SampleFrame::rule, raster_rule.h) coverage is llvmpipe's
+// instead: snapped window coordinates, integer edge functions and its fill rule, the same
+// quad split; a polygon with a vertex not in front of the eye covers nothing (GL would clip
+// it at the near plane, which the GL backends place beyond the scene). Depths are GL's too:
+// window depth is a plane through the snapped vertices (at the vertices' own depths), so
+// 1 / view depth (orthographic: view depth) is interpolated linearly over the fixed-point
+// triangle, and t is that view depth times |D|.
+//
 // Depth: the ray parameter t at which the sample's ray meets the polygon's plane
 // (t = s * |D|, see sample_frame.h). Orthographic samples with t < 0 (behind the eye plane)
 // are not covered.
@@ -70,12 +78,31 @@ class PolygonRaster {
     Edge e[3];
     SampleRect box;
   };
+  // gl rule: pixel (sx, sy) is covered when c[i] - dcdx[i] * 256 sx + dcdy[i] * 256 sy > 0
+  // for every edge (the fill rule's ownership is folded into c as llvmpipe does).
+  struct GlTriangle {
+    int64_t c[3], dcdx[3], dcdy[3];
+    SampleRect box;
+    int64_t x0 = 0, y0 = 0;       // vertex 0 (fixed point)
+    double q0 = 0, qx = 0, qy = 0;  // q = q0 + qx (X - x0) + qy (Y - y0), q = 1/zc or zc (ortho)
+    bool covers(int sx, int sy) const {
+      const int64_t X = int64_t(sx) * kGlSubpixels, Y = int64_t(sy) * kGlSubpixels;
+      for (int i = 0; i < 3; ++i)
+        if (c[i] - dcdx[i] * X + dcdy[i] * Y <= 0) return false;
+      return true;
+    }
+  };
 
  private:
   // False when no sample centre can be covered; sets box_ when every vertex projects.
   bool may_cover_a_sample(const SampleFrame& frame, const Vec3* v, int n,
                           const ProjectedVertex* projected);
   bool add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2);
+  // The polygon's plane (for depths); false when an orthographic view sees it edge-on.
+  bool set_plane(const SampleFrame& frame, const Vec3* v, int n);
+  // gl rule (polygon_raster_gl.cpp): fixed-point triangles of the snapped vertices.
+  bool setup_gl(const SampleFrame& frame, const Vec3* v, int n, const ProjectedVertex* projected);
+  bool add_gl_triangle(const int64_t* x, const int64_t* y, const double* q);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
   bool inside(int i, const Vec3& x) const {
@@ -97,6 +124,8 @@ class PolygonRaster {
   Plane plane_;
   double num_ = 0, inv_nf_ = 0;
   Triangle tri_[2];
+  GlTriangle gl_tri_[2];
+  bool gl_ = false;
   int count_ = 0;
   SampleRect box_;  // the polygon's projected bounds, valid when have_box_
   bool have_box_ = false;
@@ -104,6 +133,22 @@ class PolygonRaster {
 
 template <class Emit>
 void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
+  const bool ortho = frame_->ortho();
+  if (gl_) {
+    for (int i = 0; i < count_; ++i) {
+      const GlTriangle& g = gl_tri_[i];
+      const SampleRect r = g.box.intersect(clip);
+      for (int sy = r.y0; sy <= r.y1; ++sy)
+        for (int sx = r.x0; sx <= r.x1; ++sx) {
+          if (!g.covers(sx, sy)) continue;
+          const double q = g.q0 + g.qx * double(int64_t(sx) * kGlSubpixels - g.x0) +
+                           g.qy * double(int64_t(sy) * kGlSubpixels - g.y0);
+          const double t = ortho ? q : frame_->dir_length(sx, sy) / q;
+          if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
+        }
+    }
+    return;
+  }
   for (int i = 0; i < count_; ++i) {
     const SampleRect r = tri_[i].box.intersect(clip);
     for (int sy = r.y0; sy <= r.y1; ++sy) {
@@ -116,7 +161,7 @@ void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
         const double t = depth(x);
         // Perspective hits are at t > 0 by construction; the test drops rounding noise of
         // rays that graze an edge-on polygon. Orthographic: only in front of the eye plane.
-        if ((frame_->ortho() ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
+        if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
       }
     }
   }

@@ -11,10 +11,14 @@ namespace {
 double max_abs(Vec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 }  // namespace
 
-SampleFrame::SampleFrame(const Camera& camera, int supersample) : cam_(camera), s_(supersample) {
+SampleFrame::SampleFrame(const Camera& camera, int supersample, RasterRule rule)
+    : cam_(camera), s_(supersample), rule_(rule) {
   cam_.validate();
   if (supersample < 1 || supersample > 16)
     throw InputError("oracle", "supersample", std::to_string(supersample) + " is not in [1, 16]");
+  if (rule == RasterRule::gl && supersample != 1)
+    throw InputError("oracle", "supersample " + std::to_string(supersample),
+                     "the gl sampling rule samples pixel centres only (use supersample 1)");
   cols_ = cam_.width * s_;
   rows_ = cam_.height * s_;
   eye_ = cam_.eye;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "harness/geometry/vec3.h"
+#include "harness/raster/raster_rule.h"
 #include "harness/view/camera.h"
 
 namespace vob {
@@ -38,11 +39,13 @@ inline int ceil_to_int(double v) { return static_cast<int>(std::ceil(std::clamp(
 
 class SampleFrame {
  public:
-  // Validates the camera; supersample must be in [1, 16]. InputError otherwise.
-  SampleFrame(const Camera& camera, int supersample);
+  // Validates the camera; supersample must be in [1, 16], and 1 under the gl rule (GL
+  // samples pixel centres). InputError otherwise.
+  SampleFrame(const Camera& camera, int supersample, RasterRule rule = RasterRule::exact);
 
   const Camera& camera() const { return cam_; }
   int supersample() const { return s_; }
+  RasterRule rule() const { return rule_; }
   int cols() const { return cols_; }
   int rows() const { return rows_; }
   int64_t num_samples() const { return int64_t(cols_) * rows_; }
@@ -76,6 +79,7 @@ class SampleFrame {
  private:
   Camera cam_;
   int s_, cols_, rows_;
+  RasterRule rule_ = RasterRule::exact;
   Vec3 eye_, f_, r_, u_;
   double sx_scale_, sy_scale_;  // perspective: tan terms; ortho: half extents
   std::vector<Vec3> row_, col_;

@@ -1,15 +1,14 @@
 // OpenGL (OSMesa) and software backends of the layer extraction.
 //
-// llvmpipe rasterizes in fixed point: window coordinates are snapped to 1/256 pixel
-// (FIXED_ORDER 8) before its edge functions are evaluated, and depth is interpolated in
-// floats into a 24-bit buffer. The harness rasterizer evaluates edge functions of the
-// unsnapped geometry in doubles. So the two can give a pixel centre to different triangles
-// when it lies within the snapping distance (at most ~1/256 pixel) of an edge; that happens
-// a few times per 128x128 view of a sphere (the second test measures it and checks that
-// every differing pixel is such a pixel). On scenes whose vertices project exactly onto the
-// 1/256 grid (orthographic views of dyadic coordinates) the snapping changes nothing, and
-// there the item buffers agree pixel for pixel, including pixel centres exactly on shared
-// edges (the fill rules agree), and the layers are identical (first test).
+// The GL backend hands llvmpipe window positions snapped by the gl sampling rule
+// (harness/raster/raster_rule.h), so the software backend under that rule rasterizes
+// exactly what llvmpipe does: the item buffers, the stencil counts and the layers agree
+// pixel for pixel, on dyadic orthographic scenes with many pixel centres exactly on edges
+// (where only the fill rule decides) and on perspective views of closed surfaces (where
+// depths are interpolated by llvmpipe in floats and compared in 24 bits, by the software
+// backend in doubles rounded to 24 bits; the later passes of a few views differ where
+// llvmpipe's float interpolation reorders close depths). Under the exact rule the software backend
+// differs from GL at pixel centres within 1/256 pixel of an edge (the snapping).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -182,7 +181,7 @@ TEST(StencilBackends, DyadicScenesGiveIdenticalBuffersAndLayers) {
   auto gl = gl_or_skip();
   ASSERT_TRUE(gl);
   std::printf("GL: %s\n", gl->renderer().c_str());
-  SoftwareBackend sw;
+  SoftwareBackend sw(RasterRule::gl);
   int64_t layered = 0;
   for (int size : {64, 128}) {
     for (uint64_t seed : {1u, 2u, 3u}) {
@@ -224,13 +223,14 @@ TEST(StencilBackends, DyadicScenesGiveIdenticalBuffersAndLayers) {
   EXPECT_GT(layered, 0);
 }
 
-// Perspective views of closed surfaces: the item buffers differ only at pixel centres
-// within the snapping distance of an edge; we count how often the layers differ.
-TEST(StencilBackends, PerspectiveDifferencesAreSnappingAtEdges) {
+// Perspective views of closed surfaces: under the gl rule the buffers agree pixel for
+// pixel; under the exact rule they differ only at pixel centres within the snapping
+// distance of an edge.
+TEST(StencilBackends, PerspectiveBuffersFollowTheGlRule) {
   auto gl = gl_or_skip();
   ASSERT_TRUE(gl);
-  SoftwareBackend sw;
-  int64_t differing = 0, views = 0, same_layers = 0;
+  SoftwareBackend rule(RasterRule::gl), exact;
+  int64_t pixels = 0, differing_rule = 0, differing_exact = 0, views = 0, same_layers = 0;
   double worst = 0;
   for (const auto& [name, subdiv] : {std::pair{"spheres", "1"}, std::pair{"sphere", "3"}}) {
     const Scene s = dataset(name, {{"subdiv", subdiv}});
@@ -238,16 +238,21 @@ TEST(StencilBackends, PerspectiveDifferencesAreSnappingAtEdges) {
     std::vector<int8_t> sizes;
     polygons(s, pts, sizes);
     gl->set_primitives(pts, sizes);
-    sw.set_primitives(pts, sizes);
+    rule.set_primitives(pts, sizes);
+    exact.set_primitives(pts, sizes);
     const int32_t n = int32_t(sizes.size());
     for (int size : {64, 128}) {
       for (int f = 0; f < 6; ++f) {
         const Camera view = orbit_view(s.bounds(), 6, f, ViewOptions{size, size});
         const auto [gc, gg] = all_passes(*gl, n, view);
-        const auto [sc, sg] = all_passes(sw, n, view);
+        const auto [rc, rg] = all_passes(rule, n, view);
+        const auto [sc, sg] = all_passes(exact, n, view);
         for (size_t p = 0; p < gc.colour.size(); ++p) {
+          ++pixels;
+          differing_rule += gc.colour[p] != rc.colour[p] || gg.colour[p] != rg.colour[p] ||
+                            gg.stencil[p] != rg.stencil[p];
           if (gc.colour[p] == sc.colour[p]) continue;
-          ++differing;
+          ++differing_exact;
           const double cx = double(p % size_t(size)) + 0.5, cy = double(p / size_t(size)) + 0.5;
           double d = 1e300;
           for (uint32_t c : {gc.colour[p], sc.colour[p]})
@@ -256,12 +261,17 @@ TEST(StencilBackends, PerspectiveDifferencesAreSnappingAtEdges) {
           EXPECT_LE(d, 1.0 / 256) << name << " " << size << " frame " << f << " pixel " << p;
         }
         ++views;
-        same_layers += layers(*gl, n, view, false).layer == layers(sw, n, view, false).layer;
+        same_layers += layers(*gl, n, view, false).layer == layers(rule, n, view, false).layer;
       }
     }
   }
-  std::printf("perspective: %lld differing candidate pixels in %lld views (farthest %.5f px from an edge); "
-              "identical layers in %lld of %lld views\n",
-              (long long)differing, (long long)views, worst, (long long)same_layers, (long long)views);
+  std::printf("perspective: %lld pixels; gl rule: %lld differing; exact rule: %lld differing candidate "
+              "pixels (farthest %.5f px from an edge); identical layers under the gl rule in %lld of %lld views\n",
+              (long long)pixels, (long long)differing_rule, (long long)differing_exact, worst,
+              (long long)same_layers, (long long)views);
+  EXPECT_EQ(differing_rule, 0);
+  // Not every view: llvmpipe interpolates depth in floats from the origin, which on steep
+  // triangles can reorder two depths tens of 24-bit steps apart that the rule (doubles)
+  // orders the other way; the rule does not describe that (design-notes.md, issue 18).
   EXPECT_GT(same_layers, 0);
 }

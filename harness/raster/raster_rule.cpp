@@ -1,0 +1,34 @@
+#include "harness/raster/raster_rule.h"
+
+#include <algorithm>
+
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+RasterRule parse_raster_rule(const std::string& name, const std::string& who) {
+  if (name == "exact") return RasterRule::exact;
+  if (name == "gl") return RasterRule::gl;
+  throw InputError(who, "'" + name + "'", "unknown sampling rule (exact or gl)");
+}
+
+GlDepthRange gl_depth_range(const Camera& view, const Vec3& centre, double radius) {
+  GlDepthRange r;
+  const double d = dot(centre - view.eye, view.forward());  // view depth of the centre
+  if (view.ortho) {  // near >= 0: only what is in front of the eye plane, as in the harness
+    r.near = std::max(d - 1.01 * radius, 0.0);
+    r.far = std::max(d + 1.01 * radius, r.near + 1e-6 * radius);
+  } else {
+    r.near = std::max(d - 1.01 * radius, 1e-3 * radius);
+    r.far = std::max(d + 1.01 * radius, 2 * r.near);
+  }
+  return r;
+}
+
+double gl_window_depth(const Camera& view, const GlDepthRange& r, double zc) {
+  const double n = r.near, f = r.far;
+  if (view.ortho) return (zc - n) / (f - n);
+  return f * (zc - n) / ((f - n) * zc);  // (NDC z + 1) / 2 of the perspective projection
+}
+
+}  // namespace vob
