@@ -14,18 +14,25 @@ K::Vector_3 normal(const Vec3* p) { return CGAL::cross_product(ev(p[1]) - ev(p[0
 
 }  // namespace
 
-// orient3d of a mesh point; a point of the plane's own triple (shared by neighbours, the
-// common exact zero) is recognised without arithmetic.
-int FragmentOps::side(int32_t h, Vec3 p) const {
+// orient3d of vertex k of triangle tri, once per point and plane (a point is in about six
+// triangles); a point of the plane's own triple (shared by neighbours, the common exact
+// zero) is recognised without arithmetic.
+int FragmentOps::side(int32_t h, int32_t tri, int k) const {
+  const int32_t v = vid_[3 * static_cast<size_t>(tri) + k];
+  const int64_t tag = planes_.tag(h);
+  if (memo_tag_[v] == tag) return memo_side_[v];
+  const Vec3 p = tris_[tri].p[k];
   const Vec3* q = planes_.points(h);
-  if (p == q[0] || p == q[1] || p == q[2]) return 0;
-  return orient3d(q[0], q[1], q[2], p);
+  const int r = p == q[0] || p == q[1] || p == q[2] ? 0 : orient3d(q[0], q[1], q[2], p);
+  memo_tag_[v] = tag;
+  memo_side_[v] = static_cast<int8_t>(r);
+  return r;
 }
 
 int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
   const BspTriangle& t = tris_[f.tri];
   int ts[3];
-  for (int k = 0; k < 3; ++k) ts[k] = side(h, t.p[k]);
+  for (int k = 0; k < 3; ++k) ts[k] = side(h, f.tri, k);
   if (f.whole) {
     s.assign(ts, ts + 3);
     return 3;

@@ -40,8 +40,11 @@ enum Side { kCoplanar, kFront, kBack, kSplit };
 
 class FragmentOps {
  public:
-  // Triangle i's plane must be plane i of `planes`.
-  FragmentOps(const std::vector<BspTriangle>& tris, const PlaneTable& planes) : tris_(tris), planes_(planes) {}
+  // Triangle i's plane must be plane i of `planes`; vid[3 i + k] is the id (in [0,
+  // points)) of triangle i's vertex k, so that a vertex's side of a plane is found once.
+  FragmentOps(const std::vector<BspTriangle>& tris, const std::vector<int32_t>& vid, int32_t points,
+              const PlaneTable& planes)
+      : tris_(tris), vid_(vid), planes_(planes), memo_tag_(points, -1), memo_side_(points, 0) {}
 
   // Sides of the fragment's vertices against plane h, in s (resized); returns the vertex
   // count. A fragment of a triangle on one closed side of h is on that side.
@@ -54,12 +57,16 @@ class FragmentOps {
   std::vector<CGAL::Epeck::Point_3> exact_polygon(const Frag& f) const;
 
  private:
-  int side(int32_t h, Vec3 p) const;
+  int side(int32_t h, int32_t tri, int k) const;
   static std::vector<FVert> whole_poly();
   FVert crossing(int32_t tri, int32_t label, int32_t h) const;  // inside RoundUp
 
   const std::vector<BspTriangle>& tris_;
+  const std::vector<int32_t>& vid_;
   const PlaneTable& planes_;
+  // Per point: the tag of the plane its side was last found for, and that side.
+  mutable std::vector<int64_t> memo_tag_;
+  mutable std::vector<int8_t> memo_side_;
 };
 
 }  // namespace vob::xmpvo::bsp

@@ -41,6 +41,7 @@ int32_t PlaneTable::add(Vec3 a, Vec3 b, Vec3 c) {
   pts_.push_back(a);
   pts_.push_back(b);
   pts_.push_back(c);
+  tag_.push_back(added_++);
   RoundUp up;
   const IA u[3] = {IA(b.x) - a.x, IA(b.y) - a.y, IA(b.z) - a.z};
   const IA v[3] = {IA(c.x) - a.x, IA(c.y) - a.y, IA(c.z) - a.z};

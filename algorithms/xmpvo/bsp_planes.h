@@ -43,6 +43,9 @@ class PlaneTable {
   // Adds the plane through a, b, c (not collinear); returns its id (0, 1, ...).
   int32_t add(Vec3 a, Vec3 b, Vec3 c);
   int32_t size() const { return static_cast<int32_t>(pts_.size() / 3); }
+  void truncate(int32_t n) { pts_.resize(3 * static_cast<size_t>(n)), approx_.resize(n), tag_.resize(n); }
+  // A number naming the plane for good: a plane added after a truncate gets a new one.
+  int64_t tag(int32_t id) const { return tag_[id]; }
   const Vec3* points(int32_t id) const { return &pts_[3 * static_cast<size_t>(id)]; }
 
   // Boxes (inside RoundUp). edge_point: segment pq met by plane j, p and q strictly on
@@ -63,6 +66,8 @@ class PlaneTable {
   };
   std::vector<Vec3> pts_;
   std::vector<IPlane> approx_;  // computed under RoundUp in add()
+  std::vector<int64_t> tag_;
+  int64_t added_ = 0;
 };
 
 }  // namespace vob::xmpvo::bsp

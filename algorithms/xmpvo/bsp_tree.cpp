@@ -28,26 +28,62 @@ struct Work {
   std::vector<Frag> frags;
 };
 
+// An axis-aligned plane through a median of the triangles' centroids (of a sample of the
+// fragments) across their widest extent: the plane x = c is orient3d-positive for x > c.
+int32_t median_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, int64_t stride,
+                     PlaneTable& planes) {
+  std::vector<Vec3> cs;
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi = lo * -1.0;
+  for (size_t i = 0; i < frags.size(); i += stride) {
+    const BspTriangle& t = tris[frags[i].tri];
+    const Vec3 c = (t.p[0] + t.p[1] + t.p[2]) * (1.0 / 3);
+    cs.push_back(c);
+    lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)};
+    hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+  }
+  const Vec3 e = hi - lo;
+  const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+  std::nth_element(cs.begin(), cs.begin() + cs.size() / 2, cs.end(),
+                   [axis](Vec3 p, Vec3 q) { return p[axis] < q[axis]; });
+  const double c = cs[cs.size() / 2][axis];
+  if (axis == 0) return planes.add({c, 0, 0}, {c, 1, 0}, {c, 0, 1});
+  if (axis == 1) return planes.add({0, c, 0}, {0, c, 1}, {1, c, 0});
+  return planes.add({0, 0, c}, {1, 0, c}, {0, 1, c});
+}
+
 // The splitting plane of a node (an id of `planes`): the best of a few evenly spaced
-// triangle planes, scored on a sample of the fragments: fewest splits first, then balance.
-int32_t choose_plane(const std::vector<Frag>& frags, const FragmentOps& ops, const BspOptions& opt,
-                     std::vector<int>& s) {
+// triangle planes and, with free_planes, one median plane, scored on a sample of the
+// fragments by split_weight * splits + |front - back|.
+int32_t choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, const FragmentOps& ops,
+                     const BspOptions& opt, PlaneTable& planes, std::vector<int>& s) {
   const int64_t m = static_cast<int64_t>(frags.size());
   int32_t best = frags[0].tri;
   if (m <= 1 || opt.candidates <= 1) return best;
   int64_t best_score = -1;
   const int cands = static_cast<int>(std::min<int64_t>(opt.candidates, m));
   const int64_t stride = std::max<int64_t>(1, m / std::max(opt.sample, 1));
-  for (int c = 0; c < cands; ++c) {
-    const int32_t cand = frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri;
+  bool both = false;  // the last scored plane has sample fragments strictly on each side
+  auto score = [&](int32_t h) {
     int64_t front = 0, back = 0, splits = 0;
     for (int64_t i = 0; i < m; i += stride) {
-      const int n = ops.classify(cand, frags[i], s);
+      const int n = ops.classify(h, frags[i], s);
       const bsp::Side sd = FragmentOps::side_of(s.data(), n);
       front += sd == bsp::kFront, back += sd == bsp::kBack, splits += sd == bsp::kSplit;
     }
-    const int64_t score = opt.split_weight * splits + std::llabs(front - back);
-    if (best_score < 0 || score < best_score) best_score = score, best = cand;
+    both = front > 0 && back > 0;
+    return opt.split_weight * splits + std::llabs(front - back);
+  };
+  for (int c = 0; c < cands; ++c) {
+    const int32_t cand = frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri;
+    const int64_t sc = score(cand);
+    if (best_score < 0 || sc < best_score) best_score = sc, best = cand;
+  }
+  if (opt.free_planes) {
+    const int32_t size = planes.size();
+    const int32_t h = median_plane(frags, tris, stride, planes);
+    // A free plane holds no fragment: it must leave one out of each child.
+    if (score(h) < best_score && both) return h;
+    planes.truncate(size);
   }
   return best;
 }
@@ -76,17 +112,21 @@ size_t BspTree::bytes() const {
 BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   BspTree t;
+  std::vector<int32_t> vid;  // per triangle, its vertices' ids in exterior.points
   for (size_t i = 0; i < exterior.face.size(); ++i) {
     const Vec3* v = &exterior.corners[4 * i];
-    for (int k = 1; k + 1 < exterior.size[i]; ++k)
+    const int32_t* id = &exterior.vertex[4 * i];
+    for (int k = 1; k + 1 < exterior.size[i]; ++k) {
       t.tris_.push_back({{v[0], v[k], v[k + 1]}, exterior.face[i], exterior.cell[i]});
+      vid.insert(vid.end(), {id[0], id[k], id[k + 1]});
+    }
   }
   if (opt.keep_fragments) t.exact_ = std::make_unique<Exact>();
   const int32_t b = static_cast<int32_t>(t.tris_.size());
   t.stats_.triangles = b;
   PlaneTable planes;  // plane i is triangle i's; free planes follow
   for (const BspTriangle& tr : t.tris_) planes.add(tr.p[0], tr.p[1], tr.p[2]);
-  const FragmentOps ops(t.tris_, planes);
+  const FragmentOps ops(t.tris_, vid, static_cast<int32_t>(exterior.points.size()), planes);
   std::vector<int32_t> node_plane;
   if (b > 0) {
     // Explicit stack: degenerate inputs can make the tree as deep as b.
@@ -104,7 +144,7 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
       Work w = std::move(stack.back());
       stack.pop_back();
       t.stats_.depth = std::max<int64_t>(t.stats_.depth, w.depth);
-      const int32_t h = choose_plane(w.frags, ops, opt, s);
+      const int32_t h = choose_plane(w.frags, t.tris_, ops, opt, planes, s);
       std::vector<Frag> front, back;
       coplanar.clear();
       for (Frag& f : w.frags) {

@@ -58,6 +58,7 @@ struct BspOptions {
   int candidates = 5;      // splitters tried per node (best by fewest splits, then balance)
   int sample = 64;         // fragments each candidate is scored on
   int split_weight = 8;    // score = split_weight * splits + |front - back|
+  bool free_planes = true; // also score an axis-aligned median plane at each node
   bool keep_fragments = false;  // keep exact fragments for check_invariants() (tests)
 };
 
