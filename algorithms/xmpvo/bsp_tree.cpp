@@ -1,139 +1,100 @@
 #include "algorithms/xmpvo/bsp_tree.h"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <map>
 
+#include "algorithms/xmpvo/bsp_fragment.h"
 #include "harness/geometry/predicates.h"
 
 namespace vob::xmpvo {
 namespace {
 
-using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using bsp::Frag;
+using bsp::FragmentOps;
+using bsp::PlaneTable;
+using K = CGAL::Epeck;
 using P3 = K::Point_3;
 using FT = K::FT;
 
 P3 ep(Vec3 v) { return P3(v.x, v.y, v.z); }
 
-// A fragment vertex: its exact point, and where it lies on its triangle, so that the common
-// degenerate cases (vertices and edges shared with the splitter's neighbours, exactly on
-// the plane) are decided on the input doubles instead of by exact rational arithmetic.
-struct FVert {
-  P3 p;
-  int8_t on = 0;  // bit k: lies on the triangle's edge (k, k+1 mod 3); both bits of one
-                  // vertex: it is the triangle's vertex `at`
-  int8_t at = -1;
-};
-
-// A convex fragment of triangle `tri`. While `whole`, it is the triangle itself and its
-// sides are decided on the doubles (orient3d); after a split its vertices are FVerts.
-struct Frag {
-  int32_t tri = -1;
-  bool whole = true;
-  std::vector<FVert> poly;  // only when !whole
-};
-
-struct Plane {
-  Vec3 a, b, c;     // doubles of the splitter triangle
-  P3 ea, eb, ec;    // the same, exact
-};
-
 int sgn(CGAL::Orientation o) { return o == CGAL::POSITIVE ? 1 : (o == CGAL::NEGATIVE ? -1 : 0); }
-
-// orient3d of a mesh point; a vertex of the splitter itself (shared by neighbours, the
-// common exact zero) is recognised without arithmetic.
-int side(const Plane& h, Vec3 p) {
-  if (p == h.a || p == h.b || p == h.c) return 0;
-  return orient3d(h.a, h.b, h.c, p);
-}
-
-// Side of fragment vertex v, given the signs ts of its triangle's vertices.
-int vertex_side(const Plane& h, const FVert& v, const int* ts) {
-  if (v.at >= 0) return ts[v.at];
-  if (v.on) {
-    // Strictly inside edge (k, k+1): the sign follows from the endpoints' unless they are
-    // strictly on opposite sides.
-    const int k = v.on == 1 ? 0 : (v.on == 2 ? 1 : 2);
-    const int sa = ts[k], sb = ts[(k + 1) % 3];
-    if (sa == sb) return sa;
-    if (sa == 0) return sb;
-    if (sb == 0) return sa;
-  }
-  return sgn(CGAL::orientation(h.ea, h.eb, h.ec, v.p));
-}
-
-// Signs of the fragment's vertices against the plane; returns the number of vertices.
-// The triangle's own vertices (doubles) decide first: a fragment of a triangle on one
-// closed side of the plane is on that side (all its signs are reported as the triangle's
-// side), and it is coplanar only if the triangle is.
-int classify(const Plane& h, const Frag& f, const std::vector<BspTriangle>& tris, int* s) {
-  const BspTriangle& t = tris[f.tri];
-  int ts[3];
-  for (int k = 0; k < 3; ++k) ts[k] = side(h, t.p[k]);
-  if (f.whole) {
-    for (int k = 0; k < 3; ++k) s[k] = ts[k];
-    return 3;
-  }
-  const int n = static_cast<int>(f.poly.size());
-  const bool pos = ts[0] > 0 || ts[1] > 0 || ts[2] > 0, neg = ts[0] < 0 || ts[1] < 0 || ts[2] < 0;
-  if (!(pos && neg)) {
-    for (int k = 0; k < n; ++k) s[k] = pos ? 1 : (neg ? -1 : 0);
-    return n;
-  }
-  for (int k = 0; k < n; ++k) s[k] = vertex_side(h, f.poly[k], ts);
-  return n;
-}
-
-enum Side { kCoplanar, kFront, kBack, kSplit };
-Side side_of(const int* s, int n) {
-  bool pos = false, neg = false;
-  for (int k = 0; k < n; ++k) pos |= s[k] > 0, neg |= s[k] < 0;
-  return pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
-}
-
-std::vector<FVert> whole_poly(const BspTriangle& t) {
-  std::vector<FVert> poly(3);
-  for (int k = 0; k < 3; ++k) poly[k] = {ep(t.p[k]), static_cast<int8_t>((1 << k) | (1 << ((k + 2) % 3))), static_cast<int8_t>(k)};
-  return poly;
-}
-
-// Splits a fragment that has vertices strictly on both sides, at exact points.
-void split(const Plane& h, const Frag& f, const std::vector<BspTriangle>& tris, const int* s,
-           int n, Frag& front, Frag& back) {
-  const std::vector<FVert> poly = f.whole ? whole_poly(tris[f.tri]) : f.poly;
-  const K::Vector_3 u = h.eb - h.ea, v = h.ec - h.ea;
-  auto dist = [&](const P3& p) { return CGAL::determinant(u, v, p - h.ea); };
-  front = Frag{f.tri, false, {}};
-  back = Frag{f.tri, false, {}};
-  for (int i = 0; i < n; ++i) {
-    const int j = (i + 1) % n;
-    if (s[i] >= 0) front.poly.push_back(poly[i]);
-    if (s[i] <= 0) back.poly.push_back(poly[i]);
-    if (s[i] * s[j] < 0) {
-      const FT di = dist(poly[i].p), dj = dist(poly[j].p);
-      FVert q{poly[i].p + (poly[j].p - poly[i].p) * (di / (di - dj)), 0, -1};
-      // Strictly between two points of one triangle edge: on that edge.
-      const int common = poly[i].on & poly[j].on;
-      q.on = static_cast<int8_t>(common & -common);
-      front.poly.push_back(q);
-      back.poly.push_back(q);
-    }
-  }
-}
-
-Plane plane_of(const BspTriangle& t) {
-  return {t.p[0], t.p[1], t.p[2], ep(t.p[0]), ep(t.p[1]), ep(t.p[2])};
-}
 
 struct Work {
   int32_t node;
   int32_t depth;
   std::vector<Frag> frags;
 };
+
+// An axis-aligned plane through a median of the triangles' centroids (of a sample of the
+// fragments) across their widest extent: the plane x = c is orient3d-positive for x > c.
+int32_t median_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, int64_t stride,
+                     PlaneTable& planes) {
+  std::vector<Vec3> cs;
+  Vec3 lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi = lo * -1.0;
+  for (size_t i = 0; i < frags.size(); i += stride) {
+    const BspTriangle& t = tris[frags[i].tri];
+    const Vec3 c = (t.p[0] + t.p[1] + t.p[2]) * (1.0 / 3);
+    cs.push_back(c);
+    lo = {std::min(lo.x, c.x), std::min(lo.y, c.y), std::min(lo.z, c.z)};
+    hi = {std::max(hi.x, c.x), std::max(hi.y, c.y), std::max(hi.z, c.z)};
+  }
+  const Vec3 e = hi - lo;
+  const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+  std::nth_element(cs.begin(), cs.begin() + cs.size() / 2, cs.end(),
+                   [axis](Vec3 p, Vec3 q) { return p[axis] < q[axis]; });
+  const double c = cs[cs.size() / 2][axis];
+  if (axis == 0) return planes.add({c, 0, 0}, {c, 1, 0}, {c, 0, 1});
+  if (axis == 1) return planes.add({0, c, 0}, {0, c, 1}, {1, c, 0});
+  return planes.add({0, 0, c}, {1, 0, c}, {0, 1, c});
+}
+
+// The splitting plane of a node (an id of `planes`): the best of a few evenly spaced
+// triangle planes and, with free_planes, one median plane, scored on a sample of the
+// fragments by split_weight * splits + |front - back|.
+int32_t choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, const FragmentOps& ops,
+                     const BspOptions& opt, PlaneTable& planes, std::vector<int>& s) {
+  const int64_t m = static_cast<int64_t>(frags.size());
+  int32_t best = frags[0].tri;
+  if (m <= 1 || opt.candidates <= 1) return best;
+  int64_t best_score = -1;
+  const int cands = static_cast<int>(std::min<int64_t>(opt.candidates, m));
+  const int64_t stride = std::max<int64_t>(1, m / std::max(opt.sample, 1));
+  bool both = false;  // the last scored plane has sample fragments strictly on each side
+  const int64_t samples = (m + stride - 1) / stride;
+  // A candidate's score, or a value >= best_score as soon as even the rest of the sample
+  // could not bring it below (the choice is the same, for less work).
+  auto score = [&](int32_t h) -> int64_t {
+    int64_t front = 0, back = 0, splits = 0, seen = 0;
+    for (int64_t i = 0; i < m; i += stride) {
+      const int n = ops.classify(h, frags[i], s);
+      const bsp::Side sd = FragmentOps::side_of(s.data(), n);
+      front += sd == bsp::kFront, back += sd == bsp::kBack, splits += sd == bsp::kSplit;
+      const int64_t left = samples - ++seen;
+      if (best_score >= 0 && opt.split_weight * splits + std::llabs(front - back) - left >= best_score) {
+        both = false;
+        return best_score;
+      }
+    }
+    both = front > 0 && back > 0;
+    return opt.split_weight * splits + std::llabs(front - back);
+  };
+  for (int c = 0; c < cands; ++c) {
+    const int32_t cand = frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri;
+    const int64_t sc = score(cand);
+    if (best_score < 0 || sc < best_score) best_score = sc, best = cand;
+  }
+  if (opt.free_planes) {
+    const int32_t size = planes.size();
+    const int32_t h = median_plane(frags, tris, stride, planes);
+    // A free plane holds no fragment: it must leave one out of each child.
+    if (score(h) < best_score && both) return h;
+    planes.truncate(size);
+  }
+  return best;
+}
 
 }  // namespace
 
@@ -159,14 +120,22 @@ size_t BspTree::bytes() const {
 BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   BspTree t;
+  std::vector<int32_t> vid;  // per triangle, its vertices' ids in exterior.points
   for (size_t i = 0; i < exterior.face.size(); ++i) {
     const Vec3* v = &exterior.corners[4 * i];
-    for (int k = 1; k + 1 < exterior.size[i]; ++k)
+    const int32_t* id = &exterior.vertex[4 * i];
+    for (int k = 1; k + 1 < exterior.size[i]; ++k) {
       t.tris_.push_back({{v[0], v[k], v[k + 1]}, exterior.face[i], exterior.cell[i]});
+      vid.insert(vid.end(), {id[0], id[k], id[k + 1]});
+    }
   }
   if (opt.keep_fragments) t.exact_ = std::make_unique<Exact>();
   const int32_t b = static_cast<int32_t>(t.tris_.size());
   t.stats_.triangles = b;
+  PlaneTable planes;  // plane i is triangle i's; free planes follow
+  for (const BspTriangle& tr : t.tris_) planes.add(tr.p[0], tr.p[1], tr.p[2]);
+  const FragmentOps ops(t.tris_, vid, static_cast<int32_t>(exterior.points.size()), planes);
+  std::vector<int32_t> node_plane;
   if (b > 0) {
     // Explicit stack: degenerate inputs can make the tree as deep as b.
     std::vector<Work> stack;
@@ -175,53 +144,29 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
     for (int32_t i = 0; i < b; ++i) root.frags.push_back(Frag{i, true, {}});
     t.nodes_.push_back({});
     t.parent_.push_back(-1);
+    node_plane.push_back(-1);
     stack.push_back(std::move(root));
     std::vector<int32_t> coplanar;
-    int s[64];
+    std::vector<int> s;
     while (!stack.empty()) {
       Work w = std::move(stack.back());
       stack.pop_back();
       t.stats_.depth = std::max<int64_t>(t.stats_.depth, w.depth);
-      const int64_t m = static_cast<int64_t>(w.frags.size());
-      // Splitter: the best of a few evenly spaced candidates, scored on a sample of the
-      // fragments: fewest splits first, then balance.
-      int32_t best = w.frags[0].tri;
-      if (m > 1 && opt.candidates > 1) {
-        int64_t best_score = -1;
-        const int cands = static_cast<int>(std::min<int64_t>(opt.candidates, m));
-        const int64_t stride = std::max<int64_t>(1, m / std::max(opt.sample, 1));
-        for (int c = 0; c < cands; ++c) {
-          const int32_t cand = w.frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri;
-          const Plane h = plane_of(t.tris_[cand]);
-          int64_t front = 0, back = 0, splits = 0;
-          for (int64_t i = 0; i < m; i += stride) {
-            const int n = classify(h, w.frags[i], t.tris_, s);
-            const Side sd = side_of(s, n);
-            front += sd == kFront, back += sd == kBack, splits += sd == kSplit;
-          }
-          const int64_t score = opt.split_weight * splits + std::llabs(front - back);
-          if (best_score < 0 || score < best_score) best_score = score, best = cand;
-        }
-      }
-      const Plane h = plane_of(t.tris_[best]);
+      const int32_t h = choose_plane(w.frags, t.tris_, ops, opt, planes, s);
       std::vector<Frag> front, back;
       coplanar.clear();
       for (Frag& f : w.frags) {
-        const int n = classify(h, f, t.tris_, s);
-        switch (side_of(s, n)) {
-          case kCoplanar:
+        const int n = ops.classify(h, f, s);
+        switch (FragmentOps::side_of(s.data(), n)) {
+          case bsp::kCoplanar:
             coplanar.push_back(f.tri);
-            if (t.exact_) {
-              std::vector<P3> poly;
-              for (const FVert& v : f.whole ? whole_poly(t.tris_[f.tri]) : f.poly) poly.push_back(v.p);
-              t.exact_->frags.push_back({w.node, f.tri, std::move(poly)});
-            }
+            if (t.exact_) t.exact_->frags.push_back({w.node, f.tri, ops.exact_polygon(f)});
             break;
-          case kFront: front.push_back(std::move(f)); break;
-          case kBack: back.push_back(std::move(f)); break;
-          case kSplit: {
+          case bsp::kFront: front.push_back(std::move(f)); break;
+          case bsp::kBack: back.push_back(std::move(f)); break;
+          case bsp::kSplit: {
             Frag a, c;
-            split(h, f, t.tris_, s, n, a, c);
+            ops.split(h, f, s.data(), n, a, c);
             front.push_back(std::move(a));
             back.push_back(std::move(c));
             ++t.stats_.splits;
@@ -232,7 +177,8 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
       w.frags.clear();
       w.frags.shrink_to_fit();
       BspNode& node = t.nodes_[w.node];
-      node.splitter = best;
+      node_plane[w.node] = h;
+      node.splitter = h < b ? h : -1;
       node.first = static_cast<int32_t>(t.items_.size());
       node.count = static_cast<int32_t>(coplanar.size());
       t.items_.insert(t.items_.end(), coplanar.begin(), coplanar.end());
@@ -244,6 +190,7 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
         (side == 0 ? t.nodes_[w.node].front : t.nodes_[w.node].back) = child;
         t.nodes_.push_back({});
         t.parent_.push_back(w.node);
+        node_plane.push_back(-1);
         stack.push_back(Work{child, w.depth + 1, std::move(list)});
       }
     }
@@ -292,10 +239,11 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
       t.boxes_[bi] = box;
     }
   }
-  for (BspNode& node : t.nodes_) {
-    const BspTriangle& sp = t.tris_[node.splitter];
-    const Vec3 u = sp.p[1] - sp.p[0], v = sp.p[2] - sp.p[0];
-    node.a = sp.p[0];
+  for (size_t i = 0; i < t.nodes_.size(); ++i) {
+    BspNode& node = t.nodes_[i];
+    const Vec3* sp = planes.points(node_plane[i]);
+    const Vec3 u = sp[1] - sp[0], v = sp[2] - sp[0];
+    node.a = sp[0], node.b = sp[1], node.c = sp[2];
     node.n = cross(u, v);
     node.nabs = {std::fabs(u.y * v.z) + std::fabs(u.z * v.y), std::fabs(u.x * v.z) + std::fabs(u.z * v.x),
                  std::fabs(u.x * v.y) + std::fabs(u.y * v.x)};
@@ -349,21 +297,22 @@ std::string BspTree::check_invariants() const {
   for (const Exact::Stored& f : exact_->frags) {
     const std::string where = "fragment of triangle " + std::to_string(f.tri) + " at node " + std::to_string(f.node);
     if (f.poly.size() < 3) return where + ": fewer than 3 vertices";
-    const Plane own = plane_of(tris_[f.tri]);
-    const Plane at = plane_of(tris_[nodes_[f.node].splitter]);
+    const BspTriangle& own = tris_[f.tri];
+    const BspNode& at = nodes_[f.node];
     for (const P3& p : f.poly) {
-      if (CGAL::orientation(own.ea, own.eb, own.ec, p) != CGAL::COPLANAR) return where + ": off its triangle's plane";
-      if (CGAL::orientation(at.ea, at.eb, at.ec, p) != CGAL::COPLANAR) return where + ": off its node's plane";
+      if (CGAL::orientation(ep(own.p[0]), ep(own.p[1]), ep(own.p[2]), p) != CGAL::COPLANAR)
+        return where + ": off its triangle's plane";
+      if (CGAL::orientation(ep(at.a), ep(at.b), ep(at.c), p) != CGAL::COPLANAR) return where + ": off its node's plane";
     }
     bool listed = false;
     for (int32_t i = nodes_[f.node].first; i < nodes_[f.node].first + nodes_[f.node].count; ++i)
       listed |= items_[i] == f.tri;
     if (!listed) return where + ": not among the node's items";
     for (int32_t child = f.node, up = parent_[f.node]; up >= 0; child = up, up = parent_[up]) {
-      const Plane h = plane_of(tris_[nodes_[up].splitter]);
-      const int want = nodes_[up].front == child ? 1 : -1;
+      const BspNode& h = nodes_[up];
+      const int want = h.front == child ? 1 : -1;
       for (const P3& p : f.poly)
-        if (sgn(CGAL::orientation(h.ea, h.eb, h.ec, p)) == -want)
+        if (sgn(CGAL::orientation(ep(h.a), ep(h.b), ep(h.c), p)) == -want)
           return where + ": on the wrong side of ancestor " + std::to_string(up);
     }
     area[f.tri] += area2(f.poly, axis_of(f.tri));

@@ -1,13 +1,16 @@
-// View-independent BSP tree of a mesh's exterior faces (Comba et al.'s BSP-XMPVO), built
-// by autopartition: every splitting plane is the plane of an exterior triangle.
+// View-independent BSP tree of a mesh's exterior faces (Comba et al.'s BSP-XMPVO).
 //
 // Exterior faces are taken as triangles (a quad as (0,1,2), (0,2,3), as cell validation
-// tests it), so that every splitter's plane is exact from three double vertices. During the
-// build, fragments are exact polygons (CGAL Epeck, exact split points); every decision of
-// side is an exact orientation. The finished tree keeps doubles only: per node the splitter
-// triangle and the ORIGINAL ids of the triangles whose fragments are coplanar with it.
-// Traversals therefore test node planes and whole original triangles, a superset of the
-// fragments, which is what a conservative candidate search needs.
+// tests it). Splitting planes pass through three double points: the plane of an exterior
+// triangle (autopartition), or, where no triangle plane divides the fragments well (the
+// convex stretches of a curved surface, where every face plane has all the others behind
+// it), a free axis-aligned plane through a median. During the build, fragments are exact
+// polygons whose vertices are named by the planes they lie on and never constructed
+// (bsp_fragment.h, bsp_planes.h): every decision of side is exact, settled by an interval
+// filter nearly always and by exact arithmetic otherwise. The finished tree keeps doubles
+// only: per node its plane and the ORIGINAL ids of the triangles whose fragments are
+// coplanar with it. Traversals therefore test node planes and whole original triangles, a
+// superset of the fragments, which is what a conservative candidate search needs.
 //
 // Items of a node are coplanar and pairwise interior-disjoint (a valid mesh's boundary), but
 // there can be very many (a slab face of a gap mesh): each node with more than kLeafItems
@@ -40,20 +43,22 @@ struct ItemBox {
 };
 
 struct BspNode {
-  int32_t splitter = -1;            // triangle whose plane splits
+  int32_t splitter = -1;            // triangle whose plane splits, -1 for a free plane
   int32_t front = -1, back = -1;    // children: positive (normal) side, negative side; -1 none
   int32_t first = 0, count = 0;     // coplanar items: BspTree::items[first, first + count)
   int32_t boxes = -1;               // root of the node's ItemBox hierarchy, -1 when none
   Vec3 lo, hi;                      // box of the whole triangles stored in the subtree
-  // The splitter's plane for fast filtered signs: det(b-a, c-a, w) = n.w with n = (b-a)x(c-a)
-  // in doubles, and nabs the matching sums of |products|, which bound its rounding.
-  Vec3 a, n, nabs;
+  // The plane: orient3d(a, b, c, x) > 0 on the front side. For fast filtered signs:
+  // det(b-a, c-a, w) = n.w with n = (b-a)x(c-a) in doubles, and nabs the matching sums of
+  // |products|, which bound its rounding.
+  Vec3 a, b, c, n, nabs;
 };
 
 struct BspOptions {
   int candidates = 5;      // splitters tried per node (best by fewest splits, then balance)
   int sample = 64;         // fragments each candidate is scored on
   int split_weight = 8;    // score = split_weight * splits + |front - back|
+  bool free_planes = true; // also score an axis-aligned median plane at each node
   bool keep_fragments = false;  // keep exact fragments for check_invariants() (tests)
 };
 

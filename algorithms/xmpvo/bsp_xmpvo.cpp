@@ -48,17 +48,17 @@ int dot_sign(Vec3 p, Vec3 q, Vec3 f) {
 
 int sign_of_cmp(double a, double b) { return a > b ? 1 : (a < b ? -1 : 0); }
 
-// Sign of det(b - a, c - a, p - q) for a node's splitter (a, b, c), from the node's
+// Sign of det(b - a, c - a, p - q) for a node's plane (a, b, c), from the node's
 // precomputed normal when it clears the rounding bound (as det_sign), else exactly.
-int node_det_sign(const BspNode& nd, const BspTriangle& s, Vec3 p, Vec3 q, bool q_is_a = false) {
+int node_det_sign(const BspNode& nd, Vec3 p, Vec3 q, bool q_is_a = false) {
   const Vec3 w = p - q;
   const double d = nd.n.x * w.x + nd.n.y * w.y + nd.n.z * w.z;
   const double perm = nd.nabs.x * std::fabs(w.x) + nd.nabs.y * std::fabs(w.y) + nd.nabs.z * std::fabs(w.z);
   if (perm > 1e-250 && std::fabs(d) > 1e-14 * perm) return d > 0 ? 1 : -1;
   // q == a: an orientation of points (often exactly zero: vertices shared with the
   // splitter), which CGAL's filtered kernel settles fastest.
-  if (q_is_a) return p == s.p[0] || p == s.p[1] || p == s.p[2] ? 0 : orient3d(s.p[0], s.p[1], s.p[2], p);
-  return det_sign(s.p[0], s.p[1], s.p[2], p, q);
+  if (q_is_a) return p == nd.a || p == nd.b || p == nd.c ? 0 : orient3d(nd.a, nd.b, nd.c, p);
+  return det_sign(nd.a, nd.b, nd.c, p, q);
 }
 
 class BspXmpvoOrderer final : public Orderer {
@@ -158,11 +158,11 @@ class BspXmpvoOrderer final : public Orderer {
 
   // Side of the eye (perspective) or of the direction (orthographic) w.r.t. node n's plane,
   // cached per view: 0 unknown, else sign + 2.
-  int node_side(int32_t n, const BspTriangle& s) {
+  int node_side(int32_t n) {
     int8_t& c = node_side_[n];
     if (c == 0) {
       const BspNode& nd = tree_.nodes()[n];
-      const int v = g_.ortho ? node_det_sign(nd, s, g_.dir, Vec3{0, 0, 0}) : node_det_sign(nd, s, g_.eye, nd.a, true);
+      const int v = g_.ortho ? node_det_sign(nd, g_.dir, Vec3{0, 0, 0}) : node_det_sign(nd, g_.eye, nd.a, true);
       c = static_cast<int8_t>(v + 2);
     }
     return c - 2;
@@ -176,14 +176,13 @@ class BspXmpvoOrderer final : public Orderer {
   // `starts_here`: X lies in the plane, so the beam starts in it.
   int beam_vs_node(const Beam& bm, int32_t n, int& near, bool& complete, bool& starts_here) {
     const BspNode& nd = tree_.nodes()[n];
-    const BspTriangle& s = tree_.triangles()[nd.splitter];
-    const int e = node_side(n, s);
+    const int e = node_side(n);
     near = g_.ortho ? -e : e;
     bool pos = true, neg = true;
     complete = near != 0;
     starts_here = true;
     for (int i = 0; i < 3; ++i) {
-      const int si = node_det_sign(nd, s, bm.t->p[i], nd.a, true);
+      const int si = node_det_sign(nd, bm.t->p[i], nd.a, true);
       starts_here &= si == 0;
       int ri;  // sign of the plane's value along the recession direction
       if (g_.ortho) {
@@ -193,7 +192,7 @@ class BspXmpvoOrderer final : public Orderer {
       } else if (si == 0) {
         ri = 0;
       } else {
-        ri = node_det_sign(nd, s, bm.t->p[i], g_.eye);
+        ri = node_det_sign(nd, bm.t->p[i], g_.eye);
       }
       pos &= si >= 0 && ri >= 0;
       neg &= si <= 0 && ri <= 0;

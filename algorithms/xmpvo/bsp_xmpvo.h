@@ -8,8 +8,9 @@
 //               (false: collect every candidate in the beam; same order, more relations).
 //
 // Prepare: "unique faces", "face planes", "exterior faces" (the Scene's), "BSP build"
-// (autopartition of the exterior triangles with exact splits; depth, nodes, fragments and
-// bytes in the counters).
+// (exterior triangles split exactly by face planes and, where those do not divide, by
+// axis-aligned median planes, bsp_tree.h; depth, nodes, fragments and bytes in the
+// counters). Prepare is timed apart from the per-view phases below (records: `prepare`).
 // Phases per view:
 //   "create partial order"  MPVO phase I: face arrows and outbound counts;
 //   "tree work"  for every back-facing exterior triangle X (the ray leaves the mesh there),

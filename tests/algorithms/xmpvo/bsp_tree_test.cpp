@@ -38,7 +38,8 @@ BspTree check_tree(const Scene& s, BspOptions opt = {}) {
 
   // Independent of the kept fragments: every triangle is an item somewhere; a triangle
   // stored once was never split, so its own vertices lie on the closed side of every
-  // ancestor plane that leads to its node; the splitter is among its node's items.
+  // ancestor plane that leads to its node; a splitter triangle is among its node's items,
+  // a free plane (splitter -1) has one child on each side.
   const auto& nodes = t.nodes();
   std::vector<int> count(t.triangles().size(), 0);
   std::vector<int32_t> at(t.triangles().size(), -1);
@@ -52,7 +53,13 @@ BspTree check_tree(const Scene& s, BspOptions opt = {}) {
       at[t.items()[i]] = static_cast<int32_t>(n);
       has_splitter |= t.items()[i] == nodes[n].splitter;
     }
-    EXPECT_TRUE(has_splitter) << "node " << n;
+    if (nodes[n].splitter >= 0) {
+      EXPECT_TRUE(has_splitter) << "node " << n;
+      const BspTriangle& sp = t.triangles()[nodes[n].splitter];
+      EXPECT_TRUE(sp.p[0] == nodes[n].a && sp.p[1] == nodes[n].b && sp.p[2] == nodes[n].c) << "node " << n;
+    } else {
+      EXPECT_TRUE(nodes[n].front >= 0 && nodes[n].back >= 0) << "free node " << n;
+    }
   }
   int64_t unsplit = 0, wrong = 0;
   for (size_t i = 0; i < count.size(); ++i) {
@@ -62,12 +69,12 @@ BspTree check_tree(const Scene& s, BspOptions opt = {}) {
     ++unsplit;
     const BspTriangle& tr = t.triangles()[i];
     for (int32_t child = at[i], up = parent[at[i]]; up >= 0; child = up, up = parent[up]) {
-      const BspTriangle& sp = t.triangles()[nodes[up].splitter];
-      const int want = nodes[up].front == child ? 1 : -1;
-      for (const Vec3& p : tr.p) wrong += orient3d(sp.p[0], sp.p[1], sp.p[2], p) == -want;
+      const BspNode& sp = nodes[up];
+      const int want = sp.front == child ? 1 : -1;
+      for (const Vec3& p : tr.p) wrong += orient3d(sp.a, sp.b, sp.c, p) == -want;
     }
-    const BspTriangle& own = t.triangles()[nodes[at[i]].splitter];
-    for (const Vec3& p : tr.p) wrong += orient3d(own.p[0], own.p[1], own.p[2], p) != 0;
+    const BspNode& own = nodes[at[i]];
+    for (const Vec3& p : tr.p) wrong += orient3d(own.a, own.b, own.c, p) != 0;
   }
   EXPECT_EQ(wrong, 0) << s.name();
   EXPECT_GT(unsplit, 0) << s.name();
@@ -128,6 +135,26 @@ TEST(BspTree, SplitterChoices) {
     opt.sample = c == 1 ? 1 : 1000;
     check_tree(s, opt);
   }
+}
+
+// A curved tube is convex along long stretches, where every face plane has the others on
+// one side: median planes (free nodes) are chosen there and make the tree shallower; without
+// them the tree is an autopartition. Both satisfy the invariants.
+TEST(BspTree, FreeMedianPlanesOnACurvedSurface) {
+  const Scene s = dataset("helix", {{"cells", "1500"}});
+  BspOptions opt;
+  opt.split_weight = 2;
+  const BspTree with = check_tree(s, opt);
+  opt.free_planes = false;
+  const BspTree without = check_tree(s, opt);
+  auto free_nodes = [](const BspTree& t) {
+    int64_t n = 0;
+    for (const BspNode& node : t.nodes()) n += node.splitter < 0;
+    return n;
+  };
+  EXPECT_GT(free_nodes(with), 0);
+  EXPECT_EQ(free_nodes(without), 0);
+  EXPECT_LT(with.stats().depth, without.stats().depth);
 }
 
 TEST(BspTree, EmptyBoundaryGivesEmptyTree) {

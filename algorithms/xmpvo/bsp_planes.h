@@ -1,0 +1,73 @@
+// Exact sides of BSP fragment vertices without constructing them (plane-based geometry, as
+// in Campen and Kobbelt's exact BSP booleans). A fragment of a triangle is a convex polygon
+// whose edges lie on the triangle's own edges or on splitting planes, so each vertex is
+// named by the two lines it joins: a triangle vertex, a triangle edge met by a plane ("edge
+// point"), or the triangle's plane met by two planes ("meet point"). Its side of another
+// plane is then the sign of a fixed polynomial of the input doubles. An interval box of the
+// vertex, computed once from those planes (never from earlier vertices, so its width does
+// not grow with the tree's depth), decides that sign almost always; exact arithmetic on
+// the doubles' mantissas (CGAL::Mpzf) decides the rest. A plane is given by three double
+// points; its side of x is orient3d(p0, p1, p2, x).
+//
+// Internal to bsp_tree.cpp (CGAL types in the interface).
+#pragma once
+#include <CGAL/Interval_nt.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "harness/geometry/vec3.h"
+
+namespace vob::xmpvo::bsp {
+
+using IA = CGAL::Interval_nt<false>;  // needs rounding towards +inf: see RoundUp
+struct IBox {
+  IA x, y, z;
+};
+
+// Rounding towards +inf for the interval code in its scope, restored after. Interval
+// functions below must run inside one; orient3d (round to nearest) must not.
+class RoundUp {
+ public:
+  RoundUp();
+  ~RoundUp();
+  RoundUp(const RoundUp&) = delete;
+  RoundUp& operator=(const RoundUp&) = delete;
+
+ private:
+  CGAL::FPU_CW_t backup_;
+};
+
+class PlaneTable {
+ public:
+  // Adds the plane through a, b, c (not collinear); returns its id (0, 1, ...).
+  int32_t add(Vec3 a, Vec3 b, Vec3 c);
+  int32_t size() const { return static_cast<int32_t>(pts_.size() / 3); }
+  void truncate(int32_t n) { pts_.resize(3 * static_cast<size_t>(n)), approx_.resize(n), tag_.resize(n); }
+  // A number naming the plane for good: a plane added after a truncate gets a new one.
+  int64_t tag(int32_t id) const { return tag_[id]; }
+  const Vec3* points(int32_t id) const { return &pts_[3 * static_cast<size_t>(id)]; }
+
+  // Boxes (inside RoundUp). edge_point: segment pq met by plane j, p and q strictly on
+  // opposite sides of j. meet_point: planes t, i, j meeting in one point.
+  IBox edge_point(Vec3 p, Vec3 q, int32_t j) const;
+  IBox meet_point(int32_t t, int32_t i, int32_t j) const;
+  // Side of plane h at every point of the box: +1 or -1, or 2 when the box is not on one
+  // open side (inside RoundUp).
+  int filtered_side(int32_t h, const IBox& b) const;
+
+  // Exact sides of the same points (round to nearest or not, exact either way).
+  int exact_side_edge(Vec3 p, Vec3 q, int32_t j, int32_t h) const;
+  int exact_side_meet(int32_t t, int32_t i, int32_t j, int32_t h) const;
+
+ private:
+  struct IPlane {
+    IA n[3], w;  // n . x - w is the plane's side function (n = (p1-p0) x (p2-p0), w = n . p0)
+  };
+  std::vector<Vec3> pts_;
+  std::vector<IPlane> approx_;  // computed under RoundUp in add()
+  std::vector<int64_t> tag_;
+  int64_t added_ = 0;
+};
+
+}  // namespace vob::xmpvo::bsp
