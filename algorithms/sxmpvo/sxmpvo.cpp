@@ -184,7 +184,8 @@ class SxmpvoOrderer final : public Orderer {
     const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
     pn_.reset(core_.num_cells());
     const int64_t pixels = abuf_.pixels();
-    for (int64_t p = 0; p < pixels; ++p) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
+    for (int64_t p = 0; p < pixels; ++p)
+      if (abuf_.head(p) >= 0) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
     pn_.to_relations(extra_);
   }
 

@@ -25,7 +25,7 @@ namespace vob::sxmpvo {
 
 // Largest projected box, in samples, that the tiny path scans sample by sample; a larger
 // face goes to PolygonRaster, whose spans skip the box's empty corners.
-constexpr int kTinyMaxSamples = 32;
+constexpr int kTinyMaxSamples = 64;
 
 enum class BoxKind { None, Tiny, Large };
 
