@@ -7,6 +7,8 @@ namespace vob::sxmpvo {
 void ABuffer::reset(int64_t pixels) {
   pixels_ = pixels;
   raw_.clear();
+  batches_.clear();
+  entries_ = 0;
   list_.clear();
   offsets_.assign(static_cast<size_t>(pixels) + 1, 0);
   head_insertions_ = walk_steps_ = 0;
@@ -15,13 +17,14 @@ void ABuffer::reset(int64_t pixels) {
 void ABuffer::finish() {
   // Counting sort by pixel, stable; then each pixel's entries by rank (short lists).
   std::fill(offsets_.begin(), offsets_.end(), 0);
-  for (const Raw& r : raw_) ++offsets_[r.pixel + 1];
+  each_raw([&](const Raw& r) { ++offsets_[r.pixel + 1]; });
   for (int64_t p = 0; p < pixels_; ++p) offsets_[p + 1] += offsets_[p];
-  by_pixel_.resize(raw_.size());
-  list_.resize(raw_.size());
+  by_pixel_.resize(static_cast<size_t>(entries_));
+  list_.resize(static_cast<size_t>(entries_));
   std::vector<int32_t>& cursor = cursor_;
   cursor.assign(offsets_.begin(), offsets_.end() - 1);
-  for (const Raw& r : raw_) by_pixel_[cursor[r.pixel]++] = r;
+  Slot* slots = by_pixel_.data();
+  each_raw([&](const Raw& r) { slots[cursor[r.pixel]++] = {r.t, r.item, r.rank}; });
   // Per pixel, in rank order, insertion one entry at a time into increasing t, behind every
   // entry not farther than itself (the mirror of "in front of every entry farther than
   // itself" in a decreasing list); then reversed. A new entry passes the entries farther
@@ -29,10 +32,10 @@ void ABuffer::finish() {
   for (int64_t p = 0; p < pixels_; ++p) {
     const int32_t b = offsets_[p], e = offsets_[p + 1];
     if (b == e) continue;
-    Raw* in = by_pixel_.data() + b;
+    Slot* in = slots + b;
     const int32_t k = e - b;
     for (int32_t i = 1; i < k; ++i) {  // by rank
-      const Raw x = in[i];
+      const Slot x = in[i];
       int32_t j = i;
       for (; j > 0 && in[j - 1].rank > x.rank; --j) in[j] = in[j - 1];
       in[j] = x;

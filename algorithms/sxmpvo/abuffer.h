@@ -41,12 +41,16 @@ class ABuffer {
   };
   // Records an entry of pixel `pixel` that arrives after every entry recorded so far.
   void insert(int64_t pixel, double t, int32_t item) {
-    raw_.push_back({t, item, static_cast<int32_t>(pixel), static_cast<int32_t>(raw_.size())});
+    raw_.push_back({t, item, static_cast<int32_t>(pixel), static_cast<int32_t>(entries_++)});
   }
   // Records a batch of entries with their own ranks (faces scanned in parallel chunks, in
   // any order: the ranks, not the batches, decide the arrival order). Ranks of one pixel's
-  // entries must differ, except for entries of one face (which never share a pixel).
-  void append(const std::vector<Raw>& batch) { raw_.insert(raw_.end(), batch.begin(), batch.end()); }
+  // entries must differ, except for entries of one face (which never share a pixel). The
+  // batch is read in place by finish(): it must stay alive and unchanged until then.
+  void append(const std::vector<Raw>& batch) {
+    batches_.push_back(&batch);
+    entries_ += static_cast<int64_t>(batch.size());
+  }
   // Builds the lists: per pixel, the entries by increasing rank inserted one by one so that
   // the list stays in decreasing t; an entry at least as far as the head becomes the head
   // (a head insertion), otherwise it goes behind every entry farther than itself.
@@ -57,19 +61,31 @@ class ABuffer {
     return offsets_[pixel] < offsets_[pixel + 1] ? offsets_[pixel] : -1;
   }
   const PixEntry& entry(int32_t id) const { return list_[id]; }
-  int64_t entries() const { return static_cast<int64_t>(raw_.size()); }
+  int64_t entries() const { return entries_; }
   int64_t head_insertions() const { return head_insertions_; }
   int64_t walk_steps() const { return walk_steps_; }  // entries passed by non-head inserts
   size_t bytes() const {
     return offsets_.capacity() * sizeof(int32_t) +
-           (raw_.capacity() + by_pixel_.capacity()) * sizeof(Raw) +
+           raw_.capacity() * sizeof(Raw) + by_pixel_.capacity() * sizeof(Slot) +
            list_.capacity() * sizeof(PixEntry) + cursor_.capacity() * sizeof(int32_t);
   }
 
  private:
   int64_t pixels_ = 0;
-  std::vector<Raw> raw_;           // as recorded
-  std::vector<Raw> by_pixel_;      // scratch of finish(): per pixel, by rank
+  struct Slot {  // an entry once its pixel is known
+    double t;
+    int32_t item, rank;
+  };
+  template <class F>
+  void each_raw(F&& f) const {  // every recorded entry: insert()ed, then appended batches
+    for (const Raw& r : raw_) f(r);
+    for (const std::vector<Raw>* b : batches_)
+      for (const Raw& r : *b) f(r);
+  }
+  int64_t entries_ = 0;
+  std::vector<Raw> raw_;           // insert()ed
+  std::vector<const std::vector<Raw>*> batches_;  // append()ed, read in place
+  std::vector<Slot> by_pixel_;     // scratch of finish(): per pixel, by rank
   std::vector<int32_t> offsets_;   // pixels + 1
   std::vector<PixEntry> list_;     // per pixel, decreasing t
   std::vector<int32_t> cursor_;    // scratch of finish()
