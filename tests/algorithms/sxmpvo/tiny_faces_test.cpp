@@ -135,7 +135,7 @@ TEST(TinyFaces, SameSamplesAndDepthsAsTheRasterizer) {
     for (bool on_centres : {false, true}) compare_many(camera(ortho), on_centres);
 }
 
-TEST(TinyFaces, FanAroundASampleVertexCoversItOnce) {
+TEST(TinyFaces, FanAroundASampleVertexDecidedAlike) {
   for (bool ortho : {false, true}) compare_fan(camera(ortho));
 }
 
