@@ -164,7 +164,12 @@ void MpvoCore::begin_dfs(Ordering& out, const ExtraRelations* extra) {
   if (extra && !extra->not_sink.empty() && extra->not_sink.size() != n)
     throw std::invalid_argument("ExtraRelations: not_sink must have one entry per cell");
   extra_ = extra;
-  std::fill(state_.begin(), state_.end(), kNew);
+  if (extra && !extra->offsets.empty()) {
+    const int32_t* off = extra->offsets.data();
+    for (size_t c = 0; c < n; ++c) state_[c] = off[c + 1] != off[c] ? kHasExtra : kNew;
+  } else {
+    std::fill(state_.begin(), state_.end(), kNew);
+  }
   out.order.clear();
   out.order.reserve(n);
   sinks_ = cycle_roots_ = 0;
@@ -186,7 +191,7 @@ void MpvoCore::report_cycle(int32_t closing, Ordering& out) {
 }
 
 bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
-  if (state_[root] != kNew) return false;
+  if ((state_[root] & kStateMask) != kNew) return false;
   const int32_t* cfo = faces_->cell_face_offsets.data();
   const int32_t* nbr = neighbour_.data();
   const uint8_t* behind = behind_mask_.data();
@@ -197,7 +202,7 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
 
   stack_.clear();
   stack_.push_back({root, 0});
-  state_[root] = kOnStack;
+  ++state_[root];  // kOnStack
   while (!stack_.empty()) {
     const int32_t c = stack_.back().cell;
     int32_t next = stack_.back().next;
@@ -209,7 +214,7 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
         const int slot = __builtin_ctz(bits);
         bits &= bits - 1;
         const int32_t nb = nbr[cfo[c] + slot];
-        const uint8_t st = state_[nb];
+        const uint8_t st = state_[nb] & kStateMask;
         if (st == kNew) {
           child = nb;
           next = slot + 1;
@@ -219,11 +224,11 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
       }
       if (child < 0) next = kExtraSlot;
     }
-    if (child < 0 && has_extra) {
+    if (child < 0 && has_extra && (state_[c] & kHasExtra)) {
       const int32_t count = xoff[c + 1] - xoff[c];
       while (next - kExtraSlot < count) {
         const int32_t nb = xbehind[xoff[c] + (next++ - kExtraSlot)];
-        const uint8_t st = state_[nb];
+        const uint8_t st = state_[nb] & kStateMask;
         if (st == kNew) {
           child = nb;
           break;
@@ -233,11 +238,11 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
     }
     if (child >= 0) {
       stack_.back().next = next;
-      state_[child] = kOnStack;
+      ++state_[child];  // kOnStack
       stack_.push_back({child, 0});
     } else {
       out.order.push_back(in_id ? in_id[c] : c);
-      state_[c] = kDone;
+      ++state_[c];  // kDone
       stack_.pop_back();
     }
   }

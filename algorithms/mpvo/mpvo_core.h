@@ -128,7 +128,7 @@ class MpvoCore {
   bool is_sink(int32_t c) const {
     return outbound_[c] == 0 && !(extra_ && !extra_->not_sink.empty() && extra_->not_sink[c]);
   }
-  bool visited(int32_t c) const { return state_[c] != kNew; }
+  bool visited(int32_t c) const { return (state_[c] & kStateMask) != kNew; }
   // DFS from `root` unless it was already visited; returns whether a search started.
   bool dfs_from(int32_t root, Ordering& out);
   void dfs_sinks(Ordering& out);      // every sink, in cell-id order
@@ -149,7 +149,10 @@ class MpvoCore {
   size_t bytes() const;
 
  private:
-  enum : uint8_t { kNew = 0, kOnStack = 1, kDone = 2 };
+  // A cell's DFS state (kNew -> kOnStack -> kDone, by increments) and, in bit 2, whether
+  // it has extra relations: most cells have none, and the flag, read with the state, spares
+  // the DFS a look at the extra offsets of every cell (a cache miss in 4 bytes a cell).
+  enum : uint8_t { kNew = 0, kOnStack = 1, kDone = 2, kStateMask = 3, kHasExtra = 4 };
   static constexpr int32_t kExtraSlot = 8;  // slots 0..7 are faces, then extra relations
   struct Frame {
     int32_t cell;
@@ -178,7 +181,7 @@ class MpvoCore {
   bool plain_double_ = false;
 
   const ExtraRelations* extra_ = nullptr;
-  std::vector<uint8_t> state_;  // kNew / kOnStack / kDone
+  std::vector<uint8_t> state_;  // kNew / kOnStack / kDone, | kHasExtra
   std::vector<Frame> stack_;
   int64_t sinks_ = 0, cycle_roots_ = 0;
 };

@@ -7,29 +7,43 @@ namespace vob::sxmpvo {
 void ABuffer::reset(int64_t pixels) {
   pixels_ = pixels;
   raw_.clear();
+  batches_.clear();
+  entries_ = 0;
   list_.clear();
   offsets_.assign(static_cast<size_t>(pixels) + 1, 0);
   head_insertions_ = walk_steps_ = 0;
 }
 
 void ABuffer::finish() {
-  // Counting sort by pixel, stable: each pixel's entries in arrival order.
+  // Counting sort by pixel, stable; then each pixel's entries by rank (short lists).
   std::fill(offsets_.begin(), offsets_.end(), 0);
-  for (const Raw& r : raw_) ++offsets_[r.pixel + 1];
+  each_raw([&](const Raw& r) { ++offsets_[r.pixel + 1]; });
   for (int64_t p = 0; p < pixels_; ++p) offsets_[p + 1] += offsets_[p];
-  list_.resize(raw_.size());
+  by_pixel_.resize(static_cast<size_t>(entries_));
+  list_.resize(static_cast<size_t>(entries_));
   std::vector<int32_t>& cursor = cursor_;
   cursor.assign(offsets_.begin(), offsets_.end() - 1);
-  for (const Raw& r : raw_) list_[cursor[r.pixel]++] = {r.t, r.item, -1};
-  // Per pixel, insertion one entry at a time into increasing t, behind every entry not
-  // farther than itself (the mirror of "in front of every entry farther than itself" in a
-  // decreasing list); then reversed. A new entry passes the entries farther than it.
+  Slot* slots = by_pixel_.data();
+  each_raw([&](const Raw& r) { slots[cursor[r.pixel]++] = {r.t, r.item, r.rank}; });
+  // Per pixel, in rank order, insertion one entry at a time into increasing t, behind every
+  // entry not farther than itself (the mirror of "in front of every entry farther than
+  // itself" in a decreasing list); then reversed. A new entry passes the entries farther
+  // than it.
   for (int64_t p = 0; p < pixels_; ++p) {
     const int32_t b = offsets_[p], e = offsets_[p + 1];
     if (b == e) continue;
+    Slot* in = slots + b;
+    const int32_t k = e - b;
+    for (int32_t i = 1; i < k; ++i) {  // by rank
+      const Slot x = in[i];
+      int32_t j = i;
+      for (; j > 0 && in[j - 1].rank > x.rank; --j) in[j] = in[j - 1];
+      in[j] = x;
+    }
     ++head_insertions_;  // the first entry of a list
+    list_[b] = {in[0].t, in[0].item, -1};
     for (int32_t i = b + 1; i < e; ++i) {
-      const PixEntry x = list_[i];
+      const PixEntry x{in[i - b].t, in[i - b].item, -1};
       int32_t j = i;
       while (j > b && list_[j - 1].t > x.t) {
         list_[j] = list_[j - 1];
@@ -40,7 +54,7 @@ void ABuffer::finish() {
       list_[j] = x;
     }
     std::reverse(list_.begin() + b, list_.begin() + e);
-    for (int32_t k = b; k < e; ++k) list_[k].next = k + 1 < e ? k + 1 : -1;
+    for (int32_t q = b; q < e; ++q) list_[q].next = q + 1 < e ? q + 1 : -1;
   }
 }
 

@@ -26,23 +26,32 @@ struct PixEntry {
 // the paper's linked lists: same order, same head-insertion count. They are laid out in
 // one array per frame, each pixel's list contiguous, because walking linked entries that
 // lie far apart in a pool cost one cache miss per entry (87% of the pairing time).
+// An entry's arrival is its rank, not the moment it is recorded: faces may be scanned in
+// any order (storage order, where their data lie close together) and finish() replays the
+// arrivals of each list by rank.
 class ABuffer {
  public:
   // Empties every list (keeps the storage) for `pixels` pixels.
   void reset(int64_t pixels);
-  // An entry as it arrives: depth, item, pixel.
+  // An entry as it is recorded: depth, item, pixel, and its arrival rank (the rank of its
+  // face in the sorted face order).
   struct Raw {
     double t;
-    int32_t item, pixel;
+    int32_t item, pixel, rank;
   };
-  // Records an entry of pixel `pixel`; the lists are built by finish().
+  // Records an entry of pixel `pixel` that arrives after every entry recorded so far.
   void insert(int64_t pixel, double t, int32_t item) {
-    raw_.push_back({t, item, static_cast<int32_t>(pixel)});
+    raw_.push_back({t, item, static_cast<int32_t>(pixel), static_cast<int32_t>(entries_++)});
   }
-  // Records a batch of entries that arrive, in this order, after those already recorded
-  // (faces scanned in parallel chunks keep the arrival order of a sequential scan).
-  void append(const std::vector<Raw>& batch) { raw_.insert(raw_.end(), batch.begin(), batch.end()); }
-  // Builds the lists: per pixel, the entries in arrival order inserted one by one so that
+  // Records a batch of entries with their own ranks (faces scanned in parallel chunks, in
+  // any order: the ranks, not the batches, decide the arrival order). Ranks of one pixel's
+  // entries must differ, except for entries of one face (which never share a pixel). The
+  // batch is read in place by finish(): it must stay alive and unchanged until then.
+  void append(const std::vector<Raw>& batch) {
+    batches_.push_back(&batch);
+    entries_ += static_cast<int64_t>(batch.size());
+  }
+  // Builds the lists: per pixel, the entries by increasing rank inserted one by one so that
   // the list stays in decreasing t; an entry at least as far as the head becomes the head
   // (a head insertion), otherwise it goes behind every entry farther than itself.
   void finish();
@@ -52,17 +61,31 @@ class ABuffer {
     return offsets_[pixel] < offsets_[pixel + 1] ? offsets_[pixel] : -1;
   }
   const PixEntry& entry(int32_t id) const { return list_[id]; }
-  int64_t entries() const { return static_cast<int64_t>(raw_.size()); }
+  int64_t entries() const { return entries_; }
   int64_t head_insertions() const { return head_insertions_; }
   int64_t walk_steps() const { return walk_steps_; }  // entries passed by non-head inserts
   size_t bytes() const {
-    return offsets_.capacity() * sizeof(int32_t) + raw_.capacity() * sizeof(Raw) +
-           list_.capacity() * sizeof(PixEntry);
+    return offsets_.capacity() * sizeof(int32_t) +
+           raw_.capacity() * sizeof(Raw) + by_pixel_.capacity() * sizeof(Slot) +
+           list_.capacity() * sizeof(PixEntry) + cursor_.capacity() * sizeof(int32_t);
   }
 
  private:
   int64_t pixels_ = 0;
-  std::vector<Raw> raw_;           // arrival order
+  struct Slot {  // an entry once its pixel is known
+    double t;
+    int32_t item, rank;
+  };
+  template <class F>
+  void each_raw(F&& f) const {  // every recorded entry: insert()ed, then appended batches
+    for (const Raw& r : raw_) f(r);
+    for (const std::vector<Raw>* b : batches_)
+      for (const Raw& r : *b) f(r);
+  }
+  int64_t entries_ = 0;
+  std::vector<Raw> raw_;           // insert()ed
+  std::vector<const std::vector<Raw>*> batches_;  // append()ed, read in place
+  std::vector<Slot> by_pixel_;     // scratch of finish(): per pixel, by rank
   std::vector<int32_t> offsets_;   // pixels + 1
   std::vector<PixEntry> list_;     // per pixel, decreasing t
   std::vector<int32_t> cursor_;    // scratch of finish()

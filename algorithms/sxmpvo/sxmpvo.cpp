@@ -8,6 +8,7 @@
 
 #include "algorithms/mpvo/mpvo_core.h"
 #include "algorithms/sxmpvo/abuffer.h"
+#include "algorithms/sxmpvo/tiny_faces.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
 #include "harness/sort/radix_sort.h"
@@ -65,6 +66,9 @@ class SxmpvoOrderer final : public Orderer {
     core_.add_counters(out);
     auto& k = out.counters;
     k["exterior_faces"] = static_cast<double>(ext_->face.size());
+    int64_t tiny = 0;
+    for (int64_t t : tiny_) tiny += t;
+    k["tiny_path_faces"] = static_cast<double>(tiny);
     k["abuffer_entries"] = static_cast<double>(abuf_.entries());
     k["head_insertions"] = static_cast<double>(abuf_.head_insertions());
     k["head_insertion_rate"] =
@@ -106,10 +110,11 @@ class SxmpvoOrderer final : public Orderer {
 
   size_t exterior_bytes() const {
     return ext_centroid_.capacity() * sizeof(Vec3) + projected_.capacity() * sizeof(ProjectedVertex) +
-           sort_.bytes();
+           sort_.bytes() + rank_.capacity() * sizeof(int32_t);
   }
 
-  // Exterior faces (indices into the exterior face list), nearest centroid first.
+  // Exterior faces (indices into the exterior face list), nearest centroid first, and each
+  // face's rank in that order.
   void sort_exterior_faces(const Camera& view) {
     const Vec3 eye = view.eye, dir = view.forward();
     const size_t b = ext_centroid_.size();
@@ -120,15 +125,14 @@ class SxmpvoOrderer final : public Orderer {
       sort_.ids[i] = static_cast<int32_t>(i);
     }
     sort_.sort();
+    rank_.resize(b);
+    for (size_t k = 0; k < b; ++k) rank_[sort_.ids[k]] = static_cast<int32_t>(k);
   }
 
   void scan_and_pair(const Camera& view, PairStats& stats) {
     const SampleFrame frame(view, 1);
     const int cols = frame.cols();
     abuf_.reset(frame.num_samples());
-    // Consecutive runs of the sorted faces are scanned in parallel, each into its own
-    // batch; appending the batches in run order gives the A-buffer exactly the arrival
-    // order of a sequential scan, so lists, counts and relations do not depend on threads.
     // Each boundary point is projected once, not once per face that has it.
     const std::vector<Vec3>& points = ext_->points;
     projected_.resize(points.size());
@@ -137,34 +141,51 @@ class SxmpvoOrderer final : public Orderer {
                         for (size_t k = r.begin(); k < r.end(); ++k)
                           projected_[k] = ProjectedVertex::of(frame, points[k]);
                       });
-    const size_t b = sort_.ids.size();
+    // Faces are scanned in storage order, where a face's points, corners and sign lie near
+    // the previous face's (in sorted order every face is a cache miss); each entry carries
+    // its face's rank in the sorted order, which the A-buffer replays as the arrival order.
+    // Runs of faces are scanned in parallel, each into its own batch: the ranks make the
+    // lists, counts and relations independent of the threads.
+    const size_t b = ext_->face.size();
     const size_t runs = std::max<size_t>(1, std::min<size_t>(64, b / 2048));
     batches_.resize(runs);
+    tiny_.assign(runs, 0);
     tbb::parallel_for(size_t(0), runs, [&](size_t r) {
       std::vector<sxmpvo::ABuffer::Raw>& batch = batches_[r];
       batch.clear();
       PolygonRaster raster;
-      for (size_t k = b * r / runs, end = b * (r + 1) / runs; k < end; ++k) {
-        const int32_t i = sort_.ids[k];
-        const ExteriorFaces& ext = *ext_;
+      const ExteriorFaces& ext = *ext_;
+      int64_t tiny = 0;
+      for (size_t i = b * r / runs, end = b * (r + 1) / runs; i < end; ++i) {
         const int s = core_.face_sign(ext.face[i]);
         if (s == 0) continue;  // the eye is in its plane: it covers no sample
         const int n = ext.size[i];
         ProjectedVertex proj[4];
         for (int v = 0; v < n; ++v) proj[v] = projected_[ext.vertex[4 * i + v]];
-        if (!raster.setup(frame, &ext.corners[4 * i], n, proj)) continue;
-        const int32_t item = ext.cell[i] * 2 + (s > 0 ? 1 : 0);
-        raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
-          batch.push_back({t, item, static_cast<int32_t>(int64_t(sy) * cols + sx)});
-        });
+        SampleRect box;
+        const sxmpvo::BoxKind kind = sxmpvo::sample_box(frame, proj, n, box);
+        if (kind == sxmpvo::BoxKind::None) continue;
+        const int32_t item = ext.cell[i] * 2 + (s > 0 ? 1 : 0), rank = rank_[i];
+        auto emit = [&](int sx, int sy, double t) {
+          batch.push_back({t, item, static_cast<int32_t>(int64_t(sy) * cols + sx), rank});
+        };
+        const Vec3* corners = &ext.corners[4 * i];
+        if (kind == sxmpvo::BoxKind::Tiny && n == 3) {
+          sxmpvo::scan_tiny_triangle(frame, corners, s, box, emit);
+          ++tiny;
+        } else if (raster.setup(frame, corners, n, proj)) {
+          raster.scan(frame.bounds(), emit);
+        }
       }
+      tiny_[r] = tiny;
     });
     for (const auto& batch : batches_) abuf_.append(batch);
     abuf_.finish();
     const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
     pn_.reset(core_.num_cells());
     const int64_t pixels = abuf_.pixels();
-    for (int64_t p = 0; p < pixels; ++p) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
+    for (int64_t p = 0; p < pixels; ++p)
+      if (abuf_.head(p) >= 0) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
     pn_.to_relations(extra_);
   }
 
@@ -180,7 +201,9 @@ class SxmpvoOrderer final : public Orderer {
   sxmpvo::PnLists pn_;
   mpvo::ExtraRelations extra_;
   std::vector<PixEntry> scratch_;
-  std::vector<std::vector<sxmpvo::ABuffer::Raw>> batches_;  // per run of sorted faces
+  std::vector<int32_t> rank_;                                // per exterior face
+  std::vector<std::vector<sxmpvo::ABuffer::Raw>> batches_;  // per run of faces
+  std::vector<int64_t> tiny_;                                // per run: faces on the tiny path
 };
 
 }  // namespace

@@ -12,8 +12,10 @@
 //   "I create partial order"  MPVO face arrows and outbound counts (the sink flags);
 //   "II sort exterior faces"  every exterior face by increasing centroid distance from the
 //       eye (depth along the view direction for orthographic views), LSD radix sort;
-//   "III scan faces and add dependencies"  exterior faces scan-converted in that order into
-//       per-pixel PIX lists kept in decreasing depth by insertion; consecutive front-facing
+//   "III scan faces and add dependencies"  exterior faces scan-converted into per-pixel PIX
+//       lists kept in decreasing depth by insertion in the sorted order (faces are scanned
+//       in storage order and their entries replayed by rank; triangles covering a few
+//       samples take the path of tiny_faces.h, the same samples and depths); consecutive front-facing
 //       (farther) / back-facing (nearer) entries form pseudo-neighbour relations, stored in
 //       the occluding cell's PN list without duplicates (move-to-front search); the lists
 //       become MpvoCore extra relations, and occluded cells lose their sink flag;
@@ -26,7 +28,7 @@
 // Claims: image_exact (exact at the pixel centres of the view given, for acyclic meshes),
 // detects_cycles. Not object_exact: ray gaps between pixel centres are not sampled.
 // Counters: MpvoCore's (exact_sign_calls, double_sign_wrong, arrows, sink_cells,
-// cycle_roots), exterior_faces, abuffer_entries (Cook's a at this view), head_insertions,
+// cycle_roots), exterior_faces, tiny_path_faces (faces scanned by tiny_faces.h), abuffer_entries (Cook's a at this view), head_insertions,
 // head_insertion_rate, insertion_walk_steps, pix_lists, max_pix_list, pn_pairs (pairs found
 // in PIX lists), pn_relations (distinct PN entries), pn_found_at_head, pn_moved_to_front,
 // pn_search_steps, tie_reorders, unpaired_entries, self_pairs, and memory in bytes:

@@ -59,6 +59,35 @@ TEST(ABuffer, KeepsDecreasingDepthAndCountsHeadInsertions) {
   EXPECT_EQ(a.head(0), -1);
 }
 
+// Batches recorded in any order (faces scanned in storage order) give the lists and counts
+// of the arrivals in rank order (the sorted face order).
+TEST(ABuffer, ReplaysArrivalsByRank) {
+  ABuffer by_rank, shuffled;
+  by_rank.reset(2);
+  by_rank.insert(0, 1.0, back(0));
+  by_rank.insert(0, 3.0, back(1));
+  by_rank.insert(1, 5.0, back(1));
+  by_rank.insert(0, 2.0, front(2));
+  by_rank.insert(0, 0.5, back(3));
+  by_rank.finish();
+  // The same entries with their ranks, recorded last rank first, in two batches.
+  const std::vector<ABuffer::Raw> b1{{0.5, back(3), 0, 4}, {2.0, front(2), 0, 3}};
+  const std::vector<ABuffer::Raw> b2{{5.0, back(1), 1, 2}, {3.0, back(1), 0, 1}, {1.0, back(0), 0, 0}};
+  shuffled.reset(2);
+  shuffled.append(b1);
+  shuffled.append(b2);
+  shuffled.finish();
+  for (int64_t p = 0; p < 2; ++p) {
+    EXPECT_EQ(depths(shuffled, p), depths(by_rank, p));
+    for (int32_t i = shuffled.head(p), j = by_rank.head(p); i >= 0; i = shuffled.entry(i).next, j = by_rank.entry(j).next)
+      EXPECT_EQ(shuffled.entry(i).item, by_rank.entry(j).item);
+  }
+  EXPECT_EQ(shuffled.entries(), 5);
+  EXPECT_EQ(shuffled.head_insertions(), by_rank.head_insertions());
+  EXPECT_EQ(shuffled.head_insertions(), 3);  // 1.0, 3.0 on pixel 0; 5.0 on pixel 1
+  EXPECT_EQ(shuffled.walk_steps(), by_rank.walk_steps());
+}
+
 TEST(PnLists, NoDuplicatesAndMoveToFront) {
   PnLists pn;
   pn.reset(4);

@@ -1,0 +1,114 @@
+// SXMPVO phase III's path for exterior faces that cover a few samples: most faces of a fine
+// mesh cover none or one or two pixel centres, and the general rasterizer
+// (harness/raster/polygon_raster.h) pays for them with a facing test per triangle, a
+// candidate box widened by a sample on each side and a division per edge per row.
+//
+// Here a triangle whose vertices all lie in front of the eye is scanned over the sample
+// centres of its projected box only (the box PolygonRaster already trusts to reject faces
+// that cover no centre), with its facing sign taken from MPVO's phase I (a triangle's
+// phase-I sign is the exact sign of orient3d of its three points, the same predicate the
+// rasterizer evaluates) and its projected points computed once per view. Each decision is
+// made by PolygonRaster's own expressions, evaluated in the same order: the edge functions
+// of the ray from the canonical edge direction, the top-left rule for exact zeros (taken only
+// when a value is exactly zero), and t = num / (n . X) * |X|. So a sample in the box is
+// covered here exactly when it is covered there, and t is the same double. Outside the box
+// the rasterizer (whose candidates reach one sample further) can only add rounding noise of
+// a triangle seen edge-on, rays that graze it; the oracle's cell clipping drops those too
+// (tests/algorithms/sxmpvo/tiny_faces_test.cpp).
+#pragma once
+#include <cmath>
+
+#include "harness/raster/polygon_raster.h"
+#include "harness/raster/sample_frame.h"
+
+namespace vob::sxmpvo {
+
+// Largest projected box, in samples, that the tiny path scans sample by sample; a larger
+// face goes to PolygonRaster, whose spans skip the box's empty corners.
+constexpr int kTinyMaxSamples = 64;
+
+enum class BoxKind { None, Tiny, Large };
+
+// The sample centres of a polygon's projected box (PolygonRaster::may_cover_a_sample's
+// tightened box, same margin), clipped to the frame. None: no sample centre can be covered;
+// Tiny: `box` holds at most kTinyMaxSamples samples; Large: anything else, including a
+// vertex not in front of the eye (then the projection bounds nothing).
+BoxKind sample_box(const SampleFrame& frame, const ProjectedVertex* q, int n, SampleRect& box);
+
+// Scans the triangle v[0..3) over `box` (from sample_box, every vertex in front of the eye)
+// and calls emit(sx, sy, t) for each covered sample. `phase1_sign` is MpvoCore's sign of
+// the face whose first three points are v[0], v[1], v[2] (+1: the eye on the side its
+// right-hand normal points to); it must not be 0.
+template <class Emit>
+void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
+                        Emit&& emit);
+
+// ---- implementation ----
+
+namespace detail {
+struct TinyEdge {
+  Vec3 m;
+  double c;
+};
+// PolygonRaster::add_triangle's ownership of an exactly zero edge value (top-left rule).
+inline bool owns_zero(const SampleFrame& fr, const TinyEdge& e) {
+  const double a = dot(e.m, fr.affine_dx()), b = dot(e.m, fr.affine_dy());
+  return a > 0 || (a == 0 && (b < 0 || (b == 0 && dot(e.m, fr.forward()) > 0)));
+}
+}  // namespace detail
+
+template <class Emit>
+void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
+                        Emit&& emit) {
+  const bool ortho = fr.ortho();
+  const Vec3 n = cross(v[1] - v[0], v[2] - v[0]);
+  const double d = -dot(n, v[0]);
+  double num = 0, inv_nf = 0;
+  if (ortho) {
+    const double nf = dot(n, fr.forward());
+    if (nf == 0) return;
+    inv_nf = 1.0 / nf;
+  } else {
+    num = -dot(n, fr.eye() - v[0]);
+  }
+  // The rasterizer's facing is sigma (orthographic) or -sigma (perspective), sigma being
+  // orient3d(v0, v1, v2, eye), resp. orient_direction(v0, v1, v2, f) = -(phase-I sign):
+  // both are -(phase-I sign).
+  const double facing = -phase1_sign;
+  detail::TinyEdge e[3];
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 &pi = v[i], &pj = v[(i + 1) % 3];
+    const bool fwd = lex_less(pi, pj);
+    const Vec3 &pa = fwd ? pi : pj, &pb = fwd ? pj : pi;
+    Vec3 m;
+    double c = 0;
+    if (ortho) {
+      const Vec3 mp = cross(pb - pa, fr.forward());
+      c = dot(mp, pa);
+      m = -mp;
+    } else {
+      m = cross(pa - fr.eye(), pb - pa);
+    }
+    const double s = fwd ? facing : -facing;
+    e[i] = {m * s, c * s};
+  }
+  for (int sy = box.y0; sy <= box.y1; ++sy) {
+    const Vec3 row = fr.row_term(sy);
+    for (int sx = box.x0; sx <= box.x1; ++sx) {
+      const Vec3 x = row + fr.col_term(sx);
+      bool in = true;
+      for (const detail::TinyEdge& edge : e) {
+        const double val = edge.c + dot(edge.m, x);
+        if (val < 0 || (val == 0 && !detail::owns_zero(fr, edge))) {
+          in = false;
+          break;
+        }
+      }
+      if (!in) continue;
+      const double t = ortho ? -(dot(n, x) + d) * inv_nf : num / dot(n, x) * length(x);
+      if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
+    }
+  }
+}
+
+}  // namespace vob::sxmpvo

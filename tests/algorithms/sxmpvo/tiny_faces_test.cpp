@@ -1,0 +1,156 @@
+// SXMPVO's tiny-face path against the shared rasterizer: for small triangles in front of
+// the eye, the same samples with bit-identical depths, including samples exactly on edges
+// and vertices (triangles whose corners lie on sample rays, fans around a shared vertex).
+// The one difference allowed: a triangle degenerate in projection (edge-on up to rounding)
+// gets rounding-noise samples from the rasterizer outside its projected box, which the
+// tiny path does not scan (the oracle's cell clipping drops such grazing rays too).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <tuple>
+#include <vector>
+
+#include "algorithms/sxmpvo/tiny_faces.h"
+#include "harness/geometry/predicates.h"
+
+using namespace vob;
+using Hits = std::vector<std::tuple<int, int, double>>;
+
+namespace {
+
+// MpvoCore's phase-I sign of a triangle face (v0, v1, v2).
+int phase1_sign(const SampleFrame& f, const Vec3* v) {
+  return f.ortho() ? -orient_direction(v[0], v[1], v[2], f.forward()) : orient3d(v[0], v[1], v[2], f.eye());
+}
+
+Hits by_raster(const SampleFrame& f, const Vec3* v) {
+  Hits h;
+  rasterize_polygon(f, v, 3, f.bounds(), [&](int x, int y, double t) { h.emplace_back(x, y, t); });
+  std::sort(h.begin(), h.end());
+  return h;
+}
+
+// The tiny path; `taken` says whether sample_box sent the triangle there, `box` where.
+Hits by_tiny_path(const SampleFrame& f, const Vec3* v, bool& taken, SampleRect& box) {
+  Hits h;
+  ProjectedVertex q[3];
+  for (int i = 0; i < 3; ++i) q[i] = ProjectedVertex::of(f, v[i]);
+  const sxmpvo::BoxKind kind = sxmpvo::sample_box(f, q, 3, box);
+  taken = kind == sxmpvo::BoxKind::Tiny;
+  const int s = phase1_sign(f, v);
+  if (taken && s != 0)
+    sxmpvo::scan_tiny_triangle(f, v, s, box, [&](int x, int y, double t) { h.emplace_back(x, y, t); });
+  std::sort(h.begin(), h.end());
+  return h;
+}
+
+// A point on the ray of sample-centre-ish window position (wx, wy) at ray parameter s.
+Vec3 on_ray(const SampleFrame& f, const Camera& cam, double wx, double wy, double s) {
+  const Ray r = cam.ray(wx, wy);
+  return r.origin + r.dir * s;
+}
+
+void compare_many(const Camera& cam, bool on_centres) {
+  const SampleFrame f(cam, 1);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int tiny = 0, covering = 0, degenerate = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const double cx = 20 + 80 * u(rng), cy = 20 + 60 * u(rng), depth = 3 + u(rng);
+    Vec3 v[3];
+    for (int i = 0; i < 3; ++i) {
+      double wx = cx + 4 * u(rng) - 2, wy = cy + 4 * u(rng) - 2;
+      if (on_centres) wx = std::floor(wx) + 0.5, wy = std::floor(wy) + 0.5;
+      v[i] = on_ray(f, cam, wx, wy, depth + 0.3 * u(rng));
+    }
+    bool taken = false;
+    SampleRect box;
+    const Hits tiny_hits = by_tiny_path(f, v, taken, box);
+    if (!taken) continue;
+    ++tiny;
+    covering += !tiny_hits.empty();
+    Hits in_box, outside;
+    for (const auto& h : by_raster(f, v)) {
+      const auto [x, y, t] = h;
+      (x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1 ? in_box : outside).push_back(h);
+    }
+    ASSERT_EQ(tiny_hits, in_box) << "triangle " << k;
+    if (!outside.empty()) {  // only rounding noise of a triangle seen edge-on
+      ProjectedVertex q[3];
+      for (int i = 0; i < 3; ++i) q[i] = ProjectedVertex::of(f, v[i]);
+      const double area2 = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
+      EXPECT_LT(std::fabs(area2), 1e-9) << "triangle " << k;
+      ++degenerate;
+    }
+  }
+  EXPECT_GT(tiny, 3000);
+  EXPECT_GT(covering, 1000);
+  if (!on_centres) EXPECT_EQ(degenerate, 0);
+}
+
+// Triangles around a vertex on a sample ray, with spokes along sample rows and columns:
+// samples on shared edges and at the shared vertex decided alike on both paths.
+void compare_fan(const Camera& cam) {
+  const SampleFrame f(cam, 1);
+  const Vec3 centre = on_ray(f, cam, 50.5, 40.5, 4.0);
+  Vec3 rim[6];
+  for (int i = 0; i < 6; ++i)
+    rim[i] = on_ray(f, cam, 50.5 + 2 * std::cos(i * 1.0471975511965976),
+                    40.5 + 2 * std::sin(i * 1.0471975511965976), 4.0 + 0.1 * i);
+  const Vec3 axis[4] = {on_ray(f, cam, 52.5, 40.5, 4.0), on_ray(f, cam, 50.5, 42.5, 4.1),
+                        on_ray(f, cam, 48.5, 40.5, 4.2), on_ray(f, cam, 50.5, 38.5, 4.3)};
+  size_t hits = 0;
+  for (int fan = 0; fan < 2; ++fan) {
+    const int n = fan ? 4 : 6;
+    for (int i = 0; i < n; ++i) {
+      const Vec3 v[3] = {centre, fan ? axis[i] : rim[i], fan ? axis[(i + 1) % 4] : rim[(i + 1) % 6]};
+      bool taken = false;
+      SampleRect box;
+      const Hits h = by_tiny_path(f, v, taken, box);
+      EXPECT_TRUE(taken);
+      EXPECT_EQ(h, by_raster(f, v));
+      hits += h.size();
+    }
+  }
+  EXPECT_GT(hits, 10u);
+}
+
+Camera camera(bool ortho) {
+  Camera c;
+  c.eye = {0.3, -0.2, 9};
+  c.target = {0.1, 0.2, 0};
+  c.ortho = ortho;
+  c.ortho_height = 3.0;
+  c.width = 120;
+  c.height = 100;
+  return c;
+}
+
+}  // namespace
+
+TEST(TinyFaces, SameSamplesAndDepthsAsTheRasterizer) {
+  for (bool ortho : {false, true})
+    for (bool on_centres : {false, true}) compare_many(camera(ortho), on_centres);
+}
+
+TEST(TinyFaces, FanAroundASampleVertexDecidedAlike) {
+  for (bool ortho : {false, true}) compare_fan(camera(ortho));
+}
+
+TEST(TinyFaces, LargeOrBehindTheEyeIsNotTiny) {
+  const Camera cam = camera(false);
+  const SampleFrame f(cam, 1);
+  const Vec3 big[3] = {on_ray(f, cam, 10, 10, 4), on_ray(f, cam, 30, 10, 4), on_ray(f, cam, 10, 30, 4)};
+  bool taken = true;
+  SampleRect box;
+  by_tiny_path(f, big, taken, box);
+  EXPECT_FALSE(taken);
+  const Vec3 behind[3] = {cam.eye + Vec3{0, 0, 1}, on_ray(f, cam, 30, 10, 4), on_ray(f, cam, 10, 30, 4)};
+  by_tiny_path(f, behind, taken, box);
+  EXPECT_FALSE(taken);
+  ProjectedVertex q[3];
+  for (int i = 0; i < 3; ++i) q[i] = ProjectedVertex::of(f, on_ray(f, cam, 10.1 + 0.2 * i, 10.1, 4));
+  EXPECT_EQ(sxmpvo::sample_box(f, q, 3, box), sxmpvo::BoxKind::None);  // no centre inside
+}
