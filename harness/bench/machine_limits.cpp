@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <memory>
@@ -225,10 +226,13 @@ nlohmann::json probe_run(Params& params, const ProbeContext& ctx) {
   opt.warmup = ctx.warmup;
   nlohmann::json r = measure_machine_limits({1, run_threads()}, opt);
   if (ctx.progress)
-    for (size_t i = 0; i < r["triad"].size(); ++i)
-      ctx.progress("  machine limits, " + std::to_string(r["triad"][i]["threads"].get<int>()) + " thread(s): triad " +
-                   std::to_string(r["triad"][i]["bytes_per_second"].get<double>() / 1e9) + " GB/s, gather " +
-                   std::to_string(r["gather"][i]["gathers_per_second"].get<double>() / 1e6) + " M/s");
+    for (size_t i = 0; i < r["triad"].size(); ++i) {
+      char line[160];
+      std::snprintf(line, sizeof line, "  machine limits, %d thread(s): triad %.3g GB/s, gather %.3g M/s",
+                    r["triad"][i]["threads"].get<int>(), r["triad"][i]["bytes_per_second"].get<double>() / 1e9,
+                    r["gather"][i]["gathers_per_second"].get<double>() / 1e6);
+      ctx.progress(line);
+    }
   return r;
 }
 }  // namespace
