@@ -12,7 +12,7 @@ namespace vob {
 // Unique per run: UTC date-time, host, pid and a random part ("20261202T054800Z-h-123-a1b2c3").
 std::string new_run_id();
 // `threads`: the TBB parallelism the run measures with. Includes `machine_limits`
-// (machine_limits.h, about 0.2 s) unless VOBENCH_MACHINE_LIMITS=skip.
+// (machine_limits.h; 0.45 to 3.3 s on 2 loaded cores) unless VOBENCH_MACHINE_LIMITS=skip.
 nlohmann::json run_context(int threads);
 // {"key": "context|RUN_ID", "type": "context", "run_id", "schema_version", "context"}.
 nlohmann::json context_line(const std::string& run_id, const nlohmann::json& context);
