@@ -47,6 +47,8 @@ for key, w in want.items():
             fail(f"{key}: expected not measured, got {r['stream_s']}, {r['frame_over_stream']}")
     elif not (close(r["stream_s"], w[0]) and close(r["frame_over_stream"], w[1])):
         fail(f"{key}: stream {r['stream_s']}, ratio {r['frame_over_stream']}; expected {w}")
+if rows[("mpvo", 1)]["fits_llc"] is not True or rows[("centroid", 2)]["fits_llc"] is not None:
+    fail("4 MB against runA's 32 MiB last-level cache must be marked as fitting; runB knows no cache")
 if not close(rows[("mpvo", 1)]["frame_over_stream"], 10.5) or not close(rows[("mpvo", 2)]["frame_over_stream"], 12):
     fail("the ratios of the fixed records are not 10.5 and 12")
 # The checker itself must notice a wrong rate: the same records at another bandwidth.
