@@ -14,7 +14,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from generic import figures, sections, vtk_render  # noqa: E402
+from generic import figures, limits, sections, vtk_render  # noqa: E402
 from generic.load import load, revision  # noqa: E402
 from generic.page import Page, anchor  # noqa: E402
 from generic.rows import summarise  # noqa: E402
@@ -53,6 +53,7 @@ def build(a):
         sections.runs_header(page, recs)
         page.heading(2, "How to read the tables")
         page.para(sections.VERDICT_NOTE)
+        limits.section(page, rows, recs)
 
     def scaling(page):
         vtk_render.section(page, out, a.results)  # vobench-vtk render runs beside the results

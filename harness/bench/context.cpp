@@ -12,6 +12,8 @@
 #include <string>
 #include <thread>
 
+#include "harness/bench/jobs.h"
+#include "harness/bench/machine_limits.h"
 #include "harness/bench/record.h"
 #include "harness/bench/resources.h"
 
@@ -87,10 +89,10 @@ std::string new_run_id() {
 
 nlohmann::json run_context(int threads) {
   double load[3] = {-1, -1, -1};
-  const bool have_load = getloadavg(load, 3) == 3;
+  const bool have_load = getloadavg(load, 3) == 3;  // before the measurement below adds to it
   const std::string mhz = cpuinfo("cpu MHz");
   const std::string max_khz = first_line("/sys/devices/system/cpu/cpu0/cpufreq/cpuinfo_max_freq");
-  return {{"date", utc_now("%Y-%m-%dT%H:%M:%SZ")},
+  nlohmann::json c = {{"date", utc_now("%Y-%m-%dT%H:%M:%SZ")},
           {"host_name", host_name()},
           {"cpu", cpuinfo("model name").empty() ? "unknown" : cpuinfo("model name")},
           {"mhz", mhz.empty() ? nlohmann::json(nullptr) : nlohmann::json(std::atof(mhz.c_str()))},
@@ -111,6 +113,9 @@ nlohmann::json run_context(int threads) {
             {"nlohmann_json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
                                   std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
                                   std::to_string(NLOHMANN_JSON_VERSION_PATCH)}}}};
+  // At 1 thread, the run's first count and all threads the run may use (`--threads`).
+  if (!machine_limits_skipped()) c["machine_limits"] = measure_machine_limits({1, threads, run_threads()});
+  return c;
 }
 
 nlohmann::json context_line(const std::string& run_id, const nlohmann::json& context) {

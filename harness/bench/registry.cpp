@@ -22,6 +22,7 @@
 #include "algorithms/xmpvo/xmpvo.h"
 #include "algorithms/voxel/grid_orderers.h"
 #include "algorithms/voxel/voxel_probes.h"
+#include "harness/bench/machine_limits.h"
 #include "harness/bench/names.h"
 #include "harness/bench/probe.h"
 #include "harness/scene/input_error.h"
@@ -90,6 +91,7 @@ const std::vector<ProbeInfo>& probe_registry() {
       voxel_splat_frames_probe_info(),
       voxel_order_splits_probe_info(),
       sxmpvo_tiny_cells_probe_info(),
+      machine_limits_probe_info(),
       havs_sorts_probe_info(),
       havs_analysis_probe_info(),
       havs_gl_probe_info(),

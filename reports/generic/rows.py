@@ -6,6 +6,7 @@ neither failing nor exact, and its error is None, never 0."""
 import collections
 import statistics
 
+from . import limits
 from .load import revision, run_of
 
 # Records older than the one-verdict change: HAVS's own per-pixel count stood in for the
@@ -129,7 +130,10 @@ def summarise(recs):
             "exact": claim(rs[0]),
             "phases": {k: statistics.median(v) for k, v in phases.items()},
             "bytes": rs[0]["bytes"]["orderer"] + rs[0]["bytes"]["derived"],
+            # The working set streamed once at the run's triad rate (limits.py).
+            **limits.row_fields(rs),
         })
+        rows[-1]["frame_over_stream"] = limits.frame_over_stream(rows[-1])
     # A scene with several thread counts labels its rows with theirs (figures.label).
     counts = collections.defaultdict(set)
     for row in rows:

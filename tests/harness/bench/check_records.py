@@ -64,11 +64,12 @@ for what, rec, change in (
         ("schema_version 1", orderer, lambda r: r.update(schema_version=1)),
         ("context in a record", orderer, lambda r: r.update(context={"cpu": "x"})),
         ("no run_id", orderer, lambda r: r.pop("run_id")),
-        ("context without libraries", context, lambda r: r["context"].pop("libraries"))):
+        ("context without libraries", context, lambda r: r["context"].pop("libraries")),
+        ("triad bandwidth 0", context, lambda r: r["context"]["machine_limits"]["triad"][0].update(bytes_per_second=0))):
     bad = copy.deepcopy(rec)
     change(bad)
     if v.is_valid(bad):
         broken.append(what)
 if broken:
     fail(f"the schema accepts broken lines: {broken}")
-print(f"check_records: {len(lines)} lines valid ({kinds}); 6 broken lines refused")
+print(f"check_records: {len(lines)} lines valid ({kinds}); 7 broken lines refused")
