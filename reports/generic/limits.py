@@ -122,5 +122,5 @@ def section(page, rows, recs):
               "times longer a frame takes than streaming what it holds once (below 1: the frame reads less "
               "than it holds, or, marked 'fits in LLC', reads it from the last-level cache, faster than "
               "from memory). " + (f"Largest: {sig(worst[0])} ({worst[1]['algorithm']} on {worst[1]['scene']}, "
-                                    f"{worst[1]['threads']} threads)." if worst else
+                                    f"{worst[1]['threads']} thread{'' if worst[1]['threads'] == 1 else 's'})." if worst else
                                     "No row has a measured limit (runs without `machine_limits`)."))
