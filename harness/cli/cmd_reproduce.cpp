@@ -53,7 +53,7 @@ RunPart shard_part(const std::vector<Reproduction>& reps, const SpreadOptions& s
 
 int spread_dry_run(const std::vector<Reproduction>& reps, const std::string& out, bool force,
                    const SpreadOptions& spread) {
-  dry_run_reproductions(reps, out, force);
+  dry_run_reproductions(reps, out, force, spread.costs);
   if (spread.sharded()) shard_filter(farm_suites(reps), spread, std::cout);
   if (spread.ranks > 0) {
     const std::string results = out + "/results.jsonl";

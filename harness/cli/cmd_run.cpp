@@ -56,7 +56,9 @@ Command add_run_command(CLI::App& app) {
     const std::vector<FarmSuite> suites{{s, RunTags{}}};
     if (*dry_run) {
       const KnownRecords known = KnownRecords::read(*out);
-      print_dry_run_total(std::cout, "run " + s.name, print_dry_run(std::cout, s, RunTags{}, known), known, *out);
+      const KnownRecords costs = spread->costs.empty() ? KnownRecords() : KnownRecords::read(spread->costs);
+      print_dry_run_total(std::cout, "run " + s.name, print_dry_run(std::cout, s, RunTags{}, known), known, *out,
+                          spread->costs.empty() ? nullptr : &costs, spread->costs);
       if (spread->sharded()) shard_filter(suites, *spread, std::cout);
       if (spread->ranks > 0) {
         const std::string from = spread->costs.empty() ? *out : spread->costs;

@@ -51,14 +51,17 @@ DryRunTotals print_dry_run(std::ostream& out, const SuiteSpec& suite, const RunT
 }
 
 void print_dry_run_total(std::ostream& out, const std::string& name, const DryRunTotals& t,
-                         const KnownRecords& known, const std::string& results_path) {
+                         const KnownRecords& known, const std::string& results_path,
+                         const KnownRecords* costs, const std::string& costs_path) {
+  const KnownRecords& rate = costs ? *costs : known;
+  const std::string rate_file = costs ? costs_path : "the results file";
   out << name << ": " << t.jobs << " jobs (" << t.jobs - t.to_do << " already done in " << results_path
       << "), " << t.to_do << " to compute, cost " << units(t.cost) << " units";
-  if (known.seconds_per_unit() > 0)
-    out << ", ~" << ProgressTracker::clock_text(t.cost * known.seconds_per_unit()) << " (calibrated from the frame times of "
-        << known.timed << " records in the results file; oracle, images and scenes are not in them, so a lower bound)\n";
+  if (rate.seconds_per_unit() > 0)
+    out << ", ~" << ProgressTracker::clock_text(t.cost * rate.seconds_per_unit()) << " (calibrated from the frame times of "
+        << rate.timed << " records in " << rate_file << "; oracle, images and scenes are not in them, so a lower bound)\n";
   else
-    out << " (uncalibrated: no records in the results file to turn units into seconds)\n";
+    out << " (uncalibrated: no records in " << rate_file << " to turn units into seconds)\n";
 }
 
 }  // namespace vob

@@ -21,7 +21,9 @@ struct DryRunTotals {
 DryRunTotals print_dry_run(std::ostream& out, const SuiteSpec& suite, const RunTags& tags,
                            const KnownRecords& known);
 // "NAME: N jobs (D already done), T to compute, cost C units, ~HH:MM:SS (calibrated from ...)"
+// `costs`: records of another file (--costs) that calibrate the estimate instead of `known`'s.
 void print_dry_run_total(std::ostream& out, const std::string& name, const DryRunTotals& t,
-                         const KnownRecords& known, const std::string& results_path);
+                         const KnownRecords& known, const std::string& results_path,
+                         const KnownRecords* costs = nullptr, const std::string& costs_path = "");
 
 }  // namespace vob

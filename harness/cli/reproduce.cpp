@@ -174,18 +174,21 @@ int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_
   return first_failure != 0 ? first_failure : summary;
 }
 
-void dry_run_reproductions(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force) {
+void dry_run_reproductions(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force,
+                           const std::string& costs_path) {
   const std::string results = results_of(out_dir);
   const KnownRecords known = force ? KnownRecords() : KnownRecords::read(results);
+  const KnownRecords costs = costs_path.empty() ? KnownRecords() : KnownRecords::read(costs_path);
+  const KnownRecords* rate = costs_path.empty() ? nullptr : &costs;
   DryRunTotals all;
   for (const Reproduction& rep : reps) {
     DryRunTotals t;
     std::cout << "reproduction " << rep.name << " (" << rep.scale << " scale)\n";
     for (const SuiteSpec& suite : rep.suites) t += print_dry_run(std::cout, suite, RunTags{rep.name, rep.paper, rep.scale}, known);
-    print_dry_run_total(std::cout, rep.name, t, known, results);
+    print_dry_run_total(std::cout, rep.name, t, known, results, rate, costs_path);
     all += t;
   }
-  if (reps.size() > 1) print_dry_run_total(std::cout, "all", all, known, results);
+  if (reps.size() > 1) print_dry_run_total(std::cout, "all", all, known, results, rate, costs_path);
 }
 
 int report_folder(const std::string& dir, const std::string& suites_dir) {

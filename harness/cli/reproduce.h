@@ -40,7 +40,9 @@ int build_tables(const Reproduction& rep, const std::string& out_dir);
 
 // `--dry-run`: the jobs of the reproductions (dry_run.h) against out_dir/results.jsonl, a
 // total per reproduction and, for more than one, over all. Makes no scene, writes nothing.
-void dry_run_reproductions(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force);
+// `costs_path` (--costs): a results file whose records calibrate the estimates instead.
+void dry_run_reproductions(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force,
+                           const std::string& costs_path = "");
 
 // `vobench reproduce all`: every reproduction with a paper, validated first, run in name
 // order into the one folder out_dir/results.jsonl (record keys carry the reproduction), each

@@ -7,7 +7,8 @@
 2. `report` and `compare` take the merged file;
 3. merging a file with itself keeps every key once, no conflict (exit 0); a duplicate with
    other settings or another revision is a conflict named on stderr (exit 1);
-4. `--dry-run --ranks R` prints the makespan and the largest indivisible group.
+4. `--dry-run --ranks R` prints the makespan and the largest indivisible group; with
+   `--costs FILE` the total line is calibrated from FILE's records.
 
 usage: check_shards.py VOBENCH WORKDIR
 """
@@ -77,4 +78,9 @@ if len(kept) != len(serial) or kept[rec["key"]]["repeats"] != serial[rec["key"]]
 p = run([VOBENCH, "run", suite, "-o", out("serial"), "--dry-run", "--ranks", "3"], WHO)
 if "makespan on 3 ranks" not in p.stdout or "largest indivisible group" not in p.stdout:
     fail(WHO, f"--dry-run --ranks 3 printed no makespan:\n{p.stdout[-1500:]}")
+# --costs calibrates the total line too, from another file's records, for an empty -o file.
+p = run([VOBENCH, "run", suite, "-o", os.path.join(WORK, "empty.jsonl"), "--dry-run", "--ranks", "2",
+         "--costs", out("serial")], WHO)
+if f"records in {out('serial')}" not in p.stdout or "uncalibrated" in p.stdout:
+    fail(WHO, f"--dry-run --costs FILE did not calibrate the total from FILE:\n{p.stdout[-1500:]}")
 print("check_shards: ok")
