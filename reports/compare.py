@@ -28,7 +28,7 @@ import re
 import sys
 
 # Key parts that are settings, not identity (jobs.cpp); "s1" is the old supersample part.
-SETTING_PART = re.compile(r"^(r\d+w\d+|oracle|nooracle|ss\d+|s\d+|imgerr|t\d+)$")
+SETTING_PART = re.compile(r"^(r\d+w\d+|oracle|nooracle|ss\d+|s\d+|imgerr|t\d+|rgl)$")
 
 
 class BadInput(Exception):
@@ -80,7 +80,8 @@ def settings(r):
     return {"repeats": r.get("repeats"), "warmup": r.get("warmup"), "threads": r.get("threads"),
             "oracle": "oracle" in r and r["oracle"] is not None,
             "supersample": next((p for p in parts if re.match(r"^s{1,2}\d+$", p)), None),
-            "image_error": "image_error" in r, "parameters": r.get("parameters")}
+            "image_error": "image_error" in r, "parameters": r.get("parameters"),
+            "raster": r.get("raster") or "exact"}  # records before the gl rule sampled exactly
 
 
 def samples(t):

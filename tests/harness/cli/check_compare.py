@@ -7,8 +7,8 @@
 2. one exact orderer's record given a violation -> exit 1 naming it;
 3. one orderer's samples (and min/median) tripled -> exit 1 naming it (default thresholds; on
    fixed samples, so no timing noise is judged);
-4. records of different settings (repeats) -> refused (exit 2) naming the setting, and
-   compared with --allow-different-settings;
+4. records of different settings (repeats; the sampling rule, |rgl) -> refused (exit 2) naming
+   the setting, and compared with --allow-different-settings;
 5. a malformed line -> exit 2 naming file and line;
 6. results.gbench.json has Google Benchmark's structure.
 
@@ -96,6 +96,11 @@ expect([os.path.join(WORK, "steady.jsonl"), os.path.join(WORK, "tripled.jsonl")]
 
 other = run_suite("other", 4)
 expect([base, other], 2, "refused", "repeats")
+# The same jobs judged under the gl sampling rule (key part |rgl): paired, and refused as a
+# different setting rather than listed as unmatched records.
+gl = [dict(r, key=r["key"] + "|rgl", raster="gl") if "algorithm" in r else r for r in recs]
+write(os.path.join(WORK, "gl.jsonl"), gl)
+expect([base, os.path.join(WORK, "gl.jsonl")], 2, "refused", 'raster "exact" in base, "gl" in new')
 p = vob("compare", base, other, "--allow-different-settings", "--threshold", "100")
 if p.returncode != 0 or "Settings differ" not in p.stdout:
     fail(f"--allow-different-settings: exit {p.returncode}\n{p.stdout[-800:]}{p.stderr[-800:]}")
