@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "harness/raster/sample_centres.h"
+
 namespace vob::sxmpvo {
 
 BoxKind sample_box(const SampleFrame& frame, const ProjectedVertex* q, int n, SampleRect& box) {
@@ -14,16 +16,8 @@ BoxKind sample_box(const SampleFrame& frame, const ProjectedVertex* q, int n, Sa
     if (i == 0 || y < ly) ly = y;
     if (i == 0 || y > hy) hy = y;
   }
-  // PolygonRaster::may_cover_a_sample's margin and rounding: sample (sx, sy) has its centre
-  // at (sx + 0.5, sy + 0.5), and a face with no centre in this box is rejected there too.
-  const double m = 1e-6 * (1.0 + std::max({std::fabs(lx), std::fabs(hx), std::fabs(ly), std::fabs(hy)}));
-  const double x0 = std::ceil(lx - m - 0.5), x1 = std::floor(hx + m - 0.5);
-  const double y0 = std::ceil(ly - m - 0.5), y1 = std::floor(hy + m - 0.5);
-  if (!(x0 <= x1 && y0 <= y1 && x1 >= 0 && y1 >= 0 && x0 < frame.cols() && y0 < frame.rows()))
-    return BoxKind::None;
-  box = SampleRect{static_cast<int>(std::max(x0, 0.0)), static_cast<int>(std::max(y0, 0.0)),
-                   static_cast<int>(std::min(x1, frame.cols() - 1.0)),
-                   static_cast<int>(std::min(y1, frame.rows() - 1.0))};
+  // The samples PolygonRaster::may_cover_a_sample would let through (the same function).
+  if (!sample_centres_in(frame, lx, hx, ly, hy, box)) return BoxKind::None;
   const int64_t samples = int64_t(box.x1 - box.x0 + 1) * (box.y1 - box.y0 + 1);
   return samples <= kTinyMaxSamples ? BoxKind::Tiny : BoxKind::Large;
 }

@@ -5,6 +5,7 @@
 
 #include "harness/geometry/polygon_plane.h"
 #include "harness/geometry/predicates.h"
+#include "harness/raster/sample_centres.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -63,12 +64,8 @@ bool PolygonRaster::may_cover_a_sample(const SampleFrame& frame, const Vec3* v, 
     if (i == 0 || y < ly) ly = y;
     if (i == 0 || y > hy) hy = y;
   }
-  const double m = 1e-6 * (1.0 + std::max({std::fabs(lx), std::fabs(hx), std::fabs(ly), std::fabs(hy)}));
-  // Sample (sx, sy) has its centre at (sx + 0.5, sy + 0.5).
-  const double x0 = std::ceil(lx - m - 0.5), x1 = std::floor(hx + m - 0.5);
-  const double y0 = std::ceil(ly - m - 0.5), y1 = std::floor(hy + m - 0.5);
-  if (!(x0 <= x1 && y0 <= y1 && x1 >= 0 && y1 >= 0 && x0 < frame.cols() && y0 < frame.rows()))
-    return false;
+  SampleRect centres;
+  if (!sample_centres_in(frame, lx, hx, ly, hy, centres)) return false;
   // The same box bounds every triangle of the polygon: add_triangle then needs no clipping
   // of the sample grid by the edge half-planes (one extra sample absorbs rounding).
   box_ = SampleRect{floor_to_int(lx - 0.5) - 1, floor_to_int(ly - 0.5) - 1,
