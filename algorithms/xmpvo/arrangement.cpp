@@ -19,25 +19,9 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   for (size_t p = 0; p < points.size(); ++p)
     if (proj.point_used[p]) vertices.push_back({static_cast<int32_t>(p), -1, -1, -1, 0, proj.point_box(p)});
   projected_vertices = vertices.size();
-  // Unique projected edges (an edge shared by two exterior faces is one segment).
-  std::vector<uint64_t> keys;
-  keys.reserve(4 * proj.kept.size());
-  for (int32_t i : proj.kept) {
-    const int n = ext.size[i];
-    for (int k = 0; k < n; ++k) {
-      uint32_t a = ext.vertex[4 * i + k], b = ext.vertex[4 * i + (k + 1) % n];
-      if (a > b) std::swap(a, b);
-      keys.push_back((uint64_t(a) << 32) | b);
-    }
-  }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  edges.resize(keys.size());
-  std::vector<int32_t> ids(keys.size());
-  for (size_t e = 0; e < keys.size(); ++e) {
-    edges[e] = {static_cast<int32_t>(keys[e] >> 32), static_cast<int32_t>(keys[e] & 0xffffffffu)};
-    ids[e] = static_cast<int32_t>(e);
-  }
+  build_edges(ext, proj);
+  std::vector<int32_t> ids(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e) ids[e] = static_cast<int32_t>(e);
   box_.resize(edges.size());
   for (size_t e = 0; e < edges.size(); ++e) box_[e] = edge_box(proj, static_cast<int32_t>(e));
   grid.fill(ids, [&](int32_t e) { return box_[e]; }, edge_off, edge_items);
@@ -73,9 +57,55 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           if (f == 0 || (f == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])))
             continue;
           vertices.push_back(crossing_vertex(proj, a, b, cc, d, ba, bb));
+          vertices.back().e1 = edge_items[x];
+          vertices.back().e2 = edge_items[y];
         }
     }
+  index_crossings();
   return candidates;
+}
+
+// Unique projected edges (an edge shared by two exterior faces is one segment), with the
+// kept faces of each.
+void Arrangement::build_edges(const ExteriorFaces& ext, const Projection& proj) {
+  std::vector<std::pair<uint64_t, int32_t>> keys;
+  keys.reserve(4 * proj.kept.size());
+  for (int32_t i : proj.kept) {
+    const int n = ext.size[i];
+    for (int k = 0; k < n; ++k) {
+      uint32_t a = ext.vertex[4 * i + k], b = ext.vertex[4 * i + (k + 1) % n];
+      if (a > b) std::swap(a, b);
+      keys.push_back({(uint64_t(a) << 32) | b, i});
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  edges.clear();
+  edge_face_off.assign(1, 0);
+  edge_faces.resize(keys.size());
+  for (size_t k = 0; k < keys.size(); ++k) {
+    if (k == 0 || keys[k].first != keys[k - 1].first) {
+      edges.push_back({static_cast<int32_t>(keys[k].first >> 32),
+                       static_cast<int32_t>(keys[k].first & 0xffffffffu)});
+      edge_face_off.push_back(edge_face_off.back());
+    }
+    edge_faces[edge_face_off.back()++] = keys[k].second;
+  }
+}
+
+// The crossings on each edge, for the edge sweep of ray_queries.
+void Arrangement::index_crossings() {
+  edge_vertex_off.assign(edges.size() + 1, 0);
+  for (size_t v = projected_vertices; v < vertices.size(); ++v) {
+    ++edge_vertex_off[vertices[v].e1 + 1];
+    ++edge_vertex_off[vertices[v].e2 + 1];
+  }
+  for (size_t e = 1; e < edge_vertex_off.size(); ++e) edge_vertex_off[e] += edge_vertex_off[e - 1];
+  edge_vertices.resize(edge_vertex_off.back());
+  std::vector<int32_t> fill(edge_vertex_off.begin(), edge_vertex_off.end() - 1);
+  for (size_t v = projected_vertices; v < vertices.size(); ++v) {
+    edge_vertices[fill[vertices[v].e1]++] = static_cast<int32_t>(v);
+    edge_vertices[fill[vertices[v].e2]++] = static_cast<int32_t>(v);
+  }
 }
 
 // Where the crossing of (a, b) and (c, d) lies in projected doubles: the computed point
@@ -110,6 +140,8 @@ ArrVertex Arrangement::crossing_vertex(const Projection& proj, int32_t a, int32_
 
 size_t Arrangement::bytes() const {
   return edges.capacity() * 8 + (edge_off.capacity() + edge_items.capacity()) * 4 +
+         (edge_face_off.capacity() + edge_faces.capacity() + edge_vertex_off.capacity() +
+          edge_vertices.capacity()) * 4 +
          vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box);
 }
 

@@ -16,6 +16,7 @@ struct ArrVertex {
   int32_t a, b, c, d;
   double t;  // crossing: approximate parameter along (a, b), for depth keys only
   Box box;   // where its exact position lies, in projected doubles
+  int32_t e1 = -1, e2 = -1;  // crossing: the edge ids of (a, b) and (c, d)
 };
 
 struct Arrangement {
@@ -23,6 +24,8 @@ struct Arrangement {
   std::vector<int32_t> edge_off, edge_items;       // edges per bucket (CSR)
   std::vector<ArrVertex> vertices;                 // points first, then crossings
   size_t projected_vertices = 0;
+  // Per edge (CSR): its kept faces, and the crossings on it (vertex ids, either role).
+  std::vector<int32_t> edge_face_off, edge_faces, edge_vertex_off, edge_vertices;
   // Candidate pairs the double filter decided, and those it left to the exact test.
   int64_t crossings_filtered = 0, crossings_rechecked = 0;
 
@@ -33,6 +36,8 @@ struct Arrangement {
  private:
   std::vector<Box> box_;  // per edge, its projected box
   Box edge_box(const Projection& proj, int32_t e) const;
+  void build_edges(const ExteriorFaces& ext, const Projection& proj);
+  void index_crossings();
   ArrVertex crossing_vertex(const Projection& proj, int32_t a, int32_t b, int32_t c, int32_t d,
                             const Box& ba, const Box& bb) const;
 };

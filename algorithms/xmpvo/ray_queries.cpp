@@ -9,72 +9,11 @@
 #include <tbb/parallel_for.h>
 
 #include "algorithms/xmpvo/plane_keys.h"
+#include "algorithms/xmpvo/query_worker.h"
 #include "algorithms/xmpvo/uv_filter.h"
 
 namespace vob::xmpvo {
-namespace {
-
-// A face with the query vertex on its projected boundary: it covers the directions from
-// ray s counter-clockwise (in the sign convention of D) to ray t; a half-plane when the
-// vertex is inside an edge, then `ref` is a face vertex strictly inside it.
-struct Wedge {
-  int32_t face, s, t, ref;
-  bool half;
-  int32_t pos;  // number of inside faces in front of it
-};
-
-// One thread's share of the queries: its own scratch, counters and relation pairs; the
-// per-view input is read only.
-class Worker {
- public:
-  Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane)
-      : signs_(in.signs), in_(in), view_plane_(view_plane), face_stamp_(in.ext.face.size(), -1),
-        key_stamp_(in.ext.face.size(), -1), key_(in.ext.face.size()), touch_(in.ext.face.size()) {
-    signs_.side = signs_.dis_side = 0;
-  }
-  size_t bytes() const {
-    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() + key_stamp_.capacity()) * 4 + touch_.capacity() +
-           key_.capacity() * sizeof(PlaneKey) +
-           keys_.capacity() * 16 + wedges_.capacity() * sizeof(Wedge) + pairs_.capacity() * 8;
-  }
-  void query(int32_t vi) {
-    run_query(vi);
-    stats_.queries_rechecked += rechecked_;
-  }
-
-  QueryStats stats_;
-  Signs signs_;
-  std::vector<std::pair<int32_t, int32_t>> pairs_;
-
- private:
-  void run_query(int32_t vi);
-  int orient_at(const ArrVertex& v, int32_t p, int32_t q);
-  int depth(int32_t x, int32_t y);
-  void emit(int32_t nearer, int32_t farther);
-  bool covers_after(const ArrVertex& v, const Wedge& w, int32_t ray);
-  bool before(int32_t x, int32_t y);
-  void classify(const ArrVertex& v, int32_t f);
-  void sort_inside(const ArrVertex& v);
-  const Vec3& pt(int32_t p) const { return in_.ext.points[p]; }
-
-  const QueryInput& in_;
-  const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
-  RayTerms terms_;                            // the current vertex's ray
-  const PlaneKey& key(int32_t f);
-
-  std::vector<int32_t> inside_, rays_, sector_, face_stamp_, key_stamp_;
-  std::vector<PlaneKey> key_;  // per face, valid where key_stamp_ is the current query
-  std::vector<uint8_t> touch_;  // per face, valid with key_: touch bits
-  int32_t vi_ = -1;            // the current query
-  std::vector<std::pair<double, int32_t>> keys_;
-  std::vector<Wedge> wedges_;
-  const ArrVertex* current_ = nullptr;  // the vertex being queried
-  VertexRay ray_;                        // and its ray
-  // The vertex's projected position and radius for the double filter (uv_filter.h);
-  // filter_ off in double / compare modes and when the view's uv rounding is too large.
-  double xc_ = 0, yc_ = 0, rx_ = 0, ry_ = 0;
-  bool filter_ = false, rechecked_ = false;
-};
+namespace detail {
 
 // Sign of D(v, p, q): side of q relative to the projected line through v and p; with
 // (p, q) an edge, the side of v relative to the edge.
@@ -86,6 +25,20 @@ int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
              (p == v.d && q == v.c)) {
     return 0;
   }
+  if (memo_) {
+    // The sweep's crossings ask the same few signs (edges of four faces) repeatedly.
+    for (int k = 0; k < memo_n_; ++k) {
+      if (memo_p_[k] == p && memo_q_[k] == q) return memo_s_[k];
+      if (memo_p_[k] == q && memo_q_[k] == p) return -memo_s_[k];
+    }
+    const int s = orient_raw(v, p, q);
+    if (memo_n_ < kMemo) memo_p_[memo_n_] = p, memo_q_[memo_n_] = q, memo_s_[memo_n_++] = static_cast<int8_t>(s);
+    return s;
+  }
+  return orient_raw(v, p, q);
+}
+
+int Worker::orient_raw(const ArrVertex& v, int32_t p, int32_t q) {
   if (filter_) {
     const Projection& pr = in_.proj;
     const int s = uv_side(xc_, yc_, rx_, ry_, pr.uv[p], pr.uv[q], pr.slack);
@@ -125,6 +78,7 @@ int Worker::depth(int32_t x, int32_t y) {
   ++stats_.depth_full;
   const int r = depth_order(signs_.g, &e.corners[4 * x], e.size[x], &e.corners[4 * y], e.size[y]);
   stats_.depth_undecided += r == 0;
+  undecided_ |= r == 0;
   return r;
 }
 
@@ -148,9 +102,12 @@ void Worker::emit(int32_t nearer, int32_t farther) {
   const std::vector<int32_t>& cell = in_.ext.cell;
   if (facing[nearer] < 0 && facing[farther] > 0 && cell[nearer] != cell[farther]) {
     const std::pair<int32_t, int32_t> p{cell[nearer], cell[farther]};
-    // Neighbouring vertices repeat pairs: skip the most recent ones before the final sort.
-    for (size_t k = pairs_.size(), m = 0; k > 0 && m < 4; --k, ++m)
-      if (pairs_[k - 1] == p) return;
+    // Neighbouring vertices repeat pairs: a direct-mapped table of recent ones keeps most
+    // repeats out of the final sort.
+    const uint64_t key = (uint64_t(uint32_t(p.first)) << 32 | uint32_t(p.second)) + 1;
+    uint64_t& slot = seen_[(key * 0x9E3779B97F4A7C15ull) >> (64 - kSeenBits)];
+    if (slot == key) return;
+    slot = key;
     pairs_.push_back(p);
   }
 }
@@ -165,16 +122,27 @@ bool Worker::covers_after(const ArrVertex& v, const Wedge& w, int32_t ray) {
 }
 
 void Worker::run_query(int32_t vi) {
+  begin(vi);
+  const ArrVertex& v = *current_;
+  gather(v);
+  if (wedges_.empty()) return;
+  sort_inside(v);
+  emit_sectors(v);
+}
+
+// The query context of vertex vi: its ray, depth terms and filter position.
+void Worker::begin(int32_t vi) {
   const ArrVertex& v = in_.arr.vertices[vi];
   const Projection& proj = in_.proj;
   current_ = &v;
   vi_ = vi;
+  memo_ = false;
+  memo_n_ = 0;
   ray_ = v.b < 0 ? VertexRay::at_point(signs_.g, pt(v.a))
                  : VertexRay::at_crossing(signs_.g, pt(v.a), pt(v.b), pt(v.c), pt(v.d));
   terms_ = RayTerms::of(ray_);
   ++stats_.vertex_queries;
   filter_ = signs_.mode == Mode::Exact && proj.uv_filter;
-  rechecked_ = false;
   if (v.b < 0) {
     std::tie(xc_, yc_) = proj.uv[v.a];
     rx_ = ry_ = proj.slack;
@@ -184,8 +152,14 @@ void Worker::run_query(int32_t vi) {
     rx_ = 0.5 * (v.box.x1 - v.box.x0) + 1e-15 * std::fabs(xc_) + 1e-300;
     ry_ = 0.5 * (v.box.y1 - v.box.y0) + 1e-15 * std::fabs(yc_) + 1e-300;
   }
+}
+
+// The faces whose closed projection holds v: inside_ (unsorted) and wedges_.
+void Worker::gather(const ArrVertex& v) {
+  const Projection& proj = in_.proj;
   inside_.clear();
   wedges_.clear();
+  ++gather_;
   const BucketGrid& grid = proj.grid;
   const int c0 = grid.col(v.box.x0), c1 = grid.col(v.box.x1), r0 = grid.row(v.box.y0), r1 = grid.row(v.box.y1);
   for (int r = r0; r <= r1; ++r)
@@ -193,17 +167,20 @@ void Worker::run_query(int32_t vi) {
       const size_t cell = static_cast<size_t>(r) * grid.gw + c;
       for (int32_t x = proj.bucket_off[cell]; x < proj.bucket_off[cell + 1]; ++x) {
         const int32_t f = proj.bucket_faces[x];
-        if (face_stamp_[f] == vi) continue;
-        face_stamp_[f] = vi;
+        if (face_stamp_[f] == gather_) continue;
+        face_stamp_[f] = gather_;
         if (proj.face_box[f].overlaps(v.box)) classify(v, f);
       }
     }
-  if (wedges_.empty()) return;
-  sort_inside(v);
+}
+
+// The relations at v from inside_ (sorted front to back) and wedges_.
+void Worker::emit_sectors(const ArrVertex& v, bool pos_known) {
   const int32_t ni = static_cast<int32_t>(inside_.size());
   for (Wedge& w : wedges_) {
     int32_t lo = 0, hi = ni;
-    while (lo < hi) {
+    if (pos_known) lo = w.pos;
+    while (lo < hi && !pos_known) {
       const int32_t mid = (lo + hi) / 2;
       if (depth(w.face, inside_[mid]) < 0) hi = mid;
       else lo = mid + 1;
@@ -257,6 +234,9 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
     inside_.push_back(f);
     return;
   }
+  // A point on the boundary of a face it is not a vertex of: the edge sweep's premise fails.
+  if (v.b < 0 && p[0] != v.a && p[1] != v.a && p[2] != v.a && (n < 4 || p[3] != v.a))
+    degenerate_seen_ = true;
   const int count = __builtin_popcount(zeros);
   const int k = __builtin_ctz(zeros);
   Wedge w{f, 0, 0, 0, count == 1, 0};
@@ -269,12 +249,13 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
     // Zero sides on edges j-1 and j: v is on the ray of vertex j.
     int j = 0;
     while (j < n && zeros != ((1u << j) | (1u << ((j + n - 1) % n)))) ++j;
-    if (j == n) { ++stats_.degenerate; return; }
+    if (j == n) { ++stats_.degenerate; degenerate_seen_ = true; return; }
     const int32_t a = p[(j + n - 1) % n], b = p[(j + 1) % n];
     w.s = inner > 0 ? b : a;
     w.t = inner > 0 ? a : b;
   } else {
     ++stats_.degenerate;
+    degenerate_seen_ = true;
     return;
   }
   wedges_.push_back(w);
@@ -303,7 +284,7 @@ void Worker::sort_inside(const ArrVertex& v) {
       std::swap(inside_[m], inside_[m - 1]);
 }
 
-}  // namespace
+}  // namespace detail
 
 void QueryStats::add(const QueryStats& x) {
   vertex_queries += x.vertex_queries, sectors += x.sectors, sector_faces += x.sector_faces;
@@ -312,20 +293,40 @@ void QueryStats::add(const QueryStats& x) {
   side += x.side, dis_side += x.dis_side;
   side_filtered += x.side_filtered, side_rechecked += x.side_rechecked;
   queries_rechecked += x.queries_rechecked, depth_rechecked += x.depth_rechecked;
+  sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
+  sweep_fallbacks += x.sweep_fallbacks;
   scratch_bytes += x.scratch_bytes;
 }
 
 std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, QueryStats& stats) {
-  // Queries are independent: threads take runs of vertices; the relation set, sorted and
-  // deduplicated, and the summed counters do not depend on the split.
+  using detail::Worker;
+  // Queries are independent: threads take runs of vertices (or edges); the relation set,
+  // sorted and deduplicated, does not depend on the split.
+  const Arrangement& arr = in.arr;
   std::vector<ViewPlane> view_plane(in.plane.size());
   for (int32_t f : in.proj.kept) view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane); });
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, in.arr.vertices.size(), 512),
-                    [&](const tbb::blocked_range<size_t>& r) {
-                      Worker& w = workers.local();
-                      for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
-                    });
+  std::vector<int32_t> point_vertex(in.ext.points.size(), -1);
+  for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex); });
+  auto queries = [&](size_t v0, size_t v1) {
+    tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
+      Worker& w = workers.local();
+      for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
+    });
+  };
+  // Points first: they tell whether the view is free of the degeneracies the sweep
+  // cannot see (a point on another face's projected boundary).
+  queries(0, arr.projected_vertices);
+  bool degenerate = false;
+  for (const Worker& w : workers) degenerate |= w.degenerate_seen_;
+  if (!in.sweep || degenerate || in.signs.mode != Mode::Exact) {
+    queries(arr.projected_vertices, arr.vertices.size());
+  } else {
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, arr.edges.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+      Worker& w = workers.local();
+      for (size_t e = r.begin(); e < r.end(); ++e) w.sweep_edge(static_cast<int32_t>(e));
+    });
+  }
   std::vector<std::pair<int32_t, int32_t>> pairs;
   stats = QueryStats{};
   for (Worker& w : workers) {

@@ -24,6 +24,9 @@ struct QueryInput {
   const FacePlanes& face_planes;        // the scene's, for approximate depth keys
   const Projection& proj;
   const Arrangement& arr;
+  // Crossings by the edge sweep (edge_sweep.cpp) where the view allows; off: a full query
+  // at every vertex (the same relations, for tests and comparisons).
+  bool sweep = true;
 };
 
 struct QueryStats {
@@ -34,6 +37,8 @@ struct QueryStats {
   // queries with at least one such exact re-check.
   int64_t side_filtered = 0, side_rechecked = 0, queries_rechecked = 0;
   int64_t depth_rechecked = 0;  // depth comparisons the filtered plane keys left undecided
+  // Edges swept, crossings the sweep answered, edges that fell back to full queries.
+  int64_t sweep_edges = 0, sweep_crossings = 0, sweep_fallbacks = 0;
   size_t scratch_bytes = 0;        // the query threads' scratch
   void add(const QueryStats& o);
 };

@@ -124,6 +124,9 @@ void XmpvoOrderer::add_counters(Ordering& out, int64_t candidates) const {
   k["side_rechecked"] = static_cast<double>(stats_.side_rechecked);
   k["depth_rechecked"] = static_cast<double>(stats_.depth_rechecked);
   k["queries_rechecked"] = static_cast<double>(stats_.queries_rechecked);
+  k["sweep_edges"] = static_cast<double>(stats_.sweep_edges);
+  k["sweep_crossings"] = static_cast<double>(stats_.sweep_crossings);
+  k["sweep_fallbacks"] = static_cast<double>(stats_.sweep_fallbacks);
   k["degenerate_coverage"] = static_cast<double>(stats_.degenerate);
   k["relations"] = static_cast<double>(pairs_.size());
   k["grid_buckets"] = static_cast<double>(proj_.grid.buckets());

@@ -1,0 +1,119 @@
+// XMPVO's ray-query worker (internal to ray_queries.cpp and edge_sweep.cpp): one thread's
+// share of the queries, with its own scratch, counters and relation pairs; the per-view
+// input is read only. A full query (ray_queries.cpp) finds and sorts the faces covering
+// one vertex; the edge sweep (edge_sweep.cpp) carries the sorted covering faces along one
+// projected edge from crossing to crossing.
+#pragma once
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "algorithms/xmpvo/plane_keys.h"
+#include "algorithms/xmpvo/ray_queries.h"
+
+namespace vob::xmpvo::detail {
+
+// A face with the query vertex on its projected boundary: it covers the directions from
+// ray s counter-clockwise (in the sign convention of D) to ray t; a half-plane when the
+// vertex is inside an edge, then `ref` is a face vertex strictly inside it.
+struct Wedge {
+  int32_t face, s, t, ref;
+  bool half;
+  int32_t pos;  // number of inside faces in front of it
+};
+
+class Worker {
+ public:
+  Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane,
+         const std::vector<int32_t>& point_vertex)
+      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
+        face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
+        key_(in.ext.face.size()), touch_(in.ext.face.size()) {
+    signs_.side = signs_.dis_side = 0;
+  }
+  size_t bytes() const {
+    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
+            key_stamp_.capacity() + list_.capacity() + order_.capacity()) * 4 +
+           touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
+           wedges_.capacity() * sizeof(Wedge) + (pairs_.capacity() + seen_.capacity()) * 8;
+  }
+  void query(int32_t vi) {
+    rechecked_ = false;
+    run_query(vi);
+    stats_.queries_rechecked += rechecked_;
+  }
+  // The crossings edge e owns (it is their first edge), by the sweep; any case the sweep
+  // cannot decide (edge_sweep.cpp) falls back to full queries of the edge's crossings.
+  void sweep_edge(int32_t e);
+
+  QueryStats stats_;
+  Signs signs_;
+  std::vector<std::pair<int32_t, int32_t>> pairs_;
+  // A point vertex lies on the projected boundary of a face it is not a vertex of, or a
+  // face meets a vertex degenerately: the sweep's premises fail for this view.
+  bool degenerate_seen_ = false;
+
+ private:
+  void run_query(int32_t vi);
+  void begin(int32_t vi);
+  void gather(const ArrVertex& v);
+  // pos_known: every wedge's pos is set (the sweep's), else found by binary search.
+  void emit_sectors(const ArrVertex& v, bool pos_known = false);
+  int orient_at(const ArrVertex& v, int32_t p, int32_t q);
+  int orient_raw(const ArrVertex& v, int32_t p, int32_t q);
+  int depth(int32_t x, int32_t y);
+  void emit(int32_t nearer, int32_t farther);
+  bool covers_after(const ArrVertex& v, const Wedge& w, int32_t ray);
+  bool before(int32_t x, int32_t y);
+  void classify(const ArrVertex& v, int32_t f);
+  void sort_inside(const ArrVertex& v);
+  const Vec3& pt(int32_t p) const { return in_.ext.points[p]; }
+  // Edge sweep (edge_sweep.cpp).
+  bool sweep(int32_t e);
+  bool start_list(int32_t e);
+  bool order_crossings(int32_t e);
+  bool cross(int32_t e, int32_t vi);
+  int point_side(int32_t x, int32_t p, int32_t q);
+  size_t insert_at(int32_t f);
+  size_t place(int32_t f, int32_t guess);
+  bool edge_wedge(int32_t f, std::pair<int32_t, int32_t> pq);
+  int32_t track(int32_t f, int m, int32_t j);
+
+  const QueryInput& in_;
+  const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
+  const std::vector<int32_t>& point_vertex_;  // per exterior point, its vertex id or -1
+  RayTerms terms_;                            // the current vertex's ray
+  const PlaneKey& key(int32_t f);
+
+  std::vector<int32_t> inside_, rays_, sector_, face_stamp_, key_stamp_;
+  std::vector<PlaneKey> key_;  // per face, valid where key_stamp_ is the current query
+  std::vector<uint8_t> touch_;  // per face, valid with key_: touch bits
+  int32_t vi_ = -1;            // the current query
+  int32_t gather_ = 0;         // face_stamp_ of the current gather
+  std::vector<std::pair<double, int32_t>> keys_;
+  std::vector<Wedge> wedges_;
+  const ArrVertex* current_ = nullptr;  // the vertex being queried
+  VertexRay ray_;                        // and its ray
+  // The vertex's projected position and radius for the double filter (uv_filter.h);
+  // filter_ off in double / compare modes and when the view's uv rounding is too large.
+  double xc_ = 0, yc_ = 0, rx_ = 0, ry_ = 0;
+  bool filter_ = false, rechecked_ = false;
+  bool undecided_ = false;  // a depth comparison returned 0 (the sweep then falls back)
+  // The sweep's sorted covering faces of the open segment before the current crossing
+  // (faces of the swept edge excluded), and the edge's crossings in order.
+  std::vector<int32_t> list_, order_;
+  // The swept edge's faces and their positions in list_ (faces of list_ in front).
+  int32_t eface_[4] = {}, epos_[4] = {};
+  int n_eface_ = 0;
+  // orient_at's memo at one sweep crossing (memo_ on): (p, q) -> sign.
+  static constexpr int kMemo = 24;
+  bool memo_ = false;
+  int memo_n_ = 0;
+  int32_t memo_p_[kMemo] = {}, memo_q_[kMemo] = {};
+  int8_t memo_s_[kMemo] = {};
+  // emit's table of recent pairs (key + 1; 0 empty); cleared when pairs are rolled back.
+  static constexpr int kSeenBits = 12;
+  std::vector<uint64_t> seen_ = std::vector<uint64_t>(size_t{1} << kSeenBits, 0);
+};
+
+}  // namespace vob::xmpvo::detail
