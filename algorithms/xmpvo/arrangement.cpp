@@ -38,18 +38,34 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
     if (ac != 2 && ad != 2 && ac == ad) return 0;
     return ca != 2 && cb != 2 && ac != 2 && ad != 2 ? 1 : 2;
   };
+  // Each bucket's edges copied side by side first: the pair loop then reads no scattered
+  // memory. A pair is tested once, in the bucket of its boxes' common lower corner.
+  struct Item {
+    Box box;
+    int32_t a, b, id;
+  };
+  std::vector<Item> local;
   for (int r = 0; r < grid.gh; ++r)
     for (int c = 0; c < grid.gw; ++c) {
       const size_t cell = static_cast<size_t>(r) * grid.gw + c;
-      for (int32_t x = edge_off[cell]; x < edge_off[cell + 1]; ++x)
-        for (int32_t y = x + 1; y < edge_off[cell + 1]; ++y) {
-          const Box &ba = box_[edge_items[x]], &bb = box_[edge_items[y]];
+      local.clear();
+      for (int32_t x = edge_off[cell]; x < edge_off[cell + 1]; ++x) {
+        const int32_t id = edge_items[x];
+        local.push_back({box_[id], edges[id].first, edges[id].second, id});
+      }
+      const double cx0 = grid.gx0 + c * grid.cw, cy0 = grid.gy0 + r * grid.ch;
+      for (size_t x = 0; x < local.size(); ++x)
+        for (size_t y = x + 1; y < local.size(); ++y) {
+          const Item &ix = local[x], &iy = local[y];
+          const Box &ba = ix.box, &bb = iy.box;
           if (!ba.overlaps(bb)) continue;
-          const auto [a, b] = edges[edge_items[x]];
-          const auto [cc, d] = edges[edge_items[y]];
+          const int32_t a = ix.a, b = ix.b, cc = iy.a, d = iy.b;
           if (a == cc || a == d || b == cc || b == d) continue;  // no proper crossing
-          // Test each pair once: in the bucket of its boxes' common lower corner.
-          if (grid.col(std::max(ba.x0, bb.x0)) != c || grid.row(std::max(ba.y0, bb.y0)) != r) continue;
+          const double lx = std::max(ba.x0, bb.x0), ly = std::max(ba.y0, bb.y0);
+          // Both boxes reach this bucket, so the corner is at most in it; when it lies
+          // clearly inside, col/row need not be computed.
+          const bool inside = lx > cx0 + 1e-9 * grid.cw && ly > cy0 + 1e-9 * grid.ch;
+          if (!inside && (grid.col(lx) != c || grid.row(ly) != r)) continue;
           ++candidates;
           const int f = filter ? filtered_cross(a, b, cc, d) : 2;
           if (f != 2) ++crossings_filtered;
@@ -57,8 +73,8 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           if (f == 0 || (f == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])))
             continue;
           vertices.push_back(crossing_vertex(proj, a, b, cc, d, ba, bb));
-          vertices.back().e1 = edge_items[x];
-          vertices.back().e2 = edge_items[y];
+          vertices.back().e1 = ix.id;
+          vertices.back().e2 = iy.id;
         }
     }
   index_crossings();

@@ -90,10 +90,18 @@ bool Worker::start_list(int32_t e) {
   if (va < 0) return false;
   begin(va);
   const ArrVertex& v = *current_;
-  gather(v);
-  sort_inside(v);
-  list_ = inside_;
-  for (const Wedge& w : wedges_) {
+  // Edges are numbered by their first point, so consecutive sweeps mostly start at the
+  // same point: its covering faces are found and sorted once.
+  if (start_point_ != a) {
+    start_point_ = -1;
+    gather(v);
+    sort_inside(v);
+    start_inside_ = inside_;
+    start_wedges_ = wedges_;
+    if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes
+  }
+  list_ = start_inside_;
+  for (const Wedge& w : start_wedges_) {
     if (w.s == b || w.t == b) continue;  // a face of e
     if (w.half) return false;
     const int os = orient_at(v, w.s, b), ot = orient_at(v, b, w.t);

@@ -33,7 +33,8 @@ class Worker {
   }
   size_t bytes() const {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
-            key_stamp_.capacity() + list_.capacity() + order_.capacity()) * 4 +
+            key_stamp_.capacity() + list_.capacity() + order_.capacity() + start_inside_.capacity()) * 4 +
+           start_wedges_.capacity() * sizeof(Wedge) +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
            wedges_.capacity() * sizeof(Wedge) + (pairs_.capacity() + seen_.capacity()) * 8;
   }
@@ -102,6 +103,10 @@ class Worker {
   // The sweep's sorted covering faces of the open segment before the current crossing
   // (faces of the swept edge excluded), and the edge's crossings in order.
   std::vector<int32_t> list_, order_;
+  // The last sweep start: its point, covering faces sorted, and wedges.
+  int32_t start_point_ = -1;
+  std::vector<int32_t> start_inside_;
+  std::vector<Wedge> start_wedges_;
   // The swept edge's faces and their positions in list_ (faces of list_ in front).
   int32_t eface_[4] = {}, epos_[4] = {};
   int n_eface_ = 0;
