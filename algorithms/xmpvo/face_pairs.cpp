@@ -299,11 +299,12 @@ VertexRay VertexRay::at_crossing(const ViewGeometry& g, Vec3 a, Vec3 b, Vec3 c, 
   r.g = g;
   r.crossing = true;
   r.p[0] = a, r.p[1] = b, r.p[2] = c, r.p[3] = d;
-  const RayPoint<Fd> x = ray_point<Fd>(g, r.p, Vec3{});
-  store(det_d<Fd>(g, c, d, a), r.oa);
-  store(det_d<Fd>(g, c, d, b), r.ob);
-  store(x.w, r.w);
-  for (int i = 0; i < 3; ++i) store(x.h[i], r.h[i]);
+  // ray_point's arithmetic, its two determinants kept for oa and ob.
+  const Fd oa = det_d<Fd>(g, c, d, a), ob = det_d<Fd>(g, c, d, b);
+  store(oa, r.oa);
+  store(ob, r.ob);
+  store(oa - ob, r.w);
+  for (int i = 0; i < 3; ++i) store(oa * Fd(b[i]) - ob * Fd(a[i]), r.h[i]);
   return r;
 }
 

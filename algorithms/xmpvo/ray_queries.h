@@ -4,8 +4,9 @@
 // consecutive boundary directions is a region touching v; its faces are the inside ones
 // plus the boundary ones covering it, in depth order. Consecutive (back-facing nearer,
 // front-facing farther) pairs give "cell of the nearer in front of cell of the farther".
-// Queries run in parallel (TBB); the relation set and the counters do not depend on the
-// thread split.
+// Points get a full query, the crossings of each projected edge a sweep along it
+// (edge_sweep.cpp). Queries run in parallel (TBB); the relation set does not depend on the
+// thread split (some counters do: a thread reuses its last sweep start).
 #pragma once
 #include <cstdint>
 #include <utility>

@@ -27,8 +27,11 @@
 //       ones plus the boundary ones covering it, in depth order -- the ray shot just inside
 //       the region, symbolically. Two faces covering a region at v are ordered by where
 //       v's own ray meets their planes (exact, vertex_plane_order), and by the full
-//       depth_order only when they touch on that ray. Queries run in parallel (TBB); the
-//       relation set and the counters do not depend on the thread split.
+//       depth_order only when they touch on that ray. Points get such a full query; the
+//       crossings on each projected edge are answered by a sweep along it that keeps the
+//       covering faces sorted (edge_sweep.cpp), with full queries wherever its premises
+//       fail. Queries run in parallel (TBB); the relation set does not depend on the
+//       thread split.
 //       Consecutive (back-facing nearer, front-facing farther)
 //       pairs give "cell of the nearer in front of cell of the farther". Only pairs next to
 //       a boundary face are taken (inside faces' pairs straddling a boundary face
@@ -59,7 +62,10 @@
 // crossing_decisions. The filters' share: side_filtered / side_rechecked (side tests the
 // double filter decided / left to the exact predicate), crossings_filtered /
 // crossings_rechecked (candidate edge pairs), depth_rechecked (depth keys too close to
-// call), queries_rechecked (vertex queries with any exact re-check).
+// call), queries_rechecked (vertex queries or swept edges with any exact re-check);
+// sweep_edges, sweep_crossings (crossings the sweep answered), sweep_fallbacks (edges whose
+// crossings got full queries); vertex_queries counts every vertex a query or the sweep set
+// up (a crossing twice under the sweep, once per edge).
 #pragma once
 #include "harness/bench/registry.h"
 
