@@ -104,9 +104,13 @@ bool Worker::start_list(int32_t e) {
   for (const Wedge& w : start_wedges_) {
     if (w.s == b || w.t == b) continue;  // a face of e
     if (w.half) return false;
+    // The angle is below 180 degrees: outside it when either side is negative (b along
+    // the opposite of s or t, as on a straight grid line, included); b along s or t
+    // itself (a point on the other's edge) is left to the full queries.
     const int os = orient_at(v, w.s, b), ot = orient_at(v, b, w.t);
+    if (os < 0 || ot < 0) continue;
     if (os == 0 || ot == 0) return false;
-    if (os > 0 && ot > 0) list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(insert_at(w.face)), w.face);
+    list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(insert_at(w.face)), w.face);
   }
   const Arrangement& arr = in_.arr;
   n_eface_ = 0;
