@@ -30,8 +30,18 @@ class TriangleScan {
     const double ymax = frame.rows() + 1.0;
     for (int i = 0; i < 3; ++i) {
       const PolygonRaster::Edge& e = e_[i];
-      inv_a_[i] = e.a != 0 ? 1.0 / e.a : 0.0;
-      slack_[i] = 1e-12 * (std::fabs(e.b) * ymax + std::fabs(e.k) + e.eta) * std::fabs(inv_a_[i]) + 1e-9;
+      Row& r = row_[i];
+      r.flat = e.a == 0;
+      if (r.flat) continue;
+      // lo(y) = (-eta - b y - k) / a and hi(y) = (eta - b y - k) / a as linear forms in y;
+      // the slack bounds their rounding (relative to the terms' magnitudes) many times over.
+      const double inv_a = 1.0 / e.a;
+      r.slope = e.b * inv_a;
+      r.lo0 = (-e.eta - e.k) * inv_a;
+      r.hi0 = (e.eta - e.k) * inv_a;
+      r.finite = std::isfinite(r.slope) && std::isfinite(r.lo0) && std::isfinite(r.hi0);
+      const double slack = 1e-12 * (std::fabs(e.b) * ymax + std::fabs(e.k) + e.eta) * std::fabs(inv_a) + 1e-9;
+      r.slack = e.a > 0 ? slack : -slack;
     }
     return true;
   }
@@ -66,29 +76,38 @@ class TriangleScan {
   // incoming ranges); false when none is possible.
   bool row_range(int sy, int& p0, int& p1, int& c0, int& c1) const {
     const double y = sy + 0.5;
+    const int lim = frame_->cols();
     for (int i = 0; i < 3; ++i) {
       const PolygonRaster::Edge& e = e_[i];
-      const double base = e.b * y + e.k;
-      if (e.a == 0) {
+      const Row& r = row_[i];
+      if (r.flat) {
+        const double base = e.b * y + e.k;
         if (!(base >= -e.eta)) return false;
         if (!(base > e.eta)) c0 = 1, c1 = 0;  // within eta: exact tests
         continue;
       }
-      const double lo = (-e.eta - base) * inv_a_[i], hi = (e.eta - base) * inv_a_[i];
-      if (!(std::isfinite(lo) && std::isfinite(hi))) {
+      if (!r.finite) {
         c0 = 1, c1 = 0;
         continue;
       }
-      const double s = slack_[i];
-      if (e.a > 0) {
-        p0 = std::max(p0, ceil_to_int(lo - s - 0.5));
-        c0 = std::max(c0, floor_to_int(hi + s - 0.5) + 1);
-      } else {
-        p1 = std::min(p1, floor_to_int(lo + s - 0.5));
-        c1 = std::min(c1, ceil_to_int(hi - s - 0.5) - 1);
+      const double lo = r.lo0 - r.slope * y, hi = r.hi0 - r.slope * y;
+      if (r.slack > 0) {  // a > 0: x >= lo possible, x > hi certain
+        p0 = std::max(p0, -floor_near(-(lo - r.slack - 0.5), lim));
+        c0 = std::max(c0, floor_near(hi + r.slack - 0.5, lim) + 1);
+      } else {  // a < 0: x <= lo possible, x < hi certain
+        p1 = std::min(p1, floor_near(lo - r.slack - 0.5, lim));
+        c1 = std::min(c1, -floor_near(-(hi + r.slack - 0.5), lim) - 1);
       }
     }
     return p0 <= p1;
+  }
+  // floor(v) where it matters, for v compared with sample indices in [0, lim): clamped to
+  // [-lim - 4, lim + 2] and truncated after a shift that makes it positive (no libm floor; the
+  // shift's rounding, ~1e-12 samples, is far below the slack).
+  static int floor_near(double v, int lim) {
+    const double c = std::min(std::max(v, -double(lim) - 4.0), double(lim) + 2.0);
+    const double off = double(lim) + 8.0;
+    return int(c + off) - int(off);
   }
   // PolygonRaster's own decision at the sample.
   bool inside_exact(const Vec3& x) const {
@@ -102,7 +121,11 @@ class TriangleScan {
   const SampleFrame* frame_ = nullptr;
   PolygonRaster::DepthPlane plane_;
   PolygonRaster::Edge e_[3];
-  double inv_a_[3] = {}, slack_[3] = {};
+  struct Row {
+    double lo0 = 0, hi0 = 0, slope = 0, slack = 0;  // slack signed as a
+    bool flat = false, finite = true;
+  };
+  Row row_[3];
 };
 
 }  // namespace vob::havs
