@@ -47,8 +47,13 @@ void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<i
   });
   if (!frame.ortho()) {
     b.inv_len.resize(frame.num_samples());
+    b.len.resize(frame.num_samples());
     tbb::parallel_for(0, frame.rows(), [&](int sy) {
-      for (int sx = 0; sx < frame.cols(); ++sx) b.inv_len[frame.index(sx, sy)] = 1.0 / length(frame.x(sx, sy));
+      for (int sx = 0; sx < frame.cols(); ++sx) {
+        const double l = length(frame.x(sx, sy));  // PolygonRaster's |X|, bit for bit
+        b.len[frame.index(sx, sy)] = l;
+        b.inv_len[frame.index(sx, sy)] = 1.0 / l;
+      }
     });
   }
   // Two passes over chunks of the drawing order: count per (chunk, band), then place; the

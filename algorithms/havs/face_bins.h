@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "algorithms/havs/havs_frame.h"
+#include "algorithms/havs/triangle_scan.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
 
@@ -32,12 +33,12 @@ struct FaceBins {
   std::vector<int64_t> start;                // size bands + 1
   std::vector<BandItem> items;               // per band, in drawing order
   std::vector<ProjectedVertex> projected;    // per mesh point
-  std::vector<double> inv_len;               // per sample: 1 / |D| (perspective only)
+  std::vector<double> inv_len, len;          // per sample: 1 / |D| and |D| (perspective only)
   std::vector<SampleRect> rect;              // binning scratch: per face in drawing order
   std::vector<int64_t> slot;                 // binning scratch: per (chunk, band)
   size_t bytes() const {
     return items.capacity() * sizeof(BandItem) + projected.capacity() * sizeof(ProjectedVertex) +
-           inv_len.capacity() * 8 + rect.capacity() * sizeof(SampleRect) + (start.capacity() + slot.capacity()) * 8;
+           (inv_len.capacity() + len.capacity()) * 8 + rect.capacity() * sizeof(SampleRect) + (start.capacity() + slot.capacity()) * 8;
   }
 };
 
@@ -46,8 +47,11 @@ struct FaceBins {
 void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b);
 
 // Calls visit(local pixel index, entry) for every fragment of band q, in drawing order.
+// Triangles with every point in front of the eye take TriangleScan (the same fragments as
+// PolygonRaster, cheaper); `generic` forces PolygonRaster for all (the test's reference).
 template <class Visit>
-void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q, Visit&& visit) {
+void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q, Visit&& visit,
+               bool generic = false) {
   const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
   const SampleRect band{0, row0, frame.cols() - 1, row1 - 1};
   const bool ortho = frame.ortho();
@@ -55,7 +59,9 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
   const int cols = frame.cols();
   const Vec3* points = fd.scene.mesh().points.data();
   const double* inv_len = b.inv_len.data();
+  const double* len = b.len.data();
   PolygonRaster pr;
+  TriangleScan ts;
   Vec3 v[4];
   ProjectedVertex pv[4];
   const int64_t end = b.start[q + 1];
@@ -72,13 +78,26 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
     }
     const BandItem& item = b.items[it];
     const int n = item.ids[3] < 0 ? 3 : 4;
+    bool in_front = true;
     for (int i = 0; i < n; ++i) {
       v[i] = points[item.ids[i]];
       pv[i] = b.projected[item.ids[i]];
+      in_front = in_front && pv[i].in_front;
     }
-    if (!pr.setup(frame, v, n, pv)) continue;
     const int32_t f = item.face;
     const int32_t tag = f * 2 + fd.boundary[f];
+    if (n == 3 && in_front && !generic && frame.rule() == RasterRule::exact) {
+      if (!ts.setup(frame, v)) continue;
+      const FaceData::Linear& l1 = fd.scalar[f];
+      const double a1 = ortho ? l1.c : l1.c + dot(l1.g, eye), b1 = ortho ? dot(l1.g, fwd) : 0;
+      ts.scan(item.rect.intersect(band), len, [&](int sx, int sy, double t, const Vec3& x) {
+        const double lam = ortho ? 1.0 : t * inv_len[int64_t(sy) * cols + sx];
+        const double s = a1 + b1 * t + lam * dot(l1.g, x);
+        visit((sy - row0) * cols + sx, KEntry{float(t), clamp01(s), tag});
+      });
+      continue;
+    }
+    if (!pr.setup(frame, v, n, pv)) continue;
     // s(t) along the ray X: perspective p = eye + X t/|X|, orthographic p = X + fwd t.
     const auto along = [&](const FaceData::Linear& l, double& a, double& b_t) {
       a = ortho ? l.c : l.c + dot(l.g, eye);

@@ -98,34 +98,38 @@ bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n,
 }
 
 bool PolygonRaster::set_plane(const SampleFrame& frame, const Vec3* v, int n) {
+  return depth_plane(frame, v, n, plane_);
+}
+
+bool PolygonRaster::depth_plane(const SampleFrame& frame, const Vec3* v, int n, DepthPlane& out) {
+  Plane& plane = out.plane;
   Vec3 on_plane = v[0];
   if (n == 3) {
-    plane_.n = cross(v[1] - v[0], v[2] - v[0]);
+    plane.n = cross(v[1] - v[0], v[2] - v[0]);
   } else {
     const PolygonPlane p = newell_plane(v, 4);
-    plane_.n = p.normal;
+    plane.n = p.normal;
     on_plane = p.centroid;
   }
-  plane_.d = -dot(plane_.n, on_plane);
+  plane.d = -dot(plane.n, on_plane);
   if (frame.ortho()) {
-    const double nf = dot(plane_.n, frame.forward());
+    const double nf = dot(plane.n, frame.forward());
     if (nf == 0) return false;
-    inv_nf_ = 1.0 / nf;
+    out.inv_nf = 1.0 / nf;
   } else {
-    num_ = -dot(plane_.n, frame.eye() - on_plane);  // no cancellation of large terms
+    out.num = -dot(plane.n, frame.eye() - on_plane);  // no cancellation of large terms
   }
   return true;
 }
 
-bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-  const SampleFrame& fr = *frame_;
+bool PolygonRaster::triangle_edges(const SampleFrame& fr, const Vec3& p0, const Vec3& p1,
+                                   const Vec3& p2, Edge edges[3]) {
   const bool ortho = fr.ortho();
   const int sigma = facing_sign(p0, p1, p2, fr.eye(), ortho, fr.forward());
   if (sigma == 0) return false;  // edge-on: covers no ray
   // Inside for perspective is det(Pi - e, Pj - e, D) of sign -orient3d(P0, P1, P2, e);
   // for orthographic, ((Pj - Pi) x f) . (Pi - O) has the sign of ((P1-P0) x (P2-P0)) . f.
   const double facing = ortho ? sigma : -sigma;
-  Triangle& t = tri_[count_];
   const Vec3 p[3] = {p0, p1, p2};
   const Vec3 dx = fr.affine_dx(), dy = fr.affine_dy(), x0 = fr.affine_origin();
   for (int i = 0; i < 3; ++i) {
@@ -142,7 +146,7 @@ bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2)
       m = cross(pa - fr.eye(), pb - pa);
     }
     const double s = fwd ? facing : -facing;
-    Edge& e = t.e[i];
+    Edge& e = edges[i];
     e.m = m * s;
     e.c = c * s;
     e.a = dot(e.m, dx);
@@ -154,6 +158,13 @@ bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2)
     // down) makes it positive. a and b are exact negations across a shared edge.
     e.own = e.a > 0 || (e.a == 0 && (e.b < 0 || (e.b == 0 && dot(e.m, fr.forward()) > 0)));
   }
+  return true;
+}
+
+bool PolygonRaster::add_triangle(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const SampleFrame& fr = *frame_;
+  Triangle& t = tri_[count_];
+  if (!triangle_edges(fr, p0, p1, p2, t.e)) return false;
   if (have_box_) {  // all vertices in front of the eye: the projected box bounds it
     t.box = box_;
     ++count_;

@@ -78,6 +78,22 @@ class PolygonRaster {
     Edge e[3];
     SampleRect box;
   };
+  // The building blocks of setup(), public so that a caller scanning its own way (HAVS's
+  // k-buffer) uses the very same edge functions and depth plane, not a copy of the rule.
+  // Edge functions of triangle (p0, p1, p2) (box not set); false when seen edge-on.
+  static bool triangle_edges(const SampleFrame& frame, const Vec3& p0, const Vec3& p1,
+                             const Vec3& p2, Edge e[3]);
+  struct DepthPlane {
+    Plane plane;
+    double num = 0, inv_nf = 0;
+    // Ray parameter t at the sample with varying vector x (NaN when the ray misses it).
+    double depth(const Vec3& x, bool ortho) const {
+      if (ortho) return -(dot(plane.n, x) + plane.d) * inv_nf;
+      return num / dot(plane.n, x) * length(x);
+    }
+  };
+  // The plane of v[0..n) for depths; false when an orthographic view sees it edge-on.
+  static bool depth_plane(const SampleFrame& frame, const Vec3* v, int n, DepthPlane& out);
   // gl rule: pixel (sx, sy) is covered when c[i] - dcdx[i] * 256 sx + dcdy[i] * 256 sy > 0
   // for every edge (the fill rule's ownership is folded into c as llvmpipe does).
   struct GlTriangle {
@@ -114,15 +130,10 @@ class PolygonRaster {
     return true;
   }
   // Ray parameter t at the sample (NaN when the ray misses the plane).
-  double depth(const Vec3& x) const {
-    if (frame_->ortho()) return -(dot(plane_.n, x) + plane_.d) * inv_nf_;
-    const double den = dot(plane_.n, x);
-    return num_ / den * length(x);
-  }
+  double depth(const Vec3& x) const { return plane_.depth(x, frame_->ortho()); }
 
   const SampleFrame* frame_ = nullptr;
-  Plane plane_;
-  double num_ = 0, inv_nf_ = 0;
+  DepthPlane plane_;
   Triangle tri_[2];
   GlTriangle gl_tri_[2];
   bool gl_ = false;

@@ -1,0 +1,131 @@
+// HAVS's own scan of a triangle whose vertices are all in front of the eye (exact sampling
+// rule): the same samples and the same t as PolygonRaster::setup + scan, at less cost.
+//
+// The edge functions and the depth plane are PolygonRaster's own (triangle_edges,
+// depth_plane), so the rule is shared, not copied. What differs is how a row is walked.
+// PolygonRaster bounds a row by a conservative span and then evaluates the three exact edge
+// functions c + m . X at every sample. Here each edge also gives, per row, the samples where
+// its affine form a x + b y + k exceeds +eta (eta bounds |exact - affine|, the bound span()
+// already relies on): there the exact value is > 0 and the sample is inside that edge without
+// evaluating it. Only the samples within eta of an edge, in practice none but those an edge
+// passes through exactly, take the exact test, so the decisions are PolygonRaster's. Each
+// threshold is widened by a slack far above the rounding of its own evaluation.
+// Depths: t = num / (n . X) * |X| with |X| from a per-sample table of the same length(X).
+#pragma once
+#include <cmath>
+#include <cstdint>
+
+#include "harness/raster/polygon_raster.h"
+#include "harness/raster/sample_frame.h"
+
+namespace vob::havs {
+
+class TriangleScan {
+ public:
+  // v: the triangle, every vertex in front of the eye. False when it covers no ray.
+  bool setup(const SampleFrame& frame, const Vec3* v) {
+    frame_ = &frame;
+    if (!PolygonRaster::depth_plane(frame, v, 3, plane_)) return false;
+    if (!PolygonRaster::triangle_edges(frame, v[0], v[1], v[2], e_)) return false;
+    const double ymax = frame.rows() + 1.0;
+    for (int i = 0; i < 3; ++i) {
+      const PolygonRaster::Edge& e = e_[i];
+      Row& r = row_[i];
+      r.flat = e.a == 0;
+      if (r.flat) continue;
+      // lo(y) = (-eta - b y - k) / a and hi(y) = (eta - b y - k) / a as linear forms in y;
+      // the slack bounds their rounding (relative to the terms' magnitudes) many times over.
+      const double inv_a = 1.0 / e.a;
+      r.slope = e.b * inv_a;
+      r.lo0 = (-e.eta - e.k) * inv_a;
+      r.hi0 = (e.eta - e.k) * inv_a;
+      r.finite = std::isfinite(r.slope) && std::isfinite(r.lo0) && std::isfinite(r.hi0);
+      const double slack = 1e-12 * (std::fabs(e.b) * ymax + std::fabs(e.k) + e.eta) * std::fabs(inv_a) + 1e-9;
+      r.slack = e.a > 0 ? slack : -slack;
+    }
+    return true;
+  }
+
+  // emit(sx, sy, t, X) for every covered sample of `clip` (within the frame), row by row
+  // bottom up, left to right, as PolygonRaster::scan. len: |X| per sample (perspective).
+  template <class Emit>
+  void scan(const SampleRect& clip, const double* len, Emit&& emit) const {
+    const SampleFrame& fr = *frame_;
+    const bool ortho = fr.ortho();
+    const int cols = fr.cols();
+    for (int sy = clip.y0; sy <= clip.y1; ++sy) {
+      int p0 = clip.x0, p1 = clip.x1, c0 = clip.x0, c1 = clip.x1;
+      if (!row_range(sy, p0, p1, c0, c1)) continue;
+      const Vec3 row = fr.row_term(sy);
+      const double* lrow = ortho ? nullptr : len + int64_t(sy) * cols;
+      const auto sample = [&](int sx, const Vec3& x) {
+        const double t = ortho ? -(dot(plane_.plane.n, x) + plane_.plane.d) * plane_.inv_nf
+                               : plane_.num / dot(plane_.plane.n, x) * lrow[sx];
+        if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t, x);
+      };
+      for (int sx = p0; sx <= p1; ++sx) {
+        const Vec3 x = row + fr.col_term(sx);
+        if ((sx < c0 || sx > c1) && !inside_exact(x)) continue;
+        sample(sx, x);
+      }
+    }
+  }
+
+ private:
+  // Possible samples [p0, p1] and certainly inside ones [c0, c1] of row sy (clipped to the
+  // incoming ranges); false when none is possible.
+  bool row_range(int sy, int& p0, int& p1, int& c0, int& c1) const {
+    const double y = sy + 0.5;
+    const int lim = frame_->cols();
+    for (int i = 0; i < 3; ++i) {
+      const PolygonRaster::Edge& e = e_[i];
+      const Row& r = row_[i];
+      if (r.flat) {
+        const double base = e.b * y + e.k;
+        if (!(base >= -e.eta)) return false;
+        if (!(base > e.eta)) c0 = 1, c1 = 0;  // within eta: exact tests
+        continue;
+      }
+      if (!r.finite) {
+        c0 = 1, c1 = 0;
+        continue;
+      }
+      const double lo = r.lo0 - r.slope * y, hi = r.hi0 - r.slope * y;
+      if (r.slack > 0) {  // a > 0: x >= lo possible, x > hi certain
+        p0 = std::max(p0, -floor_near(-(lo - r.slack - 0.5), lim));
+        c0 = std::max(c0, floor_near(hi + r.slack - 0.5, lim) + 1);
+      } else {  // a < 0: x <= lo possible, x < hi certain
+        p1 = std::min(p1, floor_near(lo - r.slack - 0.5, lim));
+        c1 = std::min(c1, -floor_near(-(hi + r.slack - 0.5), lim) - 1);
+      }
+    }
+    return p0 <= p1;
+  }
+  // floor(v) where it matters, for v compared with sample indices in [0, lim): clamped to
+  // [-lim - 4, lim + 2] and truncated after a shift that makes it positive (no libm floor; the
+  // shift's rounding, ~1e-12 samples, is far below the slack).
+  static int floor_near(double v, int lim) {
+    const double c = std::min(std::max(v, -double(lim) - 4.0), double(lim) + 2.0);
+    const double off = double(lim) + 8.0;
+    return int(c + off) - int(off);
+  }
+  // PolygonRaster's own decision at the sample.
+  bool inside_exact(const Vec3& x) const {
+    for (const PolygonRaster::Edge& e : e_) {
+      const double v = e.c + dot(e.m, x);
+      if (v < 0 || (v == 0 && !e.own)) return false;
+    }
+    return true;
+  }
+
+  const SampleFrame* frame_ = nullptr;
+  PolygonRaster::DepthPlane plane_;
+  PolygonRaster::Edge e_[3];
+  struct Row {
+    double lo0 = 0, hi0 = 0, slope = 0, slack = 0;  // slack signed as a
+    bool flat = false, finite = true;
+  };
+  Row row_[3];
+};
+
+}  // namespace vob::havs
