@@ -4,7 +4,9 @@
 // mpvo      renumber=true curve=hilbert|morton: prepare first renumbers cells and points
 //           along a space-filling curve of the cell centroids (phase "renumber along a space
 //           curve", MpvoCore), so the DFS walks cells close in memory; orders and cycle
-//           reports are in input ids either way.
+//           reports are in input ids either way. keep_coherent=true (default): only when
+//           the curve's numbering has fewer far point reuses than the input's (phase
+//           "numbering coherence"; generated meshes are often numbered better already).
 //           Phases "I create partial order" (face arrows, sink cells), "II DFS" (from
 //           each sink cell in cell-id order, then from cells left unvisited by cycles).
 //           Exact on convex, acyclic meshes. Across the gaps of a nonconvex or disconnected
@@ -19,8 +21,8 @@
 // Both claim nothing (Claims{} = heuristic): a claim holds for every scene and most
 // scenes are not convex. Both report and break visibility cycles (detects_cycles).
 // Counters: exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots
-// (DFS roots needed after the sinks: cells whose front paths all end in cycles), and for
-// mpvonc exterior_cells.
+// (DFS roots needed after the sinks: cells whose front paths all end in cycles), renumbered
+// (0/1), far_reuse_input and far_reuse_curve (when measured), and for mpvonc exterior_cells.
 #pragma once
 #include "harness/bench/registry.h"
 

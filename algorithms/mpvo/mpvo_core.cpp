@@ -14,11 +14,15 @@ std::vector<ParamSpec> renumber_params() {
   return {ParamSpec::boolean("renumber", true,
                              "renumber cells and points along a space-filling curve of the cell "
                              "centroids in prepare (orders in input ids either way)"),
-          ParamSpec::choice("curve", "hilbert", {"hilbert", "morton"}, "the curve renumber follows")};
+          ParamSpec::choice("curve", "hilbert", {"hilbert", "morton"}, "the curve renumber follows"),
+          ParamSpec::boolean("keep_coherent", true,
+                             "with renumber: keep the input numbering unless the curve's has fewer "
+                             "far point reuses (cache-miss estimate in prepare; false: always renumber)")};
 }
 
 RenumberOption renumber_option(const ResolvedParams& p) {
-  return {p.get_bool("renumber"), p.get_choice("curve") == "morton" ? Curve::Morton : Curve::Hilbert};
+  return {p.get_bool("renumber"), p.get_choice("curve") == "morton" ? Curve::Morton : Curve::Hilbert,
+          p.get_bool("keep_coherent")};
 }
 
 void ExtraRelations::build_from_pairs(size_t cells,
@@ -52,16 +56,30 @@ size_t ExtraRelations::bytes() const {
 void MpvoCore::prepare(const Scene& scene, PhaseClock& clock, RenumberOption renumber) {
   Scene work = scene;
   std::vector<int32_t> input_id;
+  double far_input = -1, far_curve = -1;
   if (renumber.on) {
-    auto p = clock.phase("renumber along a space curve");
-    RenumberedMesh r = renumber_along_curve(scene.mesh(), renumber.curve);
-    input_id = std::move(r.input_cell);
-    work = Scene::from_mesh(scene.name(), std::move(r.mesh), scene.params());
+    std::vector<int32_t> order;
+    { auto p = clock.phase("renumber along a space curve"); order = curve_cell_order(scene.mesh(), renumber.curve); }
+    bool better = true;
+    if (renumber.keep_coherent) {
+      auto p = clock.phase("numbering coherence");
+      far_input = far_reuse_fraction(scene.mesh(), {});
+      far_curve = far_reuse_fraction(scene.mesh(), order);
+      better = far_curve < far_input;
+    }
+    if (better) {
+      auto p = clock.phase("renumber along a space curve");
+      RenumberedMesh r = permute_cells(scene.mesh(), order);
+      input_id = std::move(r.input_cell);
+      work = Scene::from_mesh(scene.name(), std::move(r.mesh), scene.params());
+    }
   }
   { auto p = clock.phase("unique faces"); work.faces(); }
   { auto p = clock.phase("face planes"); work.face_planes(); }
   bind(work);
   input_id_ = std::move(input_id);
+  far_input_ = far_input;
+  far_curve_ = far_curve;
 }
 
 void MpvoCore::bind(const Scene& scene) {
@@ -190,19 +208,22 @@ void MpvoCore::report_cycle(int32_t closing, Ordering& out) {
   out.cycles.add(members);
 }
 
-bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
-  if ((state_[root] & kStateMask) != kNew) return false;
+template <bool kExtra>
+void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
   const int32_t* cfo = faces_->cell_face_offsets.data();
   const int32_t* nbr = neighbour_.data();
   const uint8_t* behind = behind_mask_.data();
-  const bool has_extra = extra_ && !extra_->offsets.empty();
-  const int32_t* xoff = has_extra ? extra_->offsets.data() : nullptr;
-  const int32_t* xbehind = has_extra ? extra_->behind.data() : nullptr;
+  const int32_t* xoff = kExtra ? extra_->offsets.data() : nullptr;
+  const int32_t* xbehind = kExtra ? extra_->behind.data() : nullptr;
+  // With extra relations the state carries kHasExtra: step it by increments.
+  auto advance = [&](int32_t cell, uint8_t to) {
+    if constexpr (kExtra) ++state_[cell]; else state_[cell] = to;
+  };
   const int32_t* in_id = input_id_.empty() ? nullptr : input_id_.data();
 
   stack_.clear();
   stack_.push_back({root, 0});
-  ++state_[root];  // kOnStack
+  advance(root, kOnStack);
   while (!stack_.empty()) {
     const int32_t c = stack_.back().cell;
     int32_t next = stack_.back().next;
@@ -224,7 +245,7 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
       }
       if (child < 0) next = kExtraSlot;
     }
-    if (child < 0 && has_extra && (state_[c] & kHasExtra)) {
+    if (kExtra && child < 0 && (state_[c] & kHasExtra)) {
       const int32_t count = xoff[c + 1] - xoff[c];
       while (next - kExtraSlot < count) {
         const int32_t nb = xbehind[xoff[c] + (next++ - kExtraSlot)];
@@ -238,14 +259,22 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
     }
     if (child >= 0) {
       stack_.back().next = next;
-      ++state_[child];  // kOnStack
+      advance(child, kOnStack);
       stack_.push_back({child, 0});
     } else {
       out.order.push_back(in_id ? in_id[c] : c);
-      ++state_[c];  // kDone
+      advance(c, kDone);
       stack_.pop_back();
     }
   }
+}
+
+bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
+  if ((state_[root] & kStateMask) != kNew) return false;
+  if (extra_ && !extra_->offsets.empty())
+    dfs_walk<true>(root, out);
+  else
+    dfs_walk<false>(root, out);
   return true;
 }
 
@@ -270,6 +299,11 @@ void MpvoCore::add_counters(Ordering& out) const {
   out.counters["arrows"] = static_cast<double>(arrows_);
   out.counters["sink_cells"] = static_cast<double>(sinks_);
   out.counters["cycle_roots"] = static_cast<double>(cycle_roots_);
+  out.counters["renumbered"] = renumbered() ? 1.0 : 0.0;
+  if (far_input_ >= 0) {
+    out.counters["far_reuse_input"] = far_input_;
+    out.counters["far_reuse_curve"] = far_curve_;
+  }
 }
 
 size_t MpvoCore::bytes() const {

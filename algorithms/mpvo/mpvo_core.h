@@ -64,11 +64,15 @@ struct ExtraRelations {
   size_t bytes() const;
 };
 
-// The parameters `renumber` (bool, default true) and `curve` (hilbert|morton) of the
-// plugins that renumber through prepare(): declared here once for mpvo, mpvonc and sxmpvo.
+// The parameters `renumber` (bool, default true), `curve` (hilbert|morton) and
+// `keep_coherent` (bool, default true) of the plugins that renumber through prepare():
+// declared here once for mpvo, mpvonc and sxmpvo. With keep_coherent, prepare renumbers
+// only when the curve's numbering has fewer far point reuses than the input's
+// (far_reuse_fraction, space_curve.h): generators number some meshes better than a curve.
 struct RenumberOption {
   bool on = false;
   Curve curve = Curve::Hilbert;
+  bool keep_coherent = true;
 };
 std::vector<ParamSpec> renumber_params();
 RenumberOption renumber_option(const ResolvedParams& p);
@@ -101,6 +105,10 @@ class MpvoCore {
   // The scene the core works on: the input's, or its renumbered copy.
   const Scene& scene() const { return scene_; }
   bool renumbered() const { return !input_id_.empty(); }
+  // far_reuse_fraction of the input's numbering and of the curve's, as prepare measured
+  // them to choose (-1: not measured, renumber off or keep_coherent off).
+  double far_reuse_input() const { return far_input_; }
+  double far_reuse_curve() const { return far_curve_; }
   // Input cell id of a core cell id.
   int32_t input_id(int32_t c) const { return input_id_.empty() ? c : input_id_[c]; }
   size_t num_cells() const { return outbound_.size(); }
@@ -140,7 +148,8 @@ class MpvoCore {
     dfs_sinks(out);
     dfs_unvisited(out);
   }
-  // Adds exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots.
+  // Adds exact_sign_calls, double_sign_wrong, arrows, sink_cells, cycle_roots, renumbered
+  // (0 or 1) and, when prepare measured them, far_reuse_input and far_reuse_curve.
   void add_counters(Ordering& out) const;
 
   // Memory held: slot adjacency, face signs, per-cell arrow counts and masks, DFS flags
@@ -160,9 +169,15 @@ class MpvoCore {
   };
   int exact_sign(int32_t f, const Camera& view, Vec3 dir) const;
   void report_cycle(int32_t closing, Ordering& out);
+  // The DFS, with or without extra relations: without them no cell has kHasExtra, and the
+  // state is written with plain stores (kOnStack, kDone) rather than increments, which need
+  // the cell's state byte loaded first (a cache miss when the cell was visited long ago).
+  template <bool kExtra>
+  void dfs_walk(int32_t root, Ordering& out);
 
   Scene scene_;  // keeps the derived structures below alive
   std::vector<int32_t> input_id_;  // core cell id -> input cell id; empty: the same
+  double far_input_ = -1, far_curve_ = -1;
   const CellMesh* mesh_ = nullptr;
   const MeshFaces* faces_ = nullptr;
   const FacePlanes* planes_ = nullptr;

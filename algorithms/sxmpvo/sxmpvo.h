@@ -1,8 +1,9 @@
 // Plugin `sxmpvo`: Cook, Max, Silva and Williams' Scanning Exact Meshed Polyhedra
 // Visibility Ordering (IEEE TVCG 2004, sections 4 and 5), on MpvoCore.
 //
-// sxmpvo    renumber=true curve=hilbert: cells and points renumbered in prepare, as
-//           mpvo (mpvo.h); orders and cycle reports are in input ids. The image resolution is the view's viewport; samples are the
+// sxmpvo    renumber=true curve=hilbert keep_coherent=true: cells and points renumbered in
+//           prepare when the curve is more coherent than the input's numbering, as mpvo
+//           (mpvo.h); orders and cycle reports are in input ids. The image resolution is the view's viewport; samples are the
 //           pixel centres of the shared rasterizer (harness/raster/polygon_raster.h, S = 1),
 //           the same samples the oracle checks at its default S = 1.
 //

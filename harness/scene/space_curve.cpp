@@ -176,6 +176,25 @@ CellMesh permute_mesh(const CellMesh& mesh, const std::vector<int32_t>& cell_ord
   return out;
 }
 
+double far_reuse_fraction(const CellMesh& mesh, const std::vector<int32_t>& cell_order, int32_t near) {
+  const size_t nc = mesh.num_cells();
+  if (!cell_order.empty() && cell_order.size() != nc)
+    throw std::invalid_argument("far_reuse_fraction: wrong size");
+  std::vector<int32_t> last(mesh.num_points(), -1);  // new id of the last cell using a point
+  int64_t reuses = 0, far = 0;
+  for (size_t c = 0; c < nc; ++c) {
+    const int32_t old = cell_order.empty() ? static_cast<int32_t>(c) : cell_order[c];
+    const int32_t* p = mesh.cell_points(old);
+    for (int k = 0, n = mesh.cell_size(old); k < n; ++k) {
+      const int32_t prev = std::exchange(last[p[k]], static_cast<int32_t>(c));
+      if (prev < 0) continue;
+      ++reuses;
+      far += static_cast<int32_t>(c) - prev > near;
+    }
+  }
+  return reuses ? static_cast<double>(far) / static_cast<double>(reuses) : 0.0;
+}
+
 RenumberedMesh renumber_along_curve(const CellMesh& mesh, Curve curve) {
   return permute_cells(mesh, curve_cell_order(mesh, curve));
 }

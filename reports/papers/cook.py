@@ -123,10 +123,11 @@ def table4(records, paper, doc):
     ours = doc.table(f"Ours ({cond}): seconds per frame, {window_text(records)} (mean of {nviews} views, "
                      f"median of {records[0]['repeats']} runs)",
                      ["data set", "n", "SXMPVO", "MPVONC", "vtk-centroid", "SXMPVO/MPVONC", "SXMPVO/VTK"])
-    rows = []
+    rows, recs_of = [], {}
     for row, recs in by_row(records):
         t = {o: m.mean(m.select(recs, orderer=o), m.frame_seconds) for o in ("sxmpvo", "mpvonc", "vtk-centroid")}
         rows.append((row, recs[0]["n"], t))
+        recs_of[row] = recs
         ours.row(row, recs[0]["n"], t["sxmpvo"], t["mpvonc"], t["vtk-centroid"], m.ratio(t["sxmpvo"], t["mpvonc"]),
                  m.ratio(t["sxmpvo"], t["vtk-centroid"]))
     helices = sorted((r for r in rows if r[0].startswith("helix") and r[2]["sxmpvo"] is not None
@@ -159,6 +160,16 @@ def table4(records, paper, doc):
                   ours=q, paper=f"{pq[near]:.2f} at n = {near:,} (Table 4)",
                   criterion=f"ours <= {hi:.2f} (the largest ratio the paper calls about the same: Table 4 at n = {hi_n:,})",
                   holds=None if q is None else q <= hi)
+        # Table 4's ratios from 1M cells on are 1.01 to 1.20: issue 16 asks for that band at every size above
+        # 100k, on the mean and on the worst view, which is stricter than the paper's own 1.71.
+        worst = row_max_view_ratio(recs_of[row])
+        doc.claim(f"our check, not a claim of the paper (issue 16): SXMPVO/MPVONC within Table 4's large-mesh band "
+                  f"on {row} (n = {n:,}), mean over views and worst view "
+                  f"({'-' if worst is None else '%.2f' % worst})",
+                  ours=q, paper=f"{min(pq[k] for k in pq if k >= 1000000):.2f} to "
+                  f"{max(pq[k] for k in pq if k >= 1000000):.2f} (Table 4, n >= 1,000,000)",
+                  criterion="ours <= 1.20 and worst view <= 1.20",
+                  holds=None if q is None or worst is None else (q <= 1.2 and worst <= 1.2))
     slower = [m.ratio(t["sxmpvo"], t["mpvonc"]) for _, _, t in rows]
     slower = [q for q in slower if q is not None]
     doc.claim("SXMPVO is always slower than MPVONC, for every data set and view (smallest SXMPVO/MPVONC over "
@@ -184,6 +195,17 @@ def table4(records, paper, doc):
                       "seconds per frame (%s)" % ("fitted windows" if fitted(records) else f"{w}x{h}"),
                       f"SXMPVO vs MPVONC by mesh size (fits dotted; {cond})",
                       f"{name}.png", "time against n over the helices, with linear fits")
+
+
+def row_max_view_ratio(recs):
+    """The largest SXMPVO / MPVONC frame time over the views of one data set."""
+    out = []
+    for v in {r["view_index"] for r in recs}:
+        q = m.ratio(m.mean(m.select(recs, orderer="sxmpvo", view_index=v), m.frame_seconds),
+                    m.mean(m.select(recs, orderer="mpvonc", view_index=v), m.frame_seconds))
+        if q is not None:
+            out.append(q)
+    return max(out) if out else None
 
 
 def min_view_ratio(records):

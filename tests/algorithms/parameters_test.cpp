@@ -156,7 +156,7 @@ TEST(ResolvedParameters, EveryDeclaredParameterWithItsValueNumbersAsNumbers) {
   const nlohmann::json j = resolved_parameters("bsp-xmpvo:sample=100");
   EXPECT_EQ(j, (nlohmann::json{{"candidates", 5}, {"sample", 100}, {"split_weight", 8}, {"stop", true}}));
   EXPECT_TRUE(j.at("sample").is_number_integer());
-  EXPECT_EQ(resolved_parameters("mpvo:renumber=false"), (nlohmann::json{{"curve", "hilbert"}, {"renumber", false}}));
+  EXPECT_EQ(resolved_parameters("mpvo:renumber=false"), (nlohmann::json{{"curve", "hilbert"}, {"keep_coherent", true}, {"renumber", false}}));
   EXPECT_TRUE(resolved_parameters("mpvo").at("renumber").is_boolean());
 }
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdlib>
 #include <numeric>
+#include <random>
 #include <utility>
 
 #include "harness/scene/space_curve.h"
@@ -119,4 +120,25 @@ TEST(SpaceCurve, PermuteMeshAppliesBothOrdersAndRejectsNonPermutations) {
   cells[0] = cells[1];
   EXPECT_THROW(permute_mesh(m, cells, points), std::invalid_argument);
   EXPECT_THROW(permute_cells(m, {0}), std::invalid_argument);
+}
+
+// far_reuse_fraction (with near = 1024 cells, for a test-sized mesh): a block numbered slab
+// by slab (a point's users at most one 600-cell slab apart) has no far reuse; shuffled, a
+// point's ~20 users lie about 3,000 apart, mostly far; the curve's order of it has few again.
+TEST(SpaceCurve, FarReuseFractionSeparatesCoherentFromScatteredNumbering) {
+  const CellMesh m = tet_block(10, 10, 100);  // 60,000 tets
+  constexpr int32_t kNear = 1024;
+  EXPECT_EQ(far_reuse_fraction(m, {}, kNear), 0.0);
+  std::vector<int32_t> scattered(m.num_cells());
+  std::iota(scattered.begin(), scattered.end(), 0);
+  std::shuffle(scattered.begin(), scattered.end(), std::mt19937(5));  // a mesher's disorder
+  std::vector<int32_t> points(m.num_points());
+  std::iota(points.begin(), points.end(), 0);
+  const CellMesh s = permute_mesh(m, scattered, points);
+  const double far_scattered = far_reuse_fraction(s, {}, kNear);
+  EXPECT_GT(far_scattered, 0.5);
+  EXPECT_DOUBLE_EQ(far_reuse_fraction(m, scattered, kNear), far_scattered);  // the same numbering
+  EXPECT_LT(far_reuse_fraction(s, curve_cell_order(s, Curve::Hilbert), kNear), 0.2);
+  EXPECT_LT(far_reuse_fraction(s, {}), far_scattered);  // the default near (kNearCells) is larger
+  EXPECT_THROW(far_reuse_fraction(m, {0, 1}), std::invalid_argument);
 }
