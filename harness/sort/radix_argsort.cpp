@@ -23,6 +23,12 @@ constexpr size_t kMinBlock = size_t(1) << 15;  // below this a block is not wort
 // scatters were 2/3 of the centroid frame). Kept while the top digit has <= kMaxDigitBits.
 constexpr int kLowBits = 16;
 constexpr size_t kSmallBucket = 48;  // below this a bucket is insertion sorted
+// Ranges of 17 to 22 bits (two 11-bit digits) take the two-level path too from this many
+// keys on: their two scatters of 2^11 write streams each through memory cost more than one
+// scatter of 2^kTopBits and the buckets in cache (view 1 of the 1M helix, all depths in one
+// binade of float: 22 bits, its sort 7.0-8.2 ms against 4.2-4.5 ms on the two-level path).
+constexpr size_t kTwoLevelMinKeys = size_t(1) << 17;
+constexpr int kTopBits = 7;  // the two-level path's smallest top digit (23 bits: as before)
 
 // Counts of each of the first kPasses digits of (key - mn): table p at c + p * radix.
 // Neighbouring cells have near keys, so consecutive increments hit one counter; two sets of
@@ -61,8 +67,8 @@ void scatter(const uint32_t* k, const uint64_t* sp, uint64_t* dp, int32_t* out, 
 }
 
 // Sorts the m pairs of one bucket (key << 32 | id, in id order within equal keys) by their
-// low kLowBits of (key - mn), stably, and writes their ids to out.
-void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int32_t* out, std::vector<uint64_t>& tmp) {
+// low `low` bits (<= kLowBits) of (key - mn), stably, in two passes, and writes their ids.
+void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* out, std::vector<uint64_t>& tmp) {
   if (m < kSmallBucket) {
     uint64_t a[kSmallBucket];
     for (size_t i = 0; i < m; ++i) {  // stable insertion by key (the high word)
@@ -74,23 +80,25 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int32_t* out, std::
     for (size_t i = 0; i < m; ++i) out[i] = static_cast<int32_t>(static_cast<uint32_t>(a[i]));
     return;
   }
+  const int w0 = (low + 1) / 2;
+  const uint32_t m0 = (1u << w0) - 1, m1 = (1u << (low - w0)) - 1;
   uint32_t c0[256] = {}, c1[256] = {};
   for (size_t i = 0; i < m; ++i) {
     const uint32_t x = static_cast<uint32_t>(src[i] >> 32) - mn;
-    ++c0[x & 0xff];
-    ++c1[(x >> 8) & 0xff];
+    ++c0[x & m0];
+    ++c1[(x >> w0) & m1];
   }
   uint32_t s0 = 0, s1 = 0;
-  for (int d = 0; d < 256; ++d) {
+  for (uint32_t d = 0; d <= m0; ++d) {
     const uint32_t a = c0[d], b = c1[d];
     c0[d] = s0, c1[d] = s1;
     s0 += a, s1 += b;
   }
   if (tmp.size() < m) tmp.resize(m);
-  for (size_t i = 0; i < m; ++i) tmp[c0[(static_cast<uint32_t>(src[i] >> 32) - mn) & 0xff]++] = src[i];
+  for (size_t i = 0; i < m; ++i) tmp[c0[(static_cast<uint32_t>(src[i] >> 32) - mn) & m0]++] = src[i];
   for (size_t i = 0; i < m; ++i) {
     const uint64_t p = tmp[i];
-    out[c1[((static_cast<uint32_t>(p >> 32) - mn) >> 8) & 0xff]++] = static_cast<int32_t>(static_cast<uint32_t>(p));
+    out[c1[((static_cast<uint32_t>(p >> 32) - mn) >> w0) & m1]++] = static_cast<int32_t>(static_cast<uint32_t>(p));
   }
 }
 
@@ -134,8 +142,10 @@ void RadixArgsort::sort_keys(int32_t* out) {
     return;
   }
   const int np = (bits + kMaxDigitBits - 1) / kMaxDigitBits;
-  if (np >= 3 && bits - kLowBits <= kMaxDigitBits) {
-    sort_two_level(out, mn, bits);
+  if (bits > kLowBits && bits - kLowBits <= kMaxDigitBits && (np >= 3 || n >= kTwoLevelMinKeys)) {
+    // The top digit: the bits above kLowBits, at least kTopBits (few write streams; bits
+    // > kLowBits leaves a low part of 10 bits or more).
+    sort_two_level(out, mn, bits, std::max(bits - kLowBits, kTopBits));
     return;
   }
   const int width = (bits + np - 1) / np;
@@ -191,10 +201,10 @@ void RadixArgsort::sort_keys(int32_t* out) {
   }
 }
 
-void RadixArgsort::sort_two_level(int32_t* out, uint32_t mn, int bits) {
+void RadixArgsort::sort_two_level(int32_t* out, uint32_t mn, int bits, int top) {
   const size_t n = n_;
-  const int shift = kLowBits;
-  const size_t radix = size_t(1) << (bits - kLowBits);
+  const int shift = bits - top;
+  const size_t radix = size_t(1) << top;
   const uint32_t mask = static_cast<uint32_t>(radix - 1);
   passes_ = 3;  // one scatter through memory, two in cache
   pairs_.reserve(2 * n);
@@ -231,7 +241,7 @@ void RadixArgsort::sort_two_level(int32_t* out, uint32_t mn, int bits) {
   const auto buckets = [&](size_t d0, size_t d1) {
     thread_local std::vector<uint64_t> tmp;
     for (size_t d = d0; d < d1; ++d)
-      sort_bucket(dp + bucket_start_[d], bucket_start_[d + 1] - bucket_start_[d], mn, out + bucket_start_[d], tmp);
+      sort_bucket(dp + bucket_start_[d], bucket_start_[d + 1] - bucket_start_[d], mn, shift, out + bucket_start_[d], tmp);
   };
   if (nb == 1) {
     buckets(0, radix);

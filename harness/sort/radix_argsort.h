@@ -3,8 +3,9 @@
 // keys differ (key - min, digits of <= 11 bits: a 22-bit range takes 2 passes), the ids
 // 0..n-1 made in the first scatter and the last pass writing the caller's output (no key
 // transform pass, no keys written back, no copy). Ranges of 23 to 27 bits (1M view depths
-// of a mesh span ~24) take one scatter by their top bits and then sort each bucket by its
-// low 16 bits in cache: two trips through memory instead of three.
+// of a mesh span ~24) take one scatter by their top bits (at least 7) and then sort each
+// bucket by its low (at most 16) bits in cache: two trips through memory instead of three;
+// so do ranges of 17 to 22 bits from 2^17 keys on, instead of two 11-bit scatters.
 // Blocks run in parallel with TBB when the global thread limit allows; per-block counts keep
 // it stable, so the order never depends on the thread count.
 #pragma once
@@ -77,8 +78,8 @@ class RadixArgsort {
 
  private:
   void plan(size_t n);         // sizes the buffers, picks the blocks from the thread limit
-  // Ranges of 23 to 27 bits: one scatter by the top bits, then each bucket in cache.
-  void sort_two_level(int32_t* out, uint32_t mn, int bits);
+  // Ranges of 17 to 27 bits: one scatter by the `top` bits, then each bucket in cache.
+  void sort_two_level(int32_t* out, uint32_t mn, int bits, int top);
 
   template <class F>
   void for_blocks(F&& f) {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <vector>
 
+#include "datasets/datasets.h"
 #include "harness/bench/registry.h"
 #include "harness/scene/scene.h"
 #include "harness/sort/radix_argsort.h"
@@ -95,6 +96,49 @@ BENCHMARK(BM_CentroidKeySortFused)
     ->Args({1, 2})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The keys and the sort apart on the 1M helix of centroid-peer-1m-t1.json, per view of its
+// 3 (view 1 spans 22 bits of float depth, views 0 and 2 span 23: issue 16), one thread.
+// range(0): view, range(1): 0 = eye-distance key, 1 = view-depth key, range(2): 0 = time
+// the keys, 1 = time the sort (the keys made outside the timing).
+void BM_CentroidHelixSort(benchmark::State& state) {
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+  static const vob::Scene scene = [] {
+    vob::Params p("helix");
+    p.set("cells", "1003520");
+    p.set("faces", "41472");
+    return vob::make_dataset("helix", p);
+  }();
+  const std::vector<vob::Vec3>& cs = scene.cell_centroids().points;
+  const vob::Vec3* c = cs.data();
+  const vob::Camera view = vob::fibonacci_view(scene.bounds(), 3, static_cast<int>(state.range(0)));
+  const vob::Vec3 eye = view.eye, fwd = view.forward();
+  const bool by_view = state.range(1) == 1, time_sort = state.range(2) == 1;
+  const size_t n = cs.size();
+  vob::RadixArgsort sort;
+  std::vector<int32_t> out(n);
+  const auto keys = [&] {
+    if (by_view) sort.make_keys(n, [=](size_t i) { return vob::float_sort_key(static_cast<float>(-dot(c[i] - eye, fwd))); });
+    else sort.make_keys(n, [=](size_t i) { return vob::float_sort_key(static_cast<float>(-length(c[i] - eye))); });
+  };
+  for (auto _ : state) {
+    if (time_sort) {
+      state.PauseTiming();
+      keys();
+      state.ResumeTiming();
+      sort.sort_keys(out.data());
+    } else {
+      keys();
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.counters["passes"] = sort.passes();
+}
+BENCHMARK(BM_CentroidHelixSort)
+    ->ArgNames({"view", "viewkey", "sort"})
+    ->ArgsProduct({{0, 1, 2}, {0, 1}, {0, 1}})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime();
 
 // range(0): the thread limit.
 void BM_CentroidPeer(benchmark::State& state, const char* spec) {

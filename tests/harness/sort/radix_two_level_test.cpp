@@ -1,5 +1,6 @@
-// RadixArgsort's two-level path (ranges of 23 to 27 bits: one scatter by the top digit, then
-// each bucket by its low 16 bits in cache) against std::stable_sort: clustered keys (a few
+// RadixArgsort's two-level path (ranges of 23 to 27 bits, and of 17 to 22 bits from 2^17
+// keys on: one scatter by the top digit, then each bucket by its low bits in cache) against
+// std::stable_sort: clustered keys (a few
 // huge buckets, many empty), buckets around the insertion-sort size, the edges of the
 // range where the path is taken, at 1 and 2 threads; and float view depths as the centroid
 // orderer makes them.
@@ -47,19 +48,37 @@ TEST(RadixTwoLevel, ClusteredKeysAndRangeEdges) {
         EXPECT_EQ(sort.passes(), 3) << bits;
       }
     }
+    // 17 to 22 bits: the two-level path only from 2^17 keys on (odd and even low parts).
+    for (int bits : {17, 18, 21, 22}) {
+      for (size_t n : {5000u, 200000u}) {
+        const uint32_t span = (1u << bits) - 1, base = 0xbf000000u;
+        std::normal_distribution<double> g(span / 3.0, span / 16.0);
+        std::vector<uint32_t> keys(n);
+        for (uint32_t& k : keys) k = base + uint32_t(std::clamp(g(rng), 0.0, double(span)));
+        keys[1] = base, keys[n - 2] = base + span;
+        keys[n / 2] = keys[n / 5];
+        expect_sorted_like_stable(sort, keys, "two digits");
+        EXPECT_EQ(sort.passes(), n >= (1u << 17) ? 3 : 2) << bits << " n " << n;
+      }
+    }
   }
 }
 
 TEST(RadixTwoLevel, ViewDepthsAsTheCentroidOrdererSortsThem) {
   // ~1M-cell-like depth keys: float(-depth) of points on a slab, many equal after rounding.
   std::mt19937 rng(3);
-  std::uniform_real_distribution<double> u(2.0, 9.0);
-  std::vector<uint32_t> keys(300000);
-  for (uint32_t& k : keys) k = float_sort_key(static_cast<float>(-u(rng)));
-  RadixArgsort sort;
-  for (int threads : {1, 2}) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    expect_sorted_like_stable(sort, keys, "depths");
+  // (2, 9): three binades, ~24 bits; (17, 30): one binade, 22 bits, like view 1 of the 1M
+  // helix (eye ~21 from its centre), the case that took two 11-bit scatters before.
+  for (const auto& [lo, hi] : {std::pair{2.0, 9.0}, std::pair{17.0, 30.0}}) {
+    std::uniform_real_distribution<double> u(lo, hi);
+    std::vector<uint32_t> keys(300000);
+    for (uint32_t& k : keys) k = float_sort_key(static_cast<float>(-u(rng)));
+    RadixArgsort sort;
+    for (int threads : {1, 2}) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+      expect_sorted_like_stable(sort, keys, "depths");
+      EXPECT_EQ(sort.passes(), 3) << lo;
+    }
   }
 }
 
