@@ -70,7 +70,10 @@ XServer::XServer(bool start_xvfb) {
     dup2(null, 1);
     dup2(null, 2);
     dup2(fds[1], 3);  // dup2 clears close-on-exec on the copy
-    execlp("Xvfb", "Xvfb", "-displayfd", "3", "-screen", "0", "2048x2048x24", "-nolisten", "tcp", nullptr);
+    // -noreset: without it the server resets when our probe's connection closes, and VTK's
+    // connection, made during that reset, fails now and then.
+    execlp("Xvfb", "Xvfb", "-displayfd", "3", "-screen", "0", "2048x2048x24", "-nolisten", "tcp", "-noreset",
+           nullptr);
     _exit(127);
   }
   close(fds[1]);
