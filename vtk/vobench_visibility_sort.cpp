@@ -7,6 +7,7 @@
 
 #include <vtkCamera.h>
 #include <vtkDataSet.h>
+#include <vtkHomogeneousTransform.h>
 #include <vtkIdTypeArray.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
@@ -40,6 +41,38 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 }
 
 Matrix identity() { return {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; }
+
+Matrix to_matrix(vtkMatrix4x4* v) {
+  Matrix m;
+  std::copy(&v->Element[0][0], &v->Element[0][0] + 16, m.begin());
+  return m;
+}
+
+Matrix times(const Matrix& a, const Matrix& b) {
+  Matrix c{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      for (int k = 0; k < 4; ++k) c[4 * i + j] += a[4 * i + k] * b[4 * k + j];
+  return c;
+}
+
+// A vtkCamera setting that moves or shears the image window away from the centred one
+// vobench's camera describes ("" when there is none): sampling those rays with vobench's
+// camera would give an order for other rays, so they are refused, not ignored.
+std::string unmapped_camera_setting(vtkCamera* c) {
+  const double* wc = c->GetWindowCenter();
+  const double* shear = c->GetViewShear();
+  const auto num = [](double v) { return std::to_string(v); };
+  if (wc[0] != 0 || wc[1] != 0) return "WindowCenter (" + num(wc[0]) + ", " + num(wc[1]) + ") is not (0, 0)";
+  if (shear[0] != 0 || shear[1] != 0)
+    return "ViewShear (" + num(shear[0]) + ", " + num(shear[1]) + ") is not (0, 0) (oblique angles)";
+  if (c->GetUseOffAxisProjection()) return "UseOffAxisProjection is on";
+  if (c->GetUseExplicitProjectionTransformMatrix()) return "UseExplicitProjectionTransformMatrix is on";
+  if (c->GetUserTransform()) return "a UserTransform (projection side) is set";
+  if (c->GetUseExplicitAspectRatio()) return "UseExplicitAspectRatio is on";
+  if (c->GetStereo()) return "stereo rendering is on (each eye sees a sheared frustum)";
+  return "";
+}
 
 vob::Vec3 apply(const Matrix& m, vob::Vec3 p, double w) {
   return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3] * w, m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7] * w,
@@ -109,6 +142,7 @@ bool vobVisibilitySort::GetImageExact() const { return this->S->claims.image_exa
 void vobVisibilitySort::Fail(const std::string& message) {
   this->LastError = message;
   this->Order.clear();
+  this->S->has_camera = false;  // no order for any camera until the next one succeeds
   vtkErrorMacro(<< message);
 }
 
@@ -144,12 +178,7 @@ bool vobVisibilitySort::Prepare(const double* data_to_world) {
 
 // The camera in the frame of the prepared scene, and the matrix the scene needs.
 bool vobVisibilitySort::CurrentCamera(vob::Camera& c, double* data_to_world) {
-  Matrix m = identity();
-  if (this->ModelTransform) std::copy(&this->ModelTransform->Element[0][0], &this->ModelTransform->Element[0][0] + 16, m.begin());
-  if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1) {
-    this->Fail("the model transform is projective (last row not 0 0 0 1)");
-    return false;
-  }
+  Matrix m = this->ModelTransform ? to_matrix(this->ModelTransform) : identity();
   int w = this->Width, h = this->Height;
   if (this->Renderer) {
     const int* size = this->Renderer->GetSize();
@@ -161,6 +190,18 @@ bool vobVisibilitySort::CurrentCamera(vob::Camera& c, double* data_to_world) {
     return false;
   }
   vtkCamera* cam = this->Camera;
+  if (const std::string why = unmapped_camera_setting(cam); !why.empty()) {
+    this->Fail("camera: " + why + ": vobench's camera has no such projection (the order would be for other rays)");
+    return false;
+  }
+  // The camera's own model transform and user view transform act on every prop before
+  // the view transform (ModelView = Setup * UserView * CameraModel): data to world as well.
+  if (vtkMatrix4x4* cm = cam->GetModelTransformMatrix()) m = times(to_matrix(cm), m);
+  if (vtkHomogeneousTransform* uv = cam->GetUserViewTransform()) m = times(to_matrix(uv->GetMatrix()), m);
+  if (m[12] != 0 || m[13] != 0 || m[14] != 0 || m[15] != 1) {
+    this->Fail("the model transform is projective (last row not 0 0 0 1)");
+    return false;
+  }
   double p[3], f[3], u[3];
   cam->GetPosition(p);
   cam->GetFocalPoint(f);
@@ -178,9 +219,9 @@ bool vobVisibilitySort::CurrentCamera(vob::Camera& c, double* data_to_world) {
   const double s = similarity_scale(m);
   if (s > 0) {  // the camera into the data's frame: the data stay as they are
     vtkNew<vtkMatrix4x4> inv;
-    vtkMatrix4x4::Invert(this->ModelTransform ? this->ModelTransform : inv.Get(), inv);
-    Matrix im;
-    std::copy(&inv->Element[0][0], &inv->Element[0][0] + 16, im.begin());
+    inv->DeepCopy(m.data());
+    inv->Invert();
+    const Matrix im = to_matrix(inv);
     c.eye = apply(im, c.eye, 1);
     c.target = apply(im, c.target, 1);
     c.up = apply(im, c.up, 0);

@@ -8,7 +8,11 @@
 //   camera.h): position, focal point, view up, view angle or parallel scale, and the size of
 //   the renderer given with SetRenderer (else SetImageSize), so an image-exact orderer is
 //   exact at the rendered resolution. A rigid or uniformly scaled model transform moves the
-//   camera into the data's frame; any other affine one moves the data (a new prepare).
+//   camera into the data's frame; any other affine one moves the data (a new prepare). The
+//   camera's own ModelTransformMatrix and UserViewTransform join the model transform.
+//   Settings vobench's centred camera cannot express (WindowCenter, ViewShear / oblique
+//   angles, off-axis, explicit projection or aspect, a UserTransform, stereo) are refused
+//   by name: an order for other rays would be silently wrong.
 // - The orderer runs when that camera differs from the last one (or on every
 //   InitTraversal with SetAlwaysOrder(true), for timing); GetNextCells hands the order out
 //   MaxCellsReturned cells at a time, back to front or front to back.

@@ -374,8 +374,9 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   r.only_keys(j, "", {"name", "datasets", "algorithms", "probes", "views", "view_indices", "spread_views",
                       "view_directions", "orbit", "ortho", "zoom", "fit", "sizes", "repeats", "warmup", "threads", "oracle",
                       "supersample", "raster", "image_error", "image_views", "images_of_violations", "exterior_area",
-                      "vtk_render", "comment"});  // vtk_render: read by vobench-vtk render --suite (vtk/)
+                      "vtk_render", "comment"});
   SuiteSpec s;
+  s.source = j;
   s.name = j.contains("name") ? r.string(j["name"], "name") : "suite";
   if (s.name.find_first_of("|/") != std::string::npos) r.fail("name", "must not contain '|' or '/'");
   if (j.contains("repeats")) s.repeats = r.integer(j["repeats"], "repeats", 1, kMaxRepeats);
@@ -415,6 +416,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   if (j.contains("images_of_violations"))
     s.images_of_violations = r.boolean(j["images_of_violations"], "images_of_violations");
   if (j.contains("exterior_area")) s.exterior_area = r.boolean(j["exterior_area"], "exterior_area");
+  if (j.contains("vtk_render")) s.vtk_render = read_vtk_render_entry(r, j["vtk_render"]);
   return s;
 }
 

@@ -11,14 +11,17 @@
 //    "orbit": false,
 //    "ortho": false, "zoom": 1, "fit": false, "sizes": ["512x512"], "repeats": 3, "warmup": 1,
 //    "threads": 1 | [1, 0], "oracle": true, "supersample": 1, "image_error": true,
-//    "image_views": [0], "images_of_violations": false, "exterior_area": true}
+//    "image_views": [0], "images_of_violations": false, "exterior_area": true,
+//    "vtk_render": {"algorithms": ["xmpvo"], "repeats": 3, "extinction": 1}}
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "harness/bench/vtk_render_entry.h"
 #include "harness/geometry/vec3.h"
 #include "harness/raster/raster_rule.h"
 #include "harness/scene/scene.h"
@@ -77,6 +80,9 @@ struct SuiteSpec {
   std::vector<int> image_views;   // views whose images are written
   bool images_of_violations = false;  // also every view the oracle finds violations in
   bool exterior_area = true;      // Cook et al.'s a per cell record
+  // "vtk_render": drawn by vobench-vtk after the suite's records (vtk_render_entry.h).
+  std::optional<VtkRenderEntry> vtk_render;
+  nlohmann::json source;          // the suite as read (overlays applied): what vobench-vtk is given
 
   // Validates the whole suite before any work: dataset names and generator parameters
   // (checked without generating), input files present, orderer names and parameters

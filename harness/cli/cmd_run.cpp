@@ -13,6 +13,7 @@
 #include "harness/cli/stop_signals.h"
 #include "harness/cli/thread_option.h"
 #include "harness/cli/raster_option.h"
+#include "harness/cli/vtk_render_child.h"
 
 namespace vob {
 
@@ -81,6 +82,8 @@ Command add_run_command(CLI::App& app) {
         req.after = [out](int status) {
           return status == 0 ? run_python_script("gbench.py", {*out, "-o", gbench_path(*out)}) : status;
         };
+      if (s.vtk_render)
+        std::cerr << "vtk_render: not drawn by an MPI farm: vobench-vtk render --suite " << *suite << " afterwards\n";
       return run_farm(req);
     }
     RunOptions opt;
@@ -98,8 +101,16 @@ Command add_run_command(CLI::App& app) {
               << " already present, ";
     if (r.written_elsewhere) std::cerr << r.written_elsewhere << " written meanwhile by another run, ";
     std::cerr << r.violations << " with oracle violations -> " << *out << "\n";
-    if (!r.stopped)
+    if (!r.stopped) {
+      int vtk = 0;  // the suite's vtk_render entry: vobench-vtk, beside the results file
+      if (s.vtk_render && spread->sharded())
+        std::cerr << "vtk_render: not drawn by a shard: vobench-vtk render --suite " << *suite << " after the merge\n";
+      else
+        vtk = run_vtk_render(s, std::filesystem::path(*out).has_parent_path()
+                                    ? std::filesystem::path(*out).parent_path().string() : ".");
+      if (vtk != 0) return vtk;
       return *format == "gbench" ? run_python_script("gbench.py", {*out, "-o", gbench_path(*out)}) : 0;
+    }
     const int sig = StopSignals::received();
     std::cerr << "run " << s.name << ": stopped by " << StopSignals::name(sig) << " with "
               << r.written << " records written; run the same command again to resume\n";

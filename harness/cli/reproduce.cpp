@@ -15,6 +15,7 @@
 #include "harness/cli/dry_run.h"
 #include "harness/cli/python_script.h"
 #include "harness/cli/stop_signals.h"
+#include "harness/cli/vtk_render_child.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -62,6 +63,7 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
     std::error_code ec;
     fs::remove(results, ec);
     if (!ec) fs::remove_all(fs::path(out_dir) / "images", ec);
+    if (!ec) fs::remove_all(fs::path(out_dir) / "vtk", ec);
     if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
   }
   const StopSignals signals;
@@ -95,6 +97,7 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
     else
       std::fprintf(stderr, "[%6.1f s] %s\n", s, line.c_str());
   };
+  int vtk_failure = 0;  // vobench-vtk's failing status: reported after every suite
   for (const SuiteSpec& suite : suites) {
     std::fprintf(stderr, "suite %s\n", suite.name.c_str());
     const RunSummary r = run_suite(suite, opt);
@@ -107,8 +110,14 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
                 << results << ": run the same command again to resume\n";
       return StopSignals::exit_code(sig);
     }
+    if (suite.vtk_render && part && part->take_group) {
+      std::cerr << name << ": vtk_render is not drawn by a shard: vobench-vtk render --suite after the merge\n";
+    } else if (const int v = run_vtk_render(suite, out_dir); v != 0) {
+      if (StopSignals::received()) return v;  // stopped in the VTK part: the records are all in
+      vtk_failure = v;
+    }
   }
-  return 0;
+  return vtk_failure;
 }
 
 int build_tables(const Reproduction& rep, const std::string& out_dir) {
@@ -124,6 +133,7 @@ void prepare_folder(const std::vector<Reproduction>& reps, const std::string& ou
   std::error_code ec;
   fs::remove(results_of(out_dir), ec);
   if (!ec) fs::remove_all(fs::path(out_dir) / "images", ec);
+  if (!ec) fs::remove_all(fs::path(out_dir) / "vtk", ec);
   if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
 }
 
@@ -132,12 +142,13 @@ int reproduce(const Reproduction& rep, const std::string& out_dir, bool force, P
   if (!force) check_scale_of_folder(rep, results_of(out_dir));
   const RunTags tags{rep.name, rep.paper, rep.scale};
   const int status = run_suites_into(rep.suites, rep.name, out_dir, force, tags, all, part);
-  if (status != 0) return status;
+  if (status != 0 && StopSignals::received()) return status;
   if (part && part->take_group) {
     std::cerr << rep.name << ": a shard's records only; merge the shards (vobench merge) and run vobench report\n";
     return 0;
   }
-  return build_tables(rep, out_dir);
+  const int tables = build_tables(rep, out_dir);
+  return status != 0 ? status : tables;  // a failed VTK part still gets its tables
 }
 
 int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force,

@@ -22,8 +22,9 @@ struct RunPart {
 
 // Runs the suites into out_dir/results.jsonl, keeping the records already there unless
 // `force` (which also drops out_dir/images), printing progress: [k/N] over all the suites
-// (and over `all`, reproduce all's tracker, when given). Returns 0, or 130 / 143 when
-// SIGINT / SIGTERM stopped the run (every finished record is on disk).
+// (and over `all`, reproduce all's tracker, when given); after each suite its vtk_render
+// entry (vtk_render_child.h; not in a shard). Returns 0, 130 / 143 when SIGINT / SIGTERM
+// stopped the run (every finished record is on disk), or vobench-vtk's failing status.
 int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& name,
                     const std::string& out_dir, bool force, const RunTags& tags,
                     ProgressTracker* all = nullptr, const RunPart* part = nullptr);

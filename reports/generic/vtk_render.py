@@ -2,29 +2,41 @@
 `vtk/NAME/render.json` under the report's folder or a results file's folder, as one table per
 run (per sorter: views and pixels differing from the first exact orderer's image in VTK's
 projected-tetrahedra mapper, frame time over VTK's own sort) with the view where VTK's sort
-differs most, and a link to the run's render.html."""
+differs most, and a link to the run's render.html. A suite whose vtk_render entry was not run,
+was interrupted or failed (vtk/status-SUITE.json) is named with the reason, never left out."""
 import glob
 import json
 import os
 
 
-def find(out, results):
+def find(out, results, pattern):
     dirs = [out] + [p if os.path.isdir(p) else os.path.dirname(os.path.abspath(p)) for p in results]
     found = []
     for d in dirs:
-        for p in sorted(glob.glob(os.path.join(d, "vtk", "*", "render.json"))):
+        for p in sorted(glob.glob(os.path.join(d, "vtk", pattern))):
             if os.path.abspath(p) not in [os.path.abspath(f) for f in found]:
                 found.append(p)
     return found
 
 
+# vobench run / reproduce record how a suite's vtk_render entry went (harness/cli/vtk_render_child.h).
+STATE_TEXT = {"not run": "not run", "interrupted": "interrupted", "failed": "failed",
+              "running": "not finished (still running, or its run was killed)"}
+
+
 def section(page, out, results):
-    runs = find(out, results)
-    if not runs:
+    runs = [p for p in find(out, results, os.path.join("*", "render.json"))  # not a scene still being drawn
+            if not os.path.dirname(p).endswith((".partial", ".old"))]
+    statuses = [json.load(open(p)) for p in find(out, results, "status-*.json")]
+    if not runs and not statuses:
         return
     page.heading(2, "What VTK shows")
     page.para("The same orders drawn by VTK's vtkOpenGLProjectedTetrahedraMapper (vobench-vtk render): a "
               "pixel differs when any 8-bit channel differs from the image of the reference orderer.")
+    for st in statuses:
+        if st.get("state") != "done":
+            text = STATE_TEXT.get(st.get("state"), str(st.get("state")))
+            page.para(f"Suite {st.get('suite')}: {text} ({st.get('reason') or 'no reason recorded'}).")
     for path in runs:
         run = json.load(open(path))
         rel = os.path.relpath(os.path.dirname(path), out)

@@ -3,10 +3,13 @@
 // new input and orders on a new camera only; a model transform is followed.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include <vtkCamera.h>
 #include <vtkIdTypeArray.h>
 #include <vtkMatrix4x4.h>
 #include <vtkNew.h>
+#include <vtkTransform.h>
 #include <vtkUnstructuredGrid.h>
 
 #include "datasets/datasets.h"
@@ -191,6 +194,70 @@ TEST(Adapter, MovesTheDataForAnAffineModelTransform) {
   sort->SetModelTransform(identity);
   traverse(sort);
   EXPECT_EQ(sort->GetNumberOfPrepares(), 2);
+}
+
+// VTK camera settings vobench's camera cannot express are refused by name, never ordered
+// for the wrong rays; back at their defaults the order is the orderer's own again.
+TEST(Adapter, RefusesCameraSettingsItCannotMap) {
+  Helix h;
+  const std::vector<std::pair<std::string, std::function<void(vtkCamera*, bool)>>> settings = {
+      {"WindowCenter", [](vtkCamera* c, bool on) { c->SetWindowCenter(on ? 0.25 : 0, 0); }},
+      {"ViewShear", [](vtkCamera* c, bool on) { c->SetViewShear(0, on ? 0.1 : 0, 1); }},
+      {"ViewShear", [](vtkCamera* c, bool on) { on ? c->SetObliqueAngles(30, 63.4) : c->SetViewShear(0, 0, 1); }},
+      {"UseOffAxisProjection", [](vtkCamera* c, bool on) { c->SetUseOffAxisProjection(on); }},
+      {"UseExplicitProjectionTransformMatrix",
+       [](vtkCamera* c, bool on) { c->SetUseExplicitProjectionTransformMatrix(on); }},
+      {"UseExplicitAspectRatio", [](vtkCamera* c, bool on) { c->SetUseExplicitAspectRatio(on); }},
+      {"UserTransform", [](vtkCamera* c, bool on) {
+         vtkNew<vtkTransform> t;
+         c->SetUserTransform(on ? t.Get() : nullptr);
+       }}};
+  vtkNew<vobVisibilitySort> sort;
+  ASSERT_TRUE(sort->SetOrderer("xmpvo"));
+  vtkNew<vtkCamera> cam;
+  sort->SetInput(h.grid);
+  sort->SetCamera(cam);
+  sort->SetImageSize(300, 200);
+  set_camera(cam, h.views[4]);
+  for (const auto& [name, set] : settings) {
+    set(cam, true);
+    EXPECT_TRUE(traverse(sort).empty()) << name;
+    EXPECT_NE(sort->GetLastError().find(name), std::string::npos) << sort->GetLastError();
+    set(cam, false);
+    EXPECT_EQ(traverse(sort), own_order("xmpvo", h.scene, h.views[4])) << name;
+  }
+}
+
+TEST(Adapter, MapsParallelProjectionAndTheCamerasModelTransform) {
+  Helix h;
+  vtkNew<vobVisibilitySort> sort;
+  ASSERT_TRUE(sort->SetOrderer("sxmpvo"));
+  vtkNew<vtkCamera> cam;
+  sort->SetInput(h.grid);
+  sort->SetCamera(cam);
+  sort->SetImageSize(300, 200);
+  for (int v : {1, 6}) {
+    Camera ortho = h.views[v];
+    ortho.ortho = true;
+    ortho.ortho_height = 0.6 * length(h.scene.bounds().hi - h.scene.bounds().lo);
+    set_camera(cam, ortho);
+    cam->ParallelProjectionOn();
+    cam->SetParallelScale(0.5 * ortho.ortho_height);
+    EXPECT_EQ(traverse(sort), own_order("sxmpvo", h.scene, ortho)) << "view " << v;
+    EXPECT_NE(traverse(sort), own_order("sxmpvo", h.scene, h.views[v])) << "perspective is another order";
+  }
+  cam->ParallelProjectionOff();
+  // The camera's model matrix moves every prop: x' = R x + t, a quarter turn about z.
+  const double e[16] = {0, -1, 0, 3, 1, 0, 0, -1, 0, 0, 1, 0.5, 0, 0, 0, 1};
+  cam->SetModelTransformMatrix(e);
+  const auto to_world = [](Vec3 p, double w) { return Vec3{-p.y + 3 * w, p.x - w, p.z + 0.5 * w}; };
+  Camera world = h.views[3];
+  world.eye = to_world(world.eye, 1);
+  world.target = to_world(world.target, 1);
+  world.up = to_world(world.up, 0);
+  set_camera(cam, world);
+  EXPECT_EQ(traverse(sort), own_order("sxmpvo", h.scene, h.views[3]));
+  EXPECT_EQ(sort->GetLastCamera().eye, h.views[3].eye);
 }
 
 TEST(Adapter, RefusesClearly) {

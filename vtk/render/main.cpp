@@ -5,8 +5,10 @@
 #include <CLI/CLI.hpp>
 
 #include "harness/cli/error_line.h"
+#include "harness/cli/stop_signals.h"
 #include "harness/scene/input_error.h"
 #include "vtk/render/render_command.h"
+#include "vtk/render/x_display.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"vobench-vtk: scenes drawn by VTK's projected-tetrahedra mapper with VTK's and vobench's sorts"};
@@ -14,9 +16,10 @@ int main(int argc, char** argv) {
   vob::RenderArgs args;
   CLI::App* render = app.add_subcommand(
       "render", "draw a scene's views with vtkOpenGLProjectedTetrahedraMapper, with VTK's sort and each "
-                "--algorithm; writes render.json, render.html and the images (needs an X server: xvfb-run -a)");
+                "--algorithm; writes render.json, render.html and the images (an X server: $DISPLAY, else an Xvfb it starts)");
   args.add_to(*render);
-  // One line on stderr, exit 2 (3 for an internal error), as the vobench program.
+  // One line on stderr, exit 2 (3 for an internal error), as the vobench program; 4 when
+  // nothing can be drawn here (no X server, no Xvfb); 130 / 143 when stopped by a signal.
   const auto fail = [&](const std::string& message, int code) {
     std::fprintf(stderr, "%s\n", vob::error_line("vobench-vtk: render: " + message).c_str());
     return code;
@@ -31,6 +34,12 @@ int main(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
   try {
     return vob::run_render(args, line);
+  } catch (const vob::RenderStopped& e) {
+    std::fprintf(stderr, "vobench-vtk: render: stopped by %s; every finished scene is kept\n",
+                 vob::StopSignals::name(e.signal));
+    return vob::StopSignals::exit_code(e.signal);
+  } catch (const vob::CannotDraw& e) {
+    return fail(e.what(), 4);
   } catch (const vob::InputError& e) {
     return fail(e.what(), 2);
   } catch (const std::logic_error& e) {

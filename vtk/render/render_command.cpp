@@ -1,6 +1,7 @@
 #include "vtk/render/render_command.h"
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "harness/bench/atomic_file.h"
@@ -8,6 +9,7 @@
 #include "harness/bench/jobs.h"
 #include "harness/bench/registry.h"
 #include "harness/bench/suite.h"
+#include "harness/cli/stop_signals.h"
 #include "harness/scene/input_error.h"
 #include "vtk/render/x_display.h"
 
@@ -29,63 +31,59 @@ void RenderArgs::add_to(CLI::App& c) {
                "every cell dataset and size of a suite, with the orderers of its \"vtk_render\" entry "
                "({\"algorithms\": [...], \"repeats\": N, \"extinction\": F}), into OUT/vtk/LABEL-WxH");
   c.add_option("-o,--output", out, "output folder (render.json, render.html, PNGs)")->required();
+  c.add_option("--xvfb", xvfb,
+               "auto (default): when $DISPLAY opens no X server, start an Xvfb for this run and stop it at "
+               "the end; never: exit 4 instead")
+      ->check(CLI::IsMember({"auto", "never"}));
 }
 
 namespace {
-// VTK's X render window aborts the process without a display: say so first, as bad usage.
-void require_x_display() {
-  if (const std::string problem = x_display_problem(); !problem.empty())
-    throw InputError("DISPLAY", problem, "no X server to open (VTK's OpenGL window needs one: run under xvfb-run -a)");
+// What names a scene's run: a finished one with the same key is not drawn again.
+nlohmann::json run_key(const DatasetSpec& ds, const std::vector<std::pair<int, Camera>>& views,
+                       const RenderSettings& s) {
+  nlohmann::json v = nlohmann::json::array();
+  for (const auto& [index, cam] : views) v.push_back({{"view_index", index}, {"camera", cam.to_json()}});
+  return {{"scene", ds.to_json()}, {"algorithms", s.algorithms}, {"repeats", s.repeats},
+          {"extinction", s.extinction}, {"views", v}};
 }
 
-// The suite's "vtk_render" entry into `s`; InputError naming the suite and the key.
-void read_vtk_entry(const std::string& path, RenderSettings& s) {
-  const nlohmann::json j = read_json_file(path, "suite");
-  if (!j.is_object() || !j.contains("vtk_render"))
-    throw InputError(path, "vtk_render", "is missing (the orderers vobench-vtk draws: {\"algorithms\": [...]})");
-  const nlohmann::json& e = j["vtk_render"];
-  const auto bad = [&](const std::string& key, const std::string& why) {
-    throw InputError(path, "vtk_render." + key, why);
-  };
-  if (!e.is_object()) bad("", "must be an object");
-  for (const auto& [k, v] : e.items())
-    if (k != "algorithms" && k != "repeats" && k != "extinction" && k != "comment")
-      bad(k, "is not a known key (known: algorithms, repeats, extinction, comment)");
-  if (!e.contains("algorithms") || !e["algorithms"].is_array() || e["algorithms"].empty())
-    bad("algorithms", "must be a non-empty list of orderer names");
-  for (const auto& a : e["algorithms"]) {
-    if (!a.is_string()) bad("algorithms", "must hold strings");
-    s.algorithms.push_back(a.get<std::string>());
-  }
-  if (e.contains("repeats")) {
-    if (!e["repeats"].is_number_integer() || e["repeats"].get<int64_t>() < 1 || e["repeats"].get<int64_t>() > 1000)
-      bad("repeats", "must be an integer in [1, 1000]");
-    s.repeats = e["repeats"].get<int>();
-  }
-  if (e.contains("extinction")) {
-    if (!e["extinction"].is_number() || !(e["extinction"].get<double>() > 0) || e["extinction"].get<double>() > 1e6)
-      bad("extinction", "must be a number in (0, 1e6]");
-    s.extinction = e["extinction"].get<double>();
-  }
+bool same_run(const std::string& dir, const nlohmann::json& key) {
+  std::ifstream in(dir + "/render.json");
+  if (!in) return false;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  return j.is_object() && j.value("run_key", nlohmann::json()) == key;
+}
+
+// `partial` becomes `dir`; an older `dir` goes only once the new one is complete.
+void replace_folder(const std::string& partial, const std::string& dir) {
+  namespace fs = std::filesystem;
+  const std::string old = dir + ".old";
+  fs::remove_all(old);
+  if (fs::exists(dir)) fs::rename(dir, old);
+  fs::rename(partial, dir);
+  fs::remove_all(old);
 }
 
 void print(const nlohmann::json& summary, const std::string& dir) {
   for (const auto& s : summary) std::cout << s.dump() << "\n";
-  std::cout << "wrote " << dir << "/render.json and " << dir << "/render.html\n";
+  std::cout << "wrote " << dir << "/render.json and " << dir << "/render.html" << std::endl;  // now: a pipe buffers
 }
 
 int run_suite(const RenderArgs& a, const std::string& command_line) {
   for (const char* opt : {"--dataset", "--input", "--set", "--algorithm", "--extinction", "--repeats", "--views",
                           "--view-index", "--orbit", "--eye", "--target", "--size", "--ortho-views", "--zoom"})
     if (a.cmd->count(opt)) throw InputError(opt, "with --suite", "the suite says it (its vtk_render entry, views, sizes)");
-  const SuiteSpec suite = SuiteSpec::load(a.suite);
+  const SuiteSpec suite = SuiteSpec::load(a.suite);  // its vtk_render entry checked there
+  if (!suite.vtk_render)
+    throw InputError(a.suite, "vtk_render", "is missing (the orderers vobench-vtk draws: {\"algorithms\": [...]})");
   RenderSettings s;
-  read_vtk_entry(a.suite, s);
-  for (const std::string& alg : s.algorithms)
-    if (spec_orderer(alg).kind != SceneKind::Cells)
-      throw InputError(a.suite, "vtk_render.algorithms: " + alg, "orders no cells");
+  s.algorithms = suite.vtk_render->algorithms;
+  s.repeats = suite.vtk_render->repeats;
+  s.extinction = suite.vtk_render->extinction;
   require_writable_folder(a.out);
-  require_x_display();
+  const XServer x(a.xvfb == "auto");
+  const StopSignals signals;
+  s.stop = [] { return StopSignals::received(); };
   for (const DatasetSpec& ds : suite.datasets) {
     const Scene scene = make_scene(ds);
     if (scene.kind() != SceneKind::Cells) {
@@ -95,11 +93,26 @@ int run_suite(const RenderArgs& a, const std::string& command_line) {
     for (const auto& [w, h] : suite.sizes) {
       const std::string dir = a.out + "/vtk/" + file_label(ds.row_label()) + "-" + std::to_string(w) + "x" +
                               std::to_string(h);
-      std::filesystem::create_directories(dir);
-      print(render_scene(scene, suite_views(suite, ds, scene, w, h), s, dir,
-                         {{"tool", "vobench-vtk render"}, {"command", command_line}, {"suite", a.suite},
-                          {"scene", ds.to_json()}}),
-            dir);
+      const auto views = suite_views(suite, ds, scene, w, h);
+      const nlohmann::json key = run_key(ds, views, s);
+      if (same_run(dir, key)) {
+        std::cout << "kept " << dir << " (render.json has this run_key)" << std::endl;
+        continue;
+      }
+      const std::string partial = dir + ".partial";
+      std::filesystem::remove_all(partial);
+      std::filesystem::create_directories(partial);
+      nlohmann::json summary;
+      try {
+        summary = render_scene(scene, views, s, partial,
+                               {{"tool", "vobench-vtk render"}, {"command", command_line}, {"suite", a.suite},
+                                {"scene", ds.to_json()}, {"run_key", key}, {"x_server", x.description()}});
+      } catch (const RenderStopped&) {
+        std::filesystem::remove_all(partial);  // no half scene; the finished ones stay
+        throw;
+      }
+      replace_folder(partial, dir);
+      print(summary, dir);
     }
   }
   return 0;
@@ -117,14 +130,20 @@ int run_render(const RenderArgs& a, const std::string& command_line) {
   a.view.validate(spec);
   for (const std::string& alg : a.settings.algorithms) check_algorithm(alg, spec);
   require_writable_folder(a.out);
-  require_x_display();  // the options first: bad usage is named before a missing display
+  const XServer x(a.xvfb == "auto");  // the options first: bad usage is named before a missing display
+  const StopSignals signals;
+  RenderSettings settings = a.settings;
+  settings.stop = [] { return StopSignals::received(); };
   const Scene scene = a.scene.load(spec);
   if (scene.kind() != SceneKind::Cells)
     throw InputError(source_name(spec), "scene", std::string("has ") + scene_kind_name(scene.kind()) +
                                                      "; the projected-tetrahedra mapper draws cells");
   std::filesystem::create_directories(a.out);
-  print(render_scene(scene, a.view.cameras(spec, scene), a.settings, a.out,
-                     {{"tool", "vobench-vtk render"}, {"command", command_line}, {"scene", spec.to_json()}}),
+  for (const char* stale : {"/render.json", "/render.html"})  // never beside images of another run
+    std::filesystem::remove(a.out + stale);
+  print(render_scene(scene, a.view.cameras(spec, scene), settings, a.out,
+                     {{"tool", "vobench-vtk render"}, {"command", command_line}, {"scene", spec.to_json()},
+                      {"x_server", x.description()}}),
         a.out);
   return 0;
 }

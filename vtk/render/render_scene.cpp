@@ -119,6 +119,7 @@ nlohmann::json render_scene(const Scene& scene, const std::vector<std::pair<int,
     std::vector<RgbImage> images(run.sorters.size());
     for (int r = 0; r < s.repeats; ++r)
       for (size_t i = 0; i < run.sorters.size(); ++i) {  // interleaved: one load for all
+        if (const int sig = s.stop ? s.stop() : 0) throw RenderStopped{sig};
         if (i > 0) ours[i - 1]->SetViewIndex(index);
         const double t = stage.render(static_cast<int>(i), cam);
         check(i, index);

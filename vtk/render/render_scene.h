@@ -2,6 +2,7 @@
 // vobench orderer, interleaved per view and repeat; writes render.json, render.html and
 // the images into `out` (vobench-vtk render, for the command line and for suites).
 #pragma once
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,12 @@ struct RenderSettings {
   std::vector<std::string> algorithms;  // orderer specs, in order
   int repeats = 3;
   double extinction = 1.0;  // times the optical scale of vobench's compositor
+  std::function<int()> stop;  // checked before every frame: a signal number stops the run
+};
+
+// Thrown by render_scene when `stop` returned a signal: nothing of the scene is written.
+struct RenderStopped {
+  int signal;
 };
 
 // `s` with every byte but letters, digits, '-' and '.' as '_' (file and folder names).

@@ -166,3 +166,26 @@ TEST(SuiteValidation, EverySuiteOfTheRepositoryIsValid) {
     for (const char* scale : {"tiny", "default", "full"})
       EXPECT_NO_THROW(load_reproduction(r.path, scale, dir)) << r.name << " at " << scale;
 }
+
+// "vtk_render" (vobench-vtk's orderers) is checked with the suite, before vobench run starts.
+TEST(SuiteValidation, ChecksTheVtkRenderEntry) {
+  nlohmann::json j = valid();
+  EXPECT_FALSE(SuiteSpec::from_json(j, "s.json").vtk_render);
+  j["vtk_render"] = {{"algorithms", {"xmpvo", "centroid:key=view"}}, {"repeats", 2}, {"extinction", 4}};
+  const SuiteSpec s = SuiteSpec::from_json(j, "s.json");
+  ASSERT_TRUE(s.vtk_render);
+  EXPECT_EQ(s.vtk_render->algorithms, (std::vector<std::string>{"xmpvo", "centroid:key=view"}));
+  EXPECT_EQ(s.vtk_render->repeats, 2);
+  EXPECT_EQ(s.source["vtk_render"], j["vtk_render"]);  // what vobench-vtk is handed
+  const std::vector<std::pair<nlohmann::json, std::string>> bad = {
+      {{{"algorithms", {"btf"}}}, "s.json: vtk_render.algorithms: btf: orders no cells"},
+      {{{"algorithms", {"nope"}}}, "s.json: vtk_render.algorithms: "},
+      {{{"algorithms", nlohmann::json::array()}}, "s.json: vtk_render.algorithms: must be a non-empty list"},
+      {{{"algorithms", {"xmpvo"}}, {"repeats", 0}}, "s.json: vtk_render.repeats: "},
+      {{{"algorithms", {"xmpvo"}}, {"views", 3}}, "s.json: vtk_render"},
+      {"xmpvo", "s.json: vtk_render: must be an object"}};
+  for (const auto& [entry, message] : bad) {
+    j["vtk_render"] = entry;
+    EXPECT_TRUE(starts_with(error_of(j), message)) << error_of(j);
+  }
+}
