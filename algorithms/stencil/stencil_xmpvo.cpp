@@ -14,7 +14,11 @@ class StencilXmpvo final : public Orderer {
  public:
   explicit StencilXmpvo(const ResolvedParams& p) : x_(p) {}
 
-  Claims claims() const override { return mpvo::core_claims(false, x_.backend_name == "software"); }
+  Claims claims() const override {
+    Claims c = mpvo::core_claims(false, true);
+    if (x_.backend_name == "gl") c.image_exact_under = RasterRule::gl;  // what llvmpipe draws
+    return c;
+  }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     core_.prepare(scene, clock);
