@@ -4,6 +4,7 @@
 
 #include "algorithms/mpvo/mpvo_core.h"
 #include "algorithms/stencil/layer_extraction.h"
+#include "algorithms/stencil/snapped_signs.h"
 
 namespace vob {
 namespace {
@@ -35,6 +36,8 @@ class StencilXmpvo final : public Orderer {
     {
       auto p = clock.phase("I create partial order");
       core_.create_partial_order(view);
+      // GL: arrows and facing as llvmpipe's snapped faces wind (snapped_signs.h).
+      if (x_.backend_name == "gl") snapped_flips_ = apply_snapped_signs(core_, view, snapped_);
       front_.resize(b);
       for (size_t i = 0; i < b; ++i) front_[i] = core_.face_sign(ext_->face[i]) > 0;
     }
@@ -78,6 +81,7 @@ class StencilXmpvo final : public Orderer {
     add_layer_counters(result, out);
     auto& k = out.counters;
     k["exterior_faces"] = double(b);
+    if (x_.backend_name == "gl") k["snapped_sign_flips"] = double(snapped_flips_);
     k["pixel_pairs"] = double(pixel_pairs);
     k["relations"] = double(rel_.size());
     k["unclassified_faces"] = double(result.unclassified_visible);
@@ -96,6 +100,8 @@ class StencilXmpvo final : public Orderer {
   mpvo::MpvoCore core_;
   const ExteriorFaces* ext_ = nullptr;  // the scene's exterior faces
   std::vector<uint8_t> front_;
+  std::vector<int64_t> snapped_;  // gl: snapped window positions of the mesh points
+  int64_t snapped_flips_ = 0;
   std::vector<int32_t> last_;  // per pixel: exterior face seen in the latest layer + 1
   std::vector<uint64_t> pairs_;
   std::vector<std::pair<int32_t, int32_t>> rel_;
