@@ -104,6 +104,14 @@ nlohmann::json run_gl(Params& p, const ProbeContext& ctx) {
     const double t_ser =
         median_seconds(ctx.repeats, [&] { gsr = gl->render(cam, order, k, havs::GlDrawMode::Serialized, gls); });
     const havs::ImageCompare8 c_gl = havs::compare_8bit(glb, sw), c_ser = havs::compare_8bit(gls, sw);
+    // The software k-buffer under the gl sampling rule (llvmpipe's coverage, the planes'
+    // own depths, as the shader): what is left differs where llvmpipe's float vertex
+    // transform snaps otherwise than the rule, or by rounding.
+    Image sw_rule;
+    havs::render_kbuffer(fd, cam, order, k, sw_rule, nullptr, RasterRule::gl);
+    const havs::ImageCompare8 c_rule = havs::compare_8bit(gls, sw_rule);
+    int64_t rule_at_cov = 0;
+    for (size_t q = 0; q < c_rule.mask.size(); ++q) rule_at_cov += c_rule.mask[q] && rule_diff[q];
     std::vector<uint8_t> race_mask(c_gl.mask.size(), 0);
     for (const Image& b : batched) {
       const havs::ImageCompare8 c = havs::compare_8bit(b, gls);
@@ -128,6 +136,10 @@ nlohmann::json run_gl(Params& p, const ProbeContext& ctx) {
                      // llvmpipe's fragment counts against the gl sampling rule's
                      {"coverage_differing_pixels_gl_rule", rule_px},
                      {"serialized_vs_sw_differing_with_gl_rule_coverage_difference", diff_rule},
+                     {"serialized_vs_sw_gl_rule",
+                      {{"differing", c_rule.differing}, {"differing_by_more_than_1", c_rule.differing_by_more_than_1},
+                       {"max", c_rule.max_diff}, {"rms", c_rule.rms},
+                       {"differing_with_gl_rule_coverage_difference", rule_at_cov}}},
                      {"gl_vs_sw", {{"differing", c_gl.differing}, {"max", c_gl.max_diff}, {"rms", c_gl.rms}}},
                      {"serialized_vs_sw",
                       {{"differing", c_ser.differing}, {"differing_by_more_than_1", c_ser.differing_by_more_than_1},
