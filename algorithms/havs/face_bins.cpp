@@ -26,7 +26,10 @@ SampleRect reach(const SampleFrame& frame, const ProjectedVertex* q, int n) {
     if (i == 0 || q[i].y < ly) ly = q[i].y;
     if (i == 0 || q[i].y > hy) hy = q[i].y;
   }
-  const double m = 1e-6 * (1.0 + std::max({std::fabs(lx), std::fabs(hx), std::fabs(ly), std::fabs(hy)}));
+  double m = 1e-6 * (1.0 + std::max({std::fabs(lx), std::fabs(hx), std::fabs(ly), std::fabs(hy)}));
+  // gl rule: snapping moves a vertex by up to 1/512 pixel, so the covered centres reach that
+  // far beyond the exact projection.
+  if (frame.rule() == RasterRule::gl) m += 1.0 / 128;
   const double x0 = std::ceil(lx - m - 0.5), x1 = std::floor(hx + m - 0.5);
   const double y0 = std::ceil(ly - m - 0.5), y1 = std::floor(hy + m - 0.5);
   if (!(x0 <= x1 && y0 <= y1 && x1 >= 0 && y1 >= 0 && x0 < frame.cols() && y0 < frame.rows()))

@@ -55,6 +55,7 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
   const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
   const SampleRect band{0, row0, frame.cols() - 1, row1 - 1};
   const bool ortho = frame.ortho();
+  const bool gl = frame.rule() == RasterRule::gl;  // llvmpipe's coverage (render_kbuffer)
   const Vec3 eye = frame.eye(), fwd = frame.forward();
   const int cols = frame.cols();
   const Vec3* points = fd.scene.mesh().points.data();
@@ -109,6 +110,7 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
     along(l1, a1, b1);
     if (qs < 0) {
       pr.scan(item.rect.intersect(band), [&](int sx, int sy, double t) {
+        if (gl) t = pr.plane_depth(sx, sy);  // the face plane's depth, as the GL shader's
         const Vec3 x = frame.x(sx, sy);
         const double lam = ortho ? 1.0 : t * inv_len[int64_t(sy) * cols + sx];
         const double s = a1 + b1 * t + lam * dot(l1.g, x);
@@ -120,6 +122,7 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
       along(l2, a2, b2);
       along(ls, as, bs);
       pr.scan(item.rect.intersect(band), [&](int sx, int sy, double t) {
+        if (gl) t = pr.plane_depth(sx, sy);  // the face plane's depth, as the GL shader's
         const Vec3 x = frame.x(sx, sy);
         const double lam = ortho ? 1.0 : t * inv_len[int64_t(sy) * cols + sx];
         const bool second = as + bs * t + lam * dot(ls.g, x) > 0;

@@ -173,9 +173,9 @@ RenderStats render_band(const FaceData& fd, const SampleFrame& frame, const Face
 
 RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
                            const std::vector<int32_t>& face_order, int k, Image& image,
-                           FaceBins* scratch) {
+                           FaceBins* scratch, RasterRule rule) {
   check_k(k);
-  const SampleFrame frame(view, 1);
+  const SampleFrame frame(view, 1, rule);
   FaceBins local;
   FaceBins& b = scratch ? *scratch : local;
   bin_faces(fd, frame, face_order, b);

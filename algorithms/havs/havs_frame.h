@@ -22,6 +22,7 @@
 
 #include "algorithms/havs/kbuffer.h"
 #include "harness/sort/radix_argsort.h"
+#include "harness/raster/raster_rule.h"
 #include "harness/render/compositor.h"
 #include "harness/scene/scene.h"
 #include "harness/view/camera.h"
@@ -74,9 +75,12 @@ struct RenderStats {
 constexpr int kMaxK = 16;
 struct FaceBins;  // face_bins.h
 // `scratch` (optional): the binning buffers, kept by a caller that renders frame after frame.
+// `rule` gl: the faces cover the pixels llvmpipe's rule gives them (raster_rule.h), with
+// the depth and scalar of their own planes, as the GL k-buffer's shader computes them: the
+// software image the GL one is compared with under that rule.
 RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
                            const std::vector<int32_t>& face_order, int k, Image& image,
-                           FaceBins* scratch = nullptr);
+                           FaceBins* scratch = nullptr, RasterRule rule = RasterRule::exact);
 
 struct Segment {
   float d1 = 0, d2 = 0;

@@ -174,6 +174,22 @@ void MpvoCore::create_partial_order(const Camera& view) {
   }
 }
 
+void MpvoCore::set_face_sign(int32_t f, int s) {
+  s = (s > 0) - (s < 0);
+  const int old = sign_[f];
+  if (old == s) return;
+  const int32_t c0 = faces_->cell0[f], c1 = faces_->cell1[f];
+  if (c1 >= 0) {
+    const uint8_t bit0 = static_cast<uint8_t>(1u << face_slot_[2 * f]);
+    const uint8_t bit1 = static_cast<uint8_t>(1u << face_slot_[2 * f + 1]);
+    if (old > 0) --outbound_[c0], behind_mask_[c1] &= static_cast<uint8_t>(~bit1), --arrows_;
+    if (old < 0) --outbound_[c1], behind_mask_[c0] &= static_cast<uint8_t>(~bit0), --arrows_;
+    if (s > 0) ++outbound_[c0], behind_mask_[c1] |= bit1, ++arrows_;
+    if (s < 0) ++outbound_[c1], behind_mask_[c0] |= bit0, ++arrows_;
+  }
+  sign_[f] = static_cast<int8_t>(s);
+}
+
 void MpvoCore::begin_dfs(Ordering& out, const ExtraRelations* extra) {
   if (!faces_) throw std::logic_error("MpvoCore: begin_dfs before bind");
   const size_t n = num_cells();

@@ -120,6 +120,10 @@ class MpvoCore {
   // Off by default; double_sign_wrong then stays 0 because nothing is checked.
   void set_plain_double_signs(bool on) { plain_double_ = on; }
   int face_sign(int32_t f) const { return sign_[f]; }
+  // Replaces face f's sign for this view (after create_partial_order), moving its arrow:
+  // for callers whose rasterizer sees the face from the other side than the exact test
+  // (stencil-xmpvo on llvmpipe's snapped coordinates, snapped_signs.h).
+  void set_face_sign(int32_t f, int s);
   const std::vector<int8_t>& face_signs() const { return sign_; }
   // Boundary face whose outside faces the eye.
   bool front_facing_boundary(int32_t f) const { return faces_->cell1[f] < 0 && sign_[f] > 0; }

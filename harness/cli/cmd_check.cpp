@@ -31,15 +31,18 @@
 namespace vob {
 
 namespace {
-std::string overlap_fault_line(const std::string& source, const OracleResult& r, int view) {
+std::string overlap_fault_line(const std::string& source, const OracleResult& r, int view, RasterRule rule) {
   const nlohmann::json& e = r.overlap_examples.at(0);
   std::string line = source + ": cells " + std::to_string(e["cells"][0].get<int>()) + " and " +
                      std::to_string(e["cells"][1].get<int>()) + " overlap (sample at pixel " +
                      std::to_string(e["pixel"][0].get<int>()) + "," +
                      std::to_string(e["pixel"][1].get<int>());
   line += view >= 0 ? " of view " + std::to_string(view) : std::string(" of the camera");
-  return line + ", " + std::to_string(r.overlapping_pairs) +
-         " overlapping pairs): the input has no visibility order";
+  // Under the gl rule the cells are llvmpipe's snapped ones: snapping can invert a cell much
+  // thinner than a pixel, and then the snapped mesh, not the file, has no visibility order.
+  return line + ", " + std::to_string(r.overlapping_pairs) + " overlapping pairs): " +
+         (rule == RasterRule::gl ? "the cells as llvmpipe snaps them (--raster gl) have no visibility order"
+                                 : "the input has no visibility order");
 }
 
 std::string percent_text(double v) {
@@ -146,7 +149,7 @@ Command add_check_command(CLI::App& app) {
       check_complete(scene, m.ordering, label);
       const Verdict verdict = judge(*p.orderer, label, scene, cam, m.ordering, oo, "--supersample");
       const OracleResult& r = verdict.result;
-      if (verdict.input_fault()) throw InputError(overlap_fault_line(source_name(spec), verdict.order_result(), vi));
+      if (verdict.input_fault()) throw InputError(overlap_fault_line(source_name(spec), verdict.order_result(), vi, raster->rule()));
       failing += r.ok() ? 0 : 1;
       cycles += m.ordering.cycles.cycles;
       covered += r.covered_pixels;

@@ -7,6 +7,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "harness/raster/cell_raster_gl.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/splat.h"
 #include "harness/scene/input_error.h"
@@ -38,9 +39,9 @@ class FragmentSink {
 FragmentCollector::FragmentCollector(const Scene& scene, const Camera& view,
                                      const std::vector<int32_t>& order, const CollectOptions& opt)
     : scene_(scene), order_(order), frame_(view, opt.supersample, opt.raster) {
-  if (opt.raster == RasterRule::gl && scene.kind() != SceneKind::Triangles)
+  if (opt.raster == RasterRule::gl && scene.kind() == SceneKind::Voxels)
     throw InputError("--raster gl", std::string(scene_kind_name(scene.kind())),
-                     "the gl sampling rule covers triangle scenes only so far");
+                     "the gl sampling rule covers triangle and cell scenes");
   if (opt.splat_radius_px < 0 || !std::isfinite(opt.splat_radius_px))
     throw InputError("oracle", "splat radius", "must be a finite number >= 0");
   splat_radius_px_ = opt.splat_radius_px;
@@ -64,12 +65,15 @@ FragmentCollector::FragmentCollector(const Scene& scene, const Camera& view,
   tbb::parallel_for(tbb::blocked_range<size_t>(0, order_.size(), 1024),
                     [&](const tbb::blocked_range<size_t>& r) {
     std::optional<CellClipper> clip;
+    std::optional<GlCellRaster> gl_cells;
     if (scene_.kind() == SceneKind::Cells) clip.emplace(frame_, scene_.mesh(), projected_, min_segment_);
+    if (scene_.kind() == SceneKind::Cells && frame_.rule() == RasterRule::gl)
+      gl_cells.emplace(frame_, scene_.mesh(), projected_, min_segment_);
     for (size_t i = r.begin(); i < r.end(); ++i) {
       const int32_t id = order_[i];
       SampleRect b;
       switch (scene_.kind()) {
-        case SceneKind::Cells: b = clip->bounds(id); break;
+        case SceneKind::Cells: b = gl_cells ? gl_cells->bounds(id) : clip->bounds(id); break;
         case SceneKind::Triangles: {
           const TriangleSoup& s = scene_.soup();
           const Vec3 v[3] = {s.points[s.tris[id][0]], s.points[s.tris[id][1]], s.points[s.tris[id][2]]};
@@ -109,6 +113,11 @@ void FragmentCollector::emit_primitive(int32_t pos, const SampleRect& clip, Frag
   sink.begin(id, pos);
   switch (scene_.kind()) {
     case SceneKind::Cells: {
+      if (frame_.rule() == RasterRule::gl) {  // faces under llvmpipe's rule (cell_raster_gl.h)
+        GlCellRaster gc(frame_, scene_.mesh(), projected_, min_segment_);
+        gc.scan(id, clip, [&](int sx, int sy, double t0, double t1) { sink.add(sx, sy, t0, t1); });
+        break;
+      }
       CellClipper cc(frame_, scene_.mesh(), projected_, min_segment_);
       cc.setup(id);
       cc.scan(clip, [&](int sx, int sy, double t0, double t1) { sink.add(sx, sy, t0, t1); });

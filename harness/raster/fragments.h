@@ -44,7 +44,7 @@ struct CollectOptions {
   int supersample = 1;         // S x S samples per pixel
   double splat_radius_px = 0;  // voxels: footprint radius in pixels; 0 = projected voxel size
   int band_rows = 0;           // rows per band; 0 = about 8192 samples per band
-  RasterRule raster = RasterRule::exact;  // gl: llvmpipe's coverage (raster_rule.h), triangles only
+  RasterRule raster = RasterRule::exact;  // gl: llvmpipe's coverage (raster_rule.h; cells: cell_raster_gl.h)
 };
 
 class FragmentCollector {

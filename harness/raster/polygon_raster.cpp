@@ -82,9 +82,15 @@ bool PolygonRaster::setup(const SampleFrame& frame, const Vec3* v, int n,
   frame_ = &frame;
   count_ = 0;
   gl_ = frame.rule() == RasterRule::gl;
-  if (gl_) return setup_gl(frame, v, n, projected);
+  plane_ok_ = false;
+  if (gl_) {
+    if (!setup_gl(frame, v, n, projected)) return false;
+    plane_ok_ = set_plane(frame, v, n);  // for plane_depth only
+    return true;
+  }
   if (!may_cover_a_sample(frame, v, n, projected)) return false;
   if (!set_plane(frame, v, n)) return false;
+  plane_ok_ = true;
   if (n == 3) {
     add_triangle(v[0], v[1], v[2]);
   } else {

@@ -31,6 +31,7 @@
 // are not covered.
 #pragma once
 #include <cmath>
+#include <limits>
 
 #include "harness/raster/sample_frame.h"
 
@@ -64,6 +65,13 @@ class PolygonRaster {
              const ProjectedVertex* projected = nullptr);
   // A conservative rectangle of the samples it may cover.
   SampleRect bounds() const;
+  // The ray parameter t at sample (sx, sy) on the polygon's own (unsnapped) plane, under
+  // either rule; NaN where the ray misses it. Under the gl rule scan() gives the depth of
+  // the snapped triangles instead; a renderer that computes depth itself (the HAVS GL
+  // k-buffer's shader) takes llvmpipe's coverage with this depth.
+  double plane_depth(int sx, int sy) const {
+    return plane_ok_ ? depth(frame_->x(sx, sy)) : std::numeric_limits<double>::quiet_NaN();
+  }
   // Calls emit(sx, sy, t) for every covered sample in `clip`, row by row, bottom up.
   template <class Emit>
   void scan(const SampleRect& clip, Emit&& emit) const;
@@ -137,6 +145,7 @@ class PolygonRaster {
   Triangle tri_[2];
   GlTriangle gl_tri_[2];
   bool gl_ = false;
+  bool plane_ok_ = false;  // plane_ set (exact rule: always when setup succeeds)
   int count_ = 0;
   SampleRect box_;  // the polygon's projected bounds, valid when have_box_
   bool have_box_ = false;

@@ -29,9 +29,12 @@ double median_seconds(int repeats, F&& f) {
   return t[t.size() / 2];
 }
 
-// Fragments per pixel as the harness rasterizer (and so the software k-buffer) sees them.
-std::vector<uint32_t> pixel_fragment_counts(const havs::FaceData& fd, const Camera& cam) {
-  const SampleFrame frame(cam, 1);
+// Fragments per pixel as the harness rasterizer sees them under `rule`: exact is what the
+// software k-buffer rasterizes; gl is llvmpipe's rule (raster_rule.h) on the harness' own
+// projection, which the GL k-buffer's float vertex transform reaches up to rounding.
+std::vector<uint32_t> pixel_fragment_counts(const havs::FaceData& fd, const Camera& cam,
+                                            RasterRule rule = RasterRule::exact) {
+  const SampleFrame frame(cam, 1, rule);
   std::vector<uint32_t> n(size_t(frame.num_samples()), 0);
   const MeshFaces& mf = *fd.faces;
   Vec3 v[4];
@@ -82,10 +85,14 @@ nlohmann::json run_gl(Params& p, const ProbeContext& ctx) {
       gl->render(cam, order, k, havs::GlDrawMode::Batched, glb, &gl_pixel_frags);
     }
     // Pixels where GL's coverage differs from the harness rasterizer's (fragment counts).
-    std::vector<uint8_t> cov_diff(gl_pixel_frags.size(), 0);
+    std::vector<uint8_t> cov_diff(gl_pixel_frags.size(), 0), rule_diff(gl_pixel_frags.size(), 0);
     {
       const std::vector<uint32_t> sw_frags = pixel_fragment_counts(fd, cam);
-      for (size_t q = 0; q < cov_diff.size(); ++q) cov_diff[q] = sw_frags[q] != gl_pixel_frags[q];
+      const std::vector<uint32_t> rule_frags = pixel_fragment_counts(fd, cam, RasterRule::gl);
+      for (size_t q = 0; q < cov_diff.size(); ++q) {
+        cov_diff[q] = sw_frags[q] != gl_pixel_frags[q];
+        rule_diff[q] = rule_frags[q] != gl_pixel_frags[q];
+      }
     }
     const double t_sw = median_seconds(ctx.repeats, [&] { rs = havs::render_kbuffer(fd, cam, order, k, sw); });
     // Every batched frame is compared with the serialized image: a race shows up in any.
@@ -97,12 +104,24 @@ nlohmann::json run_gl(Params& p, const ProbeContext& ctx) {
     const double t_ser =
         median_seconds(ctx.repeats, [&] { gsr = gl->render(cam, order, k, havs::GlDrawMode::Serialized, gls); });
     const havs::ImageCompare8 c_gl = havs::compare_8bit(glb, sw), c_ser = havs::compare_8bit(gls, sw);
+    // The software k-buffer under the gl sampling rule (llvmpipe's coverage, the planes'
+    // own depths, as the shader): what is left differs where llvmpipe's float vertex
+    // transform snaps otherwise than the rule, or by rounding.
+    Image sw_rule;
+    havs::render_kbuffer(fd, cam, order, k, sw_rule, nullptr, RasterRule::gl);
+    const havs::ImageCompare8 c_rule = havs::compare_8bit(gls, sw_rule);
+    int64_t rule_at_cov = 0;
+    for (size_t q = 0; q < c_rule.mask.size(); ++q) rule_at_cov += c_rule.mask[q] && rule_diff[q];
     std::vector<uint8_t> race_mask(c_gl.mask.size(), 0);
     for (const Image& b : batched) {
       const havs::ImageCompare8 c = havs::compare_8bit(b, gls);
       for (size_t q = 0; q < c.mask.size(); ++q) race_mask[q] |= c.mask[q];
     }
-    int64_t race_px = 0, cov_px = 0, diff_cov = 0, covered = 0;
+    int64_t race_px = 0, cov_px = 0, diff_cov = 0, covered = 0, rule_px = 0, diff_rule = 0;
+    for (size_t q = 0; q < rule_diff.size(); ++q) {
+      rule_px += rule_diff[q];
+      diff_rule += rule_diff[q] && c_ser.mask[q];
+    }
     for (uint8_t m : race_mask) race_px += m;
     for (size_t q = 0; q < cov_diff.size(); ++q) {
       cov_px += cov_diff[q];
@@ -114,6 +133,13 @@ nlohmann::json run_gl(Params& p, const ProbeContext& ctx) {
                      {"gl_fragments", gb.fragments}, {"gl_serialized_fragments", gsr.fragments},
                      {"covered_pixels", covered}, {"coverage_differing_pixels", cov_px},
                      {"serialized_vs_sw_differing_with_coverage_difference", diff_cov},
+                     // llvmpipe's fragment counts against the gl sampling rule's
+                     {"coverage_differing_pixels_gl_rule", rule_px},
+                     {"serialized_vs_sw_differing_with_gl_rule_coverage_difference", diff_rule},
+                     {"serialized_vs_sw_gl_rule",
+                      {{"differing", c_rule.differing}, {"differing_by_more_than_1", c_rule.differing_by_more_than_1},
+                       {"max", c_rule.max_diff}, {"rms", c_rule.rms},
+                       {"differing_with_gl_rule_coverage_difference", rule_at_cov}}},
                      {"gl_vs_sw", {{"differing", c_gl.differing}, {"max", c_gl.max_diff}, {"rms", c_gl.rms}}},
                      {"serialized_vs_sw",
                       {{"differing", c_ser.differing}, {"differing_by_more_than_1", c_ser.differing_by_more_than_1},
