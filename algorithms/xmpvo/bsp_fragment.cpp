@@ -15,24 +15,33 @@ K::Vector_3 normal(const Vec3* p) { return CGAL::cross_product(ev(p[1]) - ev(p[0
 }  // namespace
 
 // orient3d of vertex k of triangle tri, once per point and plane (a point is in about six
-// triangles); a point of the plane's own triple (shared by neighbours, the common exact
-// zero) is recognised without arithmetic.
+// triangles): a point of the plane's own triple (shared by neighbours, the common exact
+// zero) without arithmetic, most others by the double filter, the rest exactly.
 int FragmentOps::side(int32_t h, int32_t tri, int k) const {
   const int32_t v = vid_[3 * static_cast<size_t>(tri) + k];
   const int64_t tag = planes_.tag(h);
   if (memo_tag_[v] == tag) return memo_side_[v];
   const Vec3 p = tris_[tri].p[k];
   const Vec3* q = planes_.points(h);
-  const int r = p == q[0] || p == q[1] || p == q[2] ? 0 : orient3d(q[0], q[1], q[2], p);
+  int r = p == q[0] || p == q[1] || p == q[2] ? 0 : planes_.point_side_filtered(h, p);
+  if (r == 2) {
+    // Near-coplanar neighbours (TetGen's Steiner points on one input facet) come back to
+    // the same few point-plane pairs many times.
+    const auto [it, fresh] = exact_memo_.try_emplace((static_cast<uint64_t>(tag) << 32) | static_cast<uint32_t>(v), 0);
+    if (fresh) it->second = static_cast<int8_t>(planes_.point_side_exact(h, p));
+    r = it->second;
+  }
   memo_tag_[v] = tag;
   memo_side_[v] = static_cast<int8_t>(r);
   return r;
 }
 
-int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
-  const BspTriangle& t = tris_[f.tri];
+// The sides that follow from the triangle's vertices and the planes naming each vertex;
+// 2 where the filter or exact arithmetic must decide (then `pending`).
+int FragmentOps::known_sides(int32_t h, const Frag& f, std::vector<int>& s, bool& pending) const {
   int ts[3];
   for (int k = 0; k < 3; ++k) ts[k] = side(h, f.tri, k);
+  pending = false;
   if (f.whole) {
     s.assign(ts, ts + 3);
     return 3;
@@ -44,7 +53,6 @@ int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
     for (int k = 0; k < n; ++k) s[k] = pos ? 1 : (neg ? -1 : 0);
     return n;
   }
-  bool pending = false;
   for (int k = 0; k < n; ++k) {
     const FVert& v = f.poly[k];
     int r = 2;  // 2: not decided yet
@@ -64,19 +72,81 @@ int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
     s[k] = r;
     pending |= r == 2;
   }
+  return n;
+}
+
+int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
+  bool pending;
+  const int n = known_sides(h, f, s, pending);
   if (!pending) return n;
   {
     RoundUp up;
     for (int k = 0; k < n; ++k)
-      if (s[k] == 2) s[k] = planes_.filtered_side(h, f.poly[k].box);
+      if (s[k] == 2) ++filtered_, s[k] = planes_.filtered_side(h, f.poly[k].box);
   }
+  const BspTriangle& t = tris_[f.tri];
   for (int k = 0; k < n; ++k) {
     if (s[k] != 2) continue;
+    ++exact_;
     const FVert& v = f.poly[k];
     s[k] = v.edge >= 0 ? planes_.exact_side_edge(t.p[v.edge], t.p[(v.edge + 1) % 3], v.pa, h)
                        : planes_.exact_side_meet(f.tri, v.pa, v.pb, h);
   }
   return n;
+}
+
+Side FragmentOps::approx_side(int32_t h, const Frag& f, std::vector<int>& s) const {
+  bool pending;
+  const int n = known_sides(h, f, s, pending);
+  if (!pending) return side_of(s.data(), n);
+  bool pos = false, neg = false;
+  int unknown = 0;
+  for (int k = 0; k < n; ++k) {
+    int r = s[k];
+    if (r == 2) {
+      const IBox& b = f.poly[k].box;
+      r = planes_.approx_side(h, {0.5 * (b.x.inf() + b.x.sup()), 0.5 * (b.y.inf() + b.y.sup()),
+                                  0.5 * (b.z.inf() + b.z.sup())});
+    }
+    if (r == 2) ++unknown;
+    else pos |= r > 0, neg |= r < 0;
+  }
+  // Vertices too close to call count as a split when they could make one.
+  if (unknown >= 2 || (unknown == 1 && (pos || neg))) return kSplit;
+  return pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
+}
+
+void FragmentOps::approx_sides(const Frag& f, const int32_t* hs, int k, Side* out, std::vector<int>& s) const {
+  const BspTriangle& t = tris_[f.tri];
+  pts_.clear();
+  if (f.whole) {
+    pts_.assign(t.p, t.p + 3);
+  } else {
+    for (const FVert& v : f.poly) {
+      const IBox& b = v.box;
+      pts_.push_back(v.at >= 0 ? t.p[v.at]
+                               : Vec3{0.5 * (b.x.inf() + b.x.sup()), 0.5 * (b.y.inf() + b.y.sup()),
+                                      0.5 * (b.z.inf() + b.z.sup())});
+    }
+  }
+  for (int c = 0; c < k; ++c) {
+    bool pos = false, neg = false;
+    int unknown = 0;
+    const Vec3* q = planes_.points(hs[c]);
+    for (size_t i = 0; i < pts_.size() && !unknown; ++i) {
+      const Vec3 p = pts_[i];
+      int r = planes_.approx_side(hs[c], p);
+      // Too close to call: a vertex of the triangle by its exact (memoized) side, else the
+      // fragment by approx_side.
+      if (r == 2) {
+        const int at = f.whole ? static_cast<int>(i) : f.poly[i].at;
+        if (at >= 0) r = p == q[0] || p == q[1] || p == q[2] ? 0 : side(hs[c], f.tri, at);
+        else unknown = 1;
+      }
+      pos |= r > 0, neg |= r < 0;
+    }
+    out[c] = unknown ? approx_side(hs[c], f, s) : pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
+  }
 }
 
 Side FragmentOps::side_of(const int* s, int n) {

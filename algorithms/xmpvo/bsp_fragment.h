@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "algorithms/xmpvo/bsp_planes.h"
@@ -51,6 +52,17 @@ class FragmentOps {
   int classify(int32_t h, const Frag& f, std::vector<int>& s) const;
   // Whether every vertex is on h (kCoplanar), all on one closed side, or on both.
   static Side side_of(const int* s, int n);
+  // A guess of side_of(classify(...)) for scoring splitters: exact where classify needs
+  // neither the filter nor exact arithmetic, else plain doubles at the middles of the
+  // vertices' boxes, and a vertex too close to h to call counts as a split when it could
+  // make one. No interval arithmetic, no exact arithmetic.
+  Side approx_side(int32_t h, const Frag& f, std::vector<int>& s) const;
+  // The same for k planes: out[c] for hs[c]. Plain doubles at the fragment's (approximate)
+  // vertices, loaded once; approx_side where a vertex is too close to a plane to call.
+  void approx_sides(const Frag& f, const int32_t* hs, int k, Side* out, std::vector<int>& s) const;
+  // Vertex sides of split fragments decided by the interval filter, and by exact arithmetic.
+  int64_t filtered_tests() const { return filtered_; }
+  int64_t exact_tests() const { return exact_; }
   // Splits a fragment with vertices strictly on both sides of h (s from classify).
   void split(int32_t h, const Frag& f, const int* s, int n, Frag& front, Frag& back) const;
   // The fragment's vertices as exact points (for tests: constructions in CGAL's Epeck).
@@ -58,6 +70,7 @@ class FragmentOps {
 
  private:
   int side(int32_t h, int32_t tri, int k) const;
+  int known_sides(int32_t h, const Frag& f, std::vector<int>& s, bool& pending) const;
   static std::vector<FVert> whole_poly();
   FVert crossing(int32_t tri, int32_t label, int32_t h) const;  // inside RoundUp
 
@@ -67,6 +80,10 @@ class FragmentOps {
   // Per point: the tag of the plane its side was last found for, and that side.
   mutable std::vector<int64_t> memo_tag_;
   mutable std::vector<int8_t> memo_side_;
+  // Exact sides orient3d had to decide, by (plane tag << 32 | point).
+  mutable std::unordered_map<uint64_t, int8_t> exact_memo_;
+  mutable int64_t filtered_ = 0, exact_ = 0;
+  mutable std::vector<Vec3> pts_;  // approx_sides' vertices
 };
 
 }  // namespace vob::xmpvo::bsp

@@ -53,47 +53,54 @@ int32_t median_plane(const std::vector<Frag>& frags, const std::vector<BspTriang
 
 // The splitting plane of a node (an id of `planes`): the best of a few evenly spaced
 // triangle planes and, with free_planes, one median plane, scored on a sample of the
-// fragments by split_weight * splits + |front - back|.
-int32_t choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, const FragmentOps& ops,
-                     const BspOptions& opt, PlaneTable& planes, std::vector<int>& s) {
+// fragments by split_weight * splits + |front - back|. Scores are guesses in doubles
+// (FragmentOps::approx_side): they choose a plane, exact sides then split by it.
+struct Choice {
+  int32_t plane;     // the choice
+  int32_t triangle;  // the best triangle plane (the choice unless that is a free plane)
+};
+Choice choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, const FragmentOps& ops,
+                    const BspOptions& opt, PlaneTable& planes, std::vector<int>& s) {
   const int64_t m = static_cast<int64_t>(frags.size());
-  int32_t best = frags[0].tri;
-  if (m <= 1 || opt.candidates <= 1) return best;
-  int64_t best_score = -1;
+  const int32_t first = frags[0].tri;
+  if (m <= 1 || opt.candidates <= 1) return {first, first};
   const int cands = static_cast<int>(std::min<int64_t>(opt.candidates, m));
   const int64_t stride = std::max<int64_t>(1, m / std::max(opt.sample, 1));
-  bool both = false;  // the last scored plane has sample fragments strictly on each side
-  const int64_t samples = (m + stride - 1) / stride;
-  // A candidate's score, or a value >= best_score as soon as even the rest of the sample
-  // could not bring it below (the choice is the same, for less work).
-  auto score = [&](int32_t h) -> int64_t {
-    int64_t front = 0, back = 0, splits = 0, seen = 0;
-    for (int64_t i = 0; i < m; i += stride) {
-      const int n = ops.classify(h, frags[i], s);
-      const bsp::Side sd = FragmentOps::side_of(s.data(), n);
-      front += sd == bsp::kFront, back += sd == bsp::kBack, splits += sd == bsp::kSplit;
-      const int64_t left = samples - ++seen;
-      if (best_score >= 0 && opt.split_weight * splits + std::llabs(front - back) - left >= best_score) {
-        both = false;
-        return best_score;
-      }
-    }
-    both = front > 0 && back > 0;
-    return opt.split_weight * splits + std::llabs(front - back);
-  };
-  for (int c = 0; c < cands; ++c) {
-    const int32_t cand = frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri;
-    const int64_t sc = score(cand);
-    if (best_score < 0 || sc < best_score) best_score = sc, best = cand;
+  std::vector<int32_t> hs;
+  for (int c = 0; c < cands; ++c)
+    hs.push_back(frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri);
+  const int32_t size = planes.size();
+  if (opt.free_planes) hs.push_back(median_plane(frags, tris, stride, planes));
+  // All candidates on each sampled fragment in turn: its vertices are loaded once.
+  const int k = static_cast<int>(hs.size());
+  std::vector<int64_t> front(k, 0), back(k, 0), splits(k, 0);
+  std::vector<bsp::Side> sides(k);
+  for (int64_t i = 0; i < m; i += stride) {
+    ops.approx_sides(frags[i], hs.data(), k, sides.data(), s);
+    for (int c = 0; c < k; ++c)
+      front[c] += sides[c] == bsp::kFront, back[c] += sides[c] == bsp::kBack, splits[c] += sides[c] == bsp::kSplit;
   }
-  if (opt.free_planes) {
-    const int32_t size = planes.size();
-    const int32_t h = median_plane(frags, tris, stride, planes);
-    // A free plane holds no fragment: it must leave one out of each child.
-    if (score(h) < best_score && both) return h;
-    planes.truncate(size);
+  auto score = [&](int c) { return opt.split_weight * splits[c] + std::llabs(front[c] - back[c]); };
+  int best = 0;
+  for (int c = 1; c < cands; ++c)
+    if (score(c) < score(best)) best = c;
+  // A free plane holds no fragment: it must leave one out of each child.
+  if (opt.free_planes && score(cands) < score(best) && front[cands] > 0 && back[cands] > 0) return {hs[cands], hs[best]};
+  planes.truncate(size);
+  return {hs[best], hs[best]};
+}
+
+// Whether exact sides put fragments into both children of plane h (a guessed free plane
+// must, or the node would make no progress).
+bool divides(const std::vector<Frag>& frags, int32_t h, const FragmentOps& ops, std::vector<int>& s) {
+  bool front = false, back = false;
+  for (const Frag& f : frags) {
+    const bsp::Side sd = FragmentOps::side_of(s.data(), ops.classify(h, f, s));
+    front |= sd == bsp::kFront || sd == bsp::kSplit;
+    back |= sd == bsp::kBack || sd == bsp::kSplit;
+    if (front && back) return true;
   }
-  return best;
+  return false;
 }
 
 }  // namespace
@@ -152,7 +159,13 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
       Work w = std::move(stack.back());
       stack.pop_back();
       t.stats_.depth = std::max<int64_t>(t.stats_.depth, w.depth);
-      const int32_t h = choose_plane(w.frags, t.tris_, ops, opt, planes, s);
+      const Choice choice = choose_plane(w.frags, t.tris_, ops, opt, planes, s);
+      int32_t h = choice.plane;
+      if (h != choice.triangle && !divides(w.frags, h, ops, s)) {
+        planes.truncate(h);  // the free plane is the table's last
+        h = choice.triangle;
+        ++t.stats_.free_refused;
+      }
       std::vector<Frag> front, back;
       coplanar.clear();
       for (Frag& f : w.frags) {
@@ -179,6 +192,7 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
       BspNode& node = t.nodes_[w.node];
       node_plane[w.node] = h;
       node.splitter = h < b ? h : -1;
+      t.stats_.free_nodes += h >= b;
       node.first = static_cast<int32_t>(t.items_.size());
       node.count = static_cast<int32_t>(coplanar.size());
       t.items_.insert(t.items_.end(), coplanar.begin(), coplanar.end());
@@ -267,6 +281,9 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
     node.lo = lo, node.hi = hi;
   }
   t.stats_.nodes = static_cast<int64_t>(t.nodes_.size());
+  t.stats_.filtered_tests = ops.filtered_tests();
+  t.stats_.exact_tests = ops.exact_tests();
+  t.stats_.point_tests = planes.exact_point_tests();
   t.stats_.growth = b ? static_cast<double>(t.stats_.fragments) / b : 0.0;
   t.stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
