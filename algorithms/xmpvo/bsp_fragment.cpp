@@ -116,37 +116,46 @@ Side FragmentOps::approx_side(int32_t h, const Frag& f, std::vector<int>& s) con
   return pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
 }
 
-void FragmentOps::approx_sides(const Frag& f, const int32_t* hs, int k, Side* out, std::vector<int>& s) const {
+void FragmentOps::approx_points(const Frag& f, std::vector<Vec3>& out) const {
   const BspTriangle& t = tris_[f.tri];
-  pts_.clear();
   if (f.whole) {
-    pts_.assign(t.p, t.p + 3);
-  } else {
-    for (const FVert& v : f.poly) {
-      const IBox& b = v.box;
-      pts_.push_back(v.at >= 0 ? t.p[v.at]
-                               : Vec3{0.5 * (b.x.inf() + b.x.sup()), 0.5 * (b.y.inf() + b.y.sup()),
-                                      0.5 * (b.z.inf() + b.z.sup())});
-    }
+    out.insert(out.end(), t.p, t.p + 3);
+    return;
   }
-  for (int c = 0; c < k; ++c) {
-    bool pos = false, neg = false;
-    int unknown = 0;
-    const Vec3* q = planes_.points(hs[c]);
-    for (size_t i = 0; i < pts_.size() && !unknown; ++i) {
-      const Vec3 p = pts_[i];
-      int r = planes_.approx_side(hs[c], p);
-      // Too close to call: a vertex of the triangle by its exact (memoized) side, else the
-      // fragment by approx_side.
-      if (r == 2) {
-        const int at = f.whole ? static_cast<int>(i) : f.poly[i].at;
-        if (at >= 0) r = p == q[0] || p == q[1] || p == q[2] ? 0 : side(hs[c], f.tri, at);
-        else unknown = 1;
+  for (const FVert& v : f.poly) {
+    const IBox& b = v.box;
+    out.push_back(v.at >= 0 ? t.p[v.at]
+                            : Vec3{0.5 * (b.x.inf() + b.x.sup()), 0.5 * (b.y.inf() + b.y.sup()),
+                                   0.5 * (b.z.inf() + b.z.sup())});
+  }
+}
+
+Side FragmentOps::guess_side(int32_t h, const Frag& f, const Vec3* pts, std::vector<int>& s) const {
+  if (h == f.tri) return kCoplanar;  // its own plane
+  const int n = f.whole ? 3 : static_cast<int>(f.poly.size());
+  const Vec3* q = planes_.points(h);
+  bool pos = false, neg = false;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = pts[i];
+    int r = planes_.approx_side(h, p);
+    // Too close to call: a vertex of the triangle by its exact (memoized) side, a point
+    // named by h, or inside an edge whose ends decide, as known_sides; else the fragment
+    // by approx_side.
+    if (r == 2) {
+      if (f.whole || f.poly[i].at >= 0) {
+        r = p == q[0] || p == q[1] || p == q[2] ? 0 : side(h, f.tri, f.whole ? i : f.poly[i].at);
+      } else if (f.poly[i].pa == h || f.poly[i].pb == h) {
+        r = 0;
+      } else if (f.poly[i].edge >= 0) {
+        const int e = f.poly[i].edge;
+        const int sa = side(h, f.tri, e), sb = side(h, f.tri, (e + 1) % 3);
+        r = sa == sb ? sa : sa == 0 ? sb : sb == 0 ? sa : 2;
       }
-      pos |= r > 0, neg |= r < 0;
+      if (r == 2) return approx_side(h, f, s);
     }
-    out[c] = unknown ? approx_side(hs[c], f, s) : pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
+    pos |= r > 0, neg |= r < 0;
   }
+  return pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
 }
 
 Side FragmentOps::side_of(const int* s, int n) {

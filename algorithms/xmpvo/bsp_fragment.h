@@ -57,9 +57,13 @@ class FragmentOps {
   // vertices' boxes, and a vertex too close to h to call counts as a split when it could
   // make one. No interval arithmetic, no exact arithmetic.
   Side approx_side(int32_t h, const Frag& f, std::vector<int>& s) const;
-  // The same for k planes: out[c] for hs[c]. Plain doubles at the fragment's (approximate)
-  // vertices, loaded once; approx_side where a vertex is too close to a plane to call.
-  void approx_sides(const Frag& f, const int32_t* hs, int k, Side* out, std::vector<int>& s) const;
+  // The fragment's vertices, approximately (a split vertex at the middle of its box),
+  // appended to out: the points guess_side takes.
+  void approx_points(const Frag& f, std::vector<Vec3>& out) const;
+  // A guess of the side of h from those points, in plain doubles; where a point is too
+  // close to h to call, exact sides of the triangle's vertices as known_sides uses them,
+  // then approx_side.
+  Side guess_side(int32_t h, const Frag& f, const Vec3* pts, std::vector<int>& s) const;
   // Vertex sides of split fragments decided by the interval filter, and by exact arithmetic.
   int64_t filtered_tests() const { return filtered_; }
   int64_t exact_tests() const { return exact_; }
@@ -83,7 +87,6 @@ class FragmentOps {
   // Exact sides orient3d had to decide, by (plane tag << 32 | point).
   mutable std::unordered_map<uint64_t, int8_t> exact_memo_;
   mutable int64_t filtered_ = 0, exact_ = 0;
-  mutable std::vector<Vec3> pts_;  // approx_sides' vertices
 };
 
 }  // namespace vob::xmpvo::bsp

@@ -54,40 +54,60 @@ int32_t median_plane(const std::vector<Frag>& frags, const std::vector<BspTriang
 // The splitting plane of a node (an id of `planes`): the best of a few evenly spaced
 // triangle planes and, with free_planes, one median plane, scored on a sample of the
 // fragments by split_weight * splits + |front - back|. Scores are guesses in doubles
-// (FragmentOps::approx_side): they choose a plane, exact sides then split by it.
+// (FragmentOps::guess_side): they choose a plane, exact sides then split by it.
 struct Choice {
   int32_t plane;     // the choice
   int32_t triangle;  // the best triangle plane (the choice unless that is a free plane)
 };
+struct Sample {  // the sampled fragments' approximate points, gathered once per node
+  std::vector<int32_t> frag, start;
+  std::vector<Vec3> pts;
+};
 Choice choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, const FragmentOps& ops,
-                    const BspOptions& opt, PlaneTable& planes, std::vector<int>& s) {
+                    const BspOptions& opt, PlaneTable& planes, Sample& smp, std::vector<int>& s) {
   const int64_t m = static_cast<int64_t>(frags.size());
-  const int32_t first = frags[0].tri;
-  if (m <= 1 || opt.candidates <= 1) return {first, first};
+  int32_t best = frags[0].tri;
+  if (m <= 1 || opt.candidates <= 1) return {best, best};
   const int cands = static_cast<int>(std::min<int64_t>(opt.candidates, m));
   const int64_t stride = std::max<int64_t>(1, m / std::max(opt.sample, 1));
-  std::vector<int32_t> hs;
-  for (int c = 0; c < cands; ++c)
-    hs.push_back(frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri);
-  const int32_t size = planes.size();
-  if (opt.free_planes) hs.push_back(median_plane(frags, tris, stride, planes));
-  // All candidates on each sampled fragment in turn: its vertices are loaded once.
-  const int k = static_cast<int>(hs.size());
-  std::vector<int64_t> front(k, 0), back(k, 0), splits(k, 0);
-  std::vector<bsp::Side> sides(k);
+  smp.frag.clear(), smp.start.clear(), smp.pts.clear();
   for (int64_t i = 0; i < m; i += stride) {
-    ops.approx_sides(frags[i], hs.data(), k, sides.data(), s);
-    for (int c = 0; c < k; ++c)
-      front[c] += sides[c] == bsp::kFront, back[c] += sides[c] == bsp::kBack, splits[c] += sides[c] == bsp::kSplit;
+    smp.frag.push_back(static_cast<int32_t>(i));
+    smp.start.push_back(static_cast<int32_t>(smp.pts.size()));
+    ops.approx_points(frags[i], smp.pts);
   }
-  auto score = [&](int c) { return opt.split_weight * splits[c] + std::llabs(front[c] - back[c]); };
-  int best = 0;
-  for (int c = 1; c < cands; ++c)
-    if (score(c) < score(best)) best = c;
-  // A free plane holds no fragment: it must leave one out of each child.
-  if (opt.free_planes && score(cands) < score(best) && front[cands] > 0 && back[cands] > 0) return {hs[cands], hs[best]};
-  planes.truncate(size);
-  return {hs[best], hs[best]};
+  smp.start.push_back(static_cast<int32_t>(smp.pts.size()));
+  const int64_t samples = static_cast<int64_t>(smp.frag.size());
+  int64_t best_score = -1;
+  bool both = false;  // the last scored plane has sample fragments strictly on each side
+  // A candidate's score, or a value >= best_score as soon as even the rest of the sample
+  // could not bring it below (the choice is the same, for less work).
+  auto score = [&](int32_t h) -> int64_t {
+    int64_t front = 0, back = 0, splits = 0;
+    for (int64_t j = 0; j < samples; ++j) {
+      const bsp::Side sd = ops.guess_side(h, frags[smp.frag[j]], &smp.pts[smp.start[j]], s);
+      front += sd == bsp::kFront, back += sd == bsp::kBack, splits += sd == bsp::kSplit;
+      if (best_score >= 0 && opt.split_weight * splits + std::llabs(front - back) - (samples - j - 1) >= best_score) {
+        both = false;
+        return best_score;
+      }
+    }
+    both = front > 0 && back > 0;
+    return opt.split_weight * splits + std::llabs(front - back);
+  };
+  for (int c = 0; c < cands; ++c) {
+    const int32_t cand = frags[(c * m) / cands + (m > cands ? (c * 7919) % (m / cands) : 0)].tri;
+    const int64_t sc = score(cand);
+    if (best_score < 0 || sc < best_score) best_score = sc, best = cand;
+  }
+  if (opt.free_planes) {
+    const int32_t size = planes.size();
+    const int32_t h = median_plane(frags, tris, stride, planes);
+    // A free plane holds no fragment: it must leave one out of each child.
+    if (score(h) < best_score && both) return {h, best};
+    planes.truncate(size);
+  }
+  return {best, best};
 }
 
 // Whether exact sides put fragments into both children of plane h (a guessed free plane
@@ -155,11 +175,12 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
     stack.push_back(std::move(root));
     std::vector<int32_t> coplanar;
     std::vector<int> s;
+    Sample sample;
     while (!stack.empty()) {
       Work w = std::move(stack.back());
       stack.pop_back();
       t.stats_.depth = std::max<int64_t>(t.stats_.depth, w.depth);
-      const Choice choice = choose_plane(w.frags, t.tris_, ops, opt, planes, s);
+      const Choice choice = choose_plane(w.frags, t.tris_, ops, opt, planes, sample, s);
       int32_t h = choice.plane;
       if (h != choice.triangle && !divides(w.frags, h, ops, s)) {
         planes.truncate(h);  // the free plane is the table's last
