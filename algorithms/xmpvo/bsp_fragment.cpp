@@ -20,7 +20,8 @@ K::Vector_3 normal(const Vec3* p) { return CGAL::cross_product(ev(p[1]) - ev(p[0
 int FragmentOps::side(int32_t h, int32_t tri, int k) const {
   const int32_t v = vid_[3 * static_cast<size_t>(tri) + k];
   const int64_t tag = planes_.tag(h);
-  if (memo_tag_[v] == tag) return memo_side_[v];
+  const uint32_t m = memo_[v];
+  if (m >> 2 == static_cast<uint64_t>(tag)) return static_cast<int>(m & 3) - 1;
   const Vec3 p = tris_[tri].p[k];
   const Vec3* q = planes_.points(h);
   int r = p == q[0] || p == q[1] || p == q[2] ? 0 : planes_.point_side_filtered(h, p);
@@ -31,8 +32,7 @@ int FragmentOps::side(int32_t h, int32_t tri, int k) const {
     if (fresh) it->second = static_cast<int8_t>(planes_.point_side_exact(h, p));
     r = it->second;
   }
-  memo_tag_[v] = tag;
-  memo_side_[v] = static_cast<int8_t>(r);
+  memo_[v] = static_cast<uint32_t>(tag << 2) | static_cast<uint32_t>(r + 1);
   return r;
 }
 

@@ -45,7 +45,7 @@ class FragmentOps {
   // points)) of triangle i's vertex k, so that a vertex's side of a plane is found once.
   FragmentOps(const std::vector<BspTriangle>& tris, const std::vector<int32_t>& vid, int32_t points,
               const PlaneTable& planes)
-      : tris_(tris), vid_(vid), planes_(planes), memo_tag_(points, -1), memo_side_(points, 0) {}
+      : tris_(tris), vid_(vid), planes_(planes), memo_(points, ~0u) {}
 
   // Sides of the fragment's vertices against plane h, in s (resized); returns the vertex
   // count. A fragment of a triangle on one closed side of h is on that side.
@@ -81,9 +81,9 @@ class FragmentOps {
   const std::vector<BspTriangle>& tris_;
   const std::vector<int32_t>& vid_;
   const PlaneTable& planes_;
-  // Per point: the tag of the plane its side was last found for, and that side.
-  mutable std::vector<int64_t> memo_tag_;
-  mutable std::vector<int8_t> memo_side_;
+  // Per point: the tag of the plane its side was last found for, and that side, as
+  // tag << 2 | side + 1 (tags stay below PlaneTable::kMaxTag); ~0u for none.
+  mutable std::vector<uint32_t> memo_;
   // Exact sides orient3d had to decide, by (plane tag << 32 | point).
   mutable std::unordered_map<uint64_t, int8_t> exact_memo_;
   mutable int64_t filtered_ = 0, exact_ = 0;

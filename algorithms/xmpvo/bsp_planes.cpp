@@ -3,6 +3,8 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/determinant.h>
 
+#include <stdexcept>
+
 #include "harness/geometry/predicates.h"
 
 namespace vob::xmpvo::bsp {
@@ -40,6 +42,7 @@ RoundUp::RoundUp() : backup_(CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD)) {}
 RoundUp::~RoundUp() { CGAL::FPU_set_cw(backup_); }
 
 int32_t PlaneTable::add(Vec3 a, Vec3 b, Vec3 c) {
+  if (added_ >= kMaxTag) throw std::length_error("BSP build: more than 2^30 planes");
   pts_.push_back(a);
   pts_.push_back(b);
   pts_.push_back(c);

@@ -41,6 +41,8 @@ class RoundUp {
 
 class PlaneTable {
  public:
+  // Planes ever added, at most (tags fit 30 bits in FragmentOps' memo); add throws beyond.
+  static constexpr int64_t kMaxTag = (int64_t{1} << 30) - 2;
   // Adds the plane through a, b, c (not collinear); returns its id (0, 1, ...).
   int32_t add(Vec3 a, Vec3 b, Vec3 c);
   int32_t size() const { return static_cast<int32_t>(pts_.size() / 3); }

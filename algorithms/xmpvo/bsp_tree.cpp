@@ -7,6 +7,7 @@
 
 #include "algorithms/xmpvo/bsp_fragment.h"
 #include "harness/geometry/predicates.h"
+#include "harness/scene/space_curve.h"
 
 namespace vob::xmpvo {
 namespace {
@@ -147,13 +148,35 @@ size_t BspTree::bytes() const {
 BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   BspTree t;
-  std::vector<int32_t> vid;  // per triangle, its vertices' ids in exterior.points
+  std::vector<BspTriangle> input;
+  std::vector<int32_t> input_vid;  // per triangle, its vertices' ids in exterior.points
+  Aabb box;
   for (size_t i = 0; i < exterior.face.size(); ++i) {
     const Vec3* v = &exterior.corners[4 * i];
     const int32_t* id = &exterior.vertex[4 * i];
     for (int k = 1; k + 1 < exterior.size[i]; ++k) {
-      t.tris_.push_back({{v[0], v[k], v[k + 1]}, exterior.face[i], exterior.cell[i]});
-      vid.insert(vid.end(), {id[0], id[k], id[k + 1]});
+      input.push_back({{v[0], v[k], v[k + 1]}, exterior.face[i], exterior.cell[i]});
+      input_vid.insert(input_vid.end(), {id[0], id[k], id[k + 1]});
+      for (const Vec3& p : input.back().p) box.add(p);
+    }
+  }
+  // Triangles in Hilbert order of their centroids and points numbered by first use: a
+  // node's fragments then lie close together in memory, and so do their vertices' memo
+  // entries (meshers number boundary faces in no spatial order).
+  std::vector<std::pair<uint64_t, int32_t>> order(input.size());
+  for (size_t i = 0; i < input.size(); ++i) {
+    const Vec3* p = input[i].p;
+    order[i] = {hilbert_code((p[0] + p[1] + p[2]) * (1.0 / 3), box), static_cast<int32_t>(i)};
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<int32_t> vid, point_id(exterior.points.size(), -1);
+  int32_t points = 0;
+  for (const auto& [code, i] : order) {
+    t.tris_.push_back(input[i]);
+    for (int k = 0; k < 3; ++k) {
+      int32_t& id = point_id[input_vid[3 * static_cast<size_t>(i) + k]];
+      if (id < 0) id = points++;
+      vid.push_back(id);
     }
   }
   if (opt.keep_fragments) t.exact_ = std::make_unique<Exact>();
@@ -161,7 +184,7 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
   t.stats_.triangles = b;
   PlaneTable planes;  // plane i is triangle i's; free planes follow
   for (const BspTriangle& tr : t.tris_) planes.add(tr.p[0], tr.p[1], tr.p[2]);
-  const FragmentOps ops(t.tris_, vid, static_cast<int32_t>(exterior.points.size()), planes);
+  const FragmentOps ops(t.tris_, vid, points, planes);
   std::vector<int32_t> node_plane;
   if (b > 0) {
     // Explicit stack: degenerate inputs can make the tree as deep as b.
