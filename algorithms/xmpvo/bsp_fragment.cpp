@@ -15,24 +15,33 @@ K::Vector_3 normal(const Vec3* p) { return CGAL::cross_product(ev(p[1]) - ev(p[0
 }  // namespace
 
 // orient3d of vertex k of triangle tri, once per point and plane (a point is in about six
-// triangles); a point of the plane's own triple (shared by neighbours, the common exact
-// zero) is recognised without arithmetic.
+// triangles): a point of the plane's own triple (shared by neighbours, the common exact
+// zero) without arithmetic, most others by the double filter, the rest exactly.
 int FragmentOps::side(int32_t h, int32_t tri, int k) const {
   const int32_t v = vid_[3 * static_cast<size_t>(tri) + k];
   const int64_t tag = planes_.tag(h);
-  if (memo_tag_[v] == tag) return memo_side_[v];
+  const uint32_t m = memo_[v];
+  if (m >> 2 == static_cast<uint64_t>(tag)) return static_cast<int>(m & 3) - 1;
   const Vec3 p = tris_[tri].p[k];
   const Vec3* q = planes_.points(h);
-  const int r = p == q[0] || p == q[1] || p == q[2] ? 0 : orient3d(q[0], q[1], q[2], p);
-  memo_tag_[v] = tag;
-  memo_side_[v] = static_cast<int8_t>(r);
+  int r = p == q[0] || p == q[1] || p == q[2] ? 0 : planes_.point_side_filtered(h, p);
+  if (r == 2) {
+    // Near-coplanar neighbours (TetGen's Steiner points on one input facet) come back to
+    // the same few point-plane pairs many times.
+    const auto [it, fresh] = exact_memo_.try_emplace((static_cast<uint64_t>(tag) << 32) | static_cast<uint32_t>(v), 0);
+    if (fresh) it->second = static_cast<int8_t>(planes_.point_side_exact(h, p));
+    r = it->second;
+  }
+  memo_[v] = static_cast<uint32_t>(tag << 2) | static_cast<uint32_t>(r + 1);
   return r;
 }
 
-int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
-  const BspTriangle& t = tris_[f.tri];
+// The sides that follow from the triangle's vertices and the planes naming each vertex;
+// 2 where the filter or exact arithmetic must decide (then `pending`).
+int FragmentOps::known_sides(int32_t h, const Frag& f, std::vector<int>& s, bool& pending) const {
   int ts[3];
   for (int k = 0; k < 3; ++k) ts[k] = side(h, f.tri, k);
+  pending = false;
   if (f.whole) {
     s.assign(ts, ts + 3);
     return 3;
@@ -44,7 +53,6 @@ int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
     for (int k = 0; k < n; ++k) s[k] = pos ? 1 : (neg ? -1 : 0);
     return n;
   }
-  bool pending = false;
   for (int k = 0; k < n; ++k) {
     const FVert& v = f.poly[k];
     int r = 2;  // 2: not decided yet
@@ -64,19 +72,90 @@ int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
     s[k] = r;
     pending |= r == 2;
   }
+  return n;
+}
+
+int FragmentOps::classify(int32_t h, const Frag& f, std::vector<int>& s) const {
+  bool pending;
+  const int n = known_sides(h, f, s, pending);
   if (!pending) return n;
   {
     RoundUp up;
     for (int k = 0; k < n; ++k)
-      if (s[k] == 2) s[k] = planes_.filtered_side(h, f.poly[k].box);
+      if (s[k] == 2) ++filtered_, s[k] = planes_.filtered_side(h, f.poly[k].box);
   }
+  const BspTriangle& t = tris_[f.tri];
   for (int k = 0; k < n; ++k) {
     if (s[k] != 2) continue;
+    ++exact_;
     const FVert& v = f.poly[k];
     s[k] = v.edge >= 0 ? planes_.exact_side_edge(t.p[v.edge], t.p[(v.edge + 1) % 3], v.pa, h)
                        : planes_.exact_side_meet(f.tri, v.pa, v.pb, h);
   }
   return n;
+}
+
+Side FragmentOps::approx_side(int32_t h, const Frag& f, std::vector<int>& s) const {
+  bool pending;
+  const int n = known_sides(h, f, s, pending);
+  if (!pending) return side_of(s.data(), n);
+  bool pos = false, neg = false;
+  int unknown = 0;
+  for (int k = 0; k < n; ++k) {
+    int r = s[k];
+    if (r == 2) {
+      const IBox& b = f.poly[k].box;
+      r = planes_.approx_side(h, {0.5 * (b.x.inf() + b.x.sup()), 0.5 * (b.y.inf() + b.y.sup()),
+                                  0.5 * (b.z.inf() + b.z.sup())});
+    }
+    if (r == 2) ++unknown;
+    else pos |= r > 0, neg |= r < 0;
+  }
+  // Vertices too close to call count as a split when they could make one.
+  if (unknown >= 2 || (unknown == 1 && (pos || neg))) return kSplit;
+  return pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
+}
+
+void FragmentOps::approx_points(const Frag& f, std::vector<Vec3>& out) const {
+  const BspTriangle& t = tris_[f.tri];
+  if (f.whole) {
+    out.insert(out.end(), t.p, t.p + 3);
+    return;
+  }
+  for (const FVert& v : f.poly) {
+    const IBox& b = v.box;
+    out.push_back(v.at >= 0 ? t.p[v.at]
+                            : Vec3{0.5 * (b.x.inf() + b.x.sup()), 0.5 * (b.y.inf() + b.y.sup()),
+                                   0.5 * (b.z.inf() + b.z.sup())});
+  }
+}
+
+Side FragmentOps::guess_side(int32_t h, const Frag& f, const Vec3* pts, std::vector<int>& s) const {
+  if (h == f.tri) return kCoplanar;  // its own plane
+  const int n = f.whole ? 3 : static_cast<int>(f.poly.size());
+  const Vec3* q = planes_.points(h);
+  bool pos = false, neg = false;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = pts[i];
+    int r = planes_.approx_side(h, p);
+    // Too close to call: a vertex of the triangle by its exact (memoized) side, a point
+    // named by h, or inside an edge whose ends decide, as known_sides; else the fragment
+    // by approx_side.
+    if (r == 2) {
+      if (f.whole || f.poly[i].at >= 0) {
+        r = p == q[0] || p == q[1] || p == q[2] ? 0 : side(h, f.tri, f.whole ? i : f.poly[i].at);
+      } else if (f.poly[i].pa == h || f.poly[i].pb == h) {
+        r = 0;
+      } else if (f.poly[i].edge >= 0) {
+        const int e = f.poly[i].edge;
+        const int sa = side(h, f.tri, e), sb = side(h, f.tri, (e + 1) % 3);
+        r = sa == sb ? sa : sa == 0 ? sb : sb == 0 ? sa : 2;
+      }
+      if (r == 2) return approx_side(h, f, s);
+    }
+    pos |= r > 0, neg |= r < 0;
+  }
+  return pos && neg ? kSplit : pos ? kFront : neg ? kBack : kCoplanar;
 }
 
 Side FragmentOps::side_of(const int* s, int n) {

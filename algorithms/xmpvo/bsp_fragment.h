@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "algorithms/xmpvo/bsp_planes.h"
@@ -44,13 +45,28 @@ class FragmentOps {
   // points)) of triangle i's vertex k, so that a vertex's side of a plane is found once.
   FragmentOps(const std::vector<BspTriangle>& tris, const std::vector<int32_t>& vid, int32_t points,
               const PlaneTable& planes)
-      : tris_(tris), vid_(vid), planes_(planes), memo_tag_(points, -1), memo_side_(points, 0) {}
+      : tris_(tris), vid_(vid), planes_(planes), memo_(points, ~0u) {}
 
   // Sides of the fragment's vertices against plane h, in s (resized); returns the vertex
   // count. A fragment of a triangle on one closed side of h is on that side.
   int classify(int32_t h, const Frag& f, std::vector<int>& s) const;
   // Whether every vertex is on h (kCoplanar), all on one closed side, or on both.
   static Side side_of(const int* s, int n);
+  // A guess of side_of(classify(...)) for scoring splitters: exact where classify needs
+  // neither the filter nor exact arithmetic, else plain doubles at the middles of the
+  // vertices' boxes, and a vertex too close to h to call counts as a split when it could
+  // make one. No interval arithmetic, no exact arithmetic.
+  Side approx_side(int32_t h, const Frag& f, std::vector<int>& s) const;
+  // The fragment's vertices, approximately (a split vertex at the middle of its box),
+  // appended to out: the points guess_side takes.
+  void approx_points(const Frag& f, std::vector<Vec3>& out) const;
+  // A guess of the side of h from those points, in plain doubles; where a point is too
+  // close to h to call, exact sides of the triangle's vertices as known_sides uses them,
+  // then approx_side.
+  Side guess_side(int32_t h, const Frag& f, const Vec3* pts, std::vector<int>& s) const;
+  // Vertex sides of split fragments decided by the interval filter, and by exact arithmetic.
+  int64_t filtered_tests() const { return filtered_; }
+  int64_t exact_tests() const { return exact_; }
   // Splits a fragment with vertices strictly on both sides of h (s from classify).
   void split(int32_t h, const Frag& f, const int* s, int n, Frag& front, Frag& back) const;
   // The fragment's vertices as exact points (for tests: constructions in CGAL's Epeck).
@@ -58,15 +74,19 @@ class FragmentOps {
 
  private:
   int side(int32_t h, int32_t tri, int k) const;
+  int known_sides(int32_t h, const Frag& f, std::vector<int>& s, bool& pending) const;
   static std::vector<FVert> whole_poly();
   FVert crossing(int32_t tri, int32_t label, int32_t h) const;  // inside RoundUp
 
   const std::vector<BspTriangle>& tris_;
   const std::vector<int32_t>& vid_;
   const PlaneTable& planes_;
-  // Per point: the tag of the plane its side was last found for, and that side.
-  mutable std::vector<int64_t> memo_tag_;
-  mutable std::vector<int8_t> memo_side_;
+  // Per point: the tag of the plane its side was last found for, and that side, as
+  // tag << 2 | side + 1 (tags stay below PlaneTable::kMaxTag); ~0u for none.
+  mutable std::vector<uint32_t> memo_;
+  // Exact sides orient3d had to decide, by (plane tag << 32 | point).
+  mutable std::unordered_map<uint64_t, int8_t> exact_memo_;
+  mutable int64_t filtered_ = 0, exact_ = 0;
 };
 
 }  // namespace vob::xmpvo::bsp

@@ -3,6 +3,10 @@
 #include <CGAL/Mpzf.h>
 #include <CGAL/determinant.h>
 
+#include <stdexcept>
+
+#include "harness/geometry/predicates.h"
+
 namespace vob::xmpvo::bsp {
 namespace {
 
@@ -38,10 +42,15 @@ RoundUp::RoundUp() : backup_(CGAL::FPU_get_and_set_cw(CGAL_FE_UPWARD)) {}
 RoundUp::~RoundUp() { CGAL::FPU_set_cw(backup_); }
 
 int32_t PlaneTable::add(Vec3 a, Vec3 b, Vec3 c) {
+  if (added_ >= kMaxTag) throw std::length_error("BSP build: more than 2^30 planes");
   pts_.push_back(a);
   pts_.push_back(b);
   pts_.push_back(c);
   tag_.push_back(added_++);
+  const Vec3 du = b - a, dv = c - a;  // round to nearest, before RoundUp
+  dbl_.push_back({a, cross(du, dv),
+                  {std::fabs(du.y * dv.z) + std::fabs(du.z * dv.y), std::fabs(du.x * dv.z) + std::fabs(du.z * dv.x),
+                   std::fabs(du.x * dv.y) + std::fabs(du.y * dv.x)}});
   RoundUp up;
   const IA u[3] = {IA(b.x) - a.x, IA(b.y) - a.y, IA(b.z) - a.z};
   const IA v[3] = {IA(c.x) - a.x, IA(c.y) - a.y, IA(c.z) - a.z};
@@ -53,6 +62,12 @@ int32_t PlaneTable::add(Vec3 a, Vec3 b, Vec3 c) {
   pl.w = dot(pl.n, ia);
   approx_.push_back(pl);
   return size() - 1;
+}
+
+int PlaneTable::point_side_exact(int32_t h, Vec3 p) const {
+  const Vec3* q = points(h);
+  ++exact_points_;
+  return orient3d(q[0], q[1], q[2], p);
 }
 
 IBox PlaneTable::edge_point(Vec3 p, Vec3 q, int32_t j) const {

@@ -7,6 +7,7 @@
 
 #include "algorithms/xmpvo/bsp_fragment.h"
 #include "harness/geometry/predicates.h"
+#include "harness/scene/space_curve.h"
 
 namespace vob::xmpvo {
 namespace {
@@ -53,27 +54,41 @@ int32_t median_plane(const std::vector<Frag>& frags, const std::vector<BspTriang
 
 // The splitting plane of a node (an id of `planes`): the best of a few evenly spaced
 // triangle planes and, with free_planes, one median plane, scored on a sample of the
-// fragments by split_weight * splits + |front - back|.
-int32_t choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, const FragmentOps& ops,
-                     const BspOptions& opt, PlaneTable& planes, std::vector<int>& s) {
+// fragments by split_weight * splits + |front - back|. Scores are guesses in doubles
+// (FragmentOps::guess_side): they choose a plane, exact sides then split by it.
+struct Choice {
+  int32_t plane;     // the choice
+  int32_t triangle;  // the best triangle plane (the choice unless that is a free plane)
+};
+struct Sample {  // the sampled fragments' approximate points, gathered once per node
+  std::vector<int32_t> frag, start;
+  std::vector<Vec3> pts;
+};
+Choice choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriangle>& tris, const FragmentOps& ops,
+                    const BspOptions& opt, PlaneTable& planes, Sample& smp, std::vector<int>& s) {
   const int64_t m = static_cast<int64_t>(frags.size());
   int32_t best = frags[0].tri;
-  if (m <= 1 || opt.candidates <= 1) return best;
-  int64_t best_score = -1;
+  if (m <= 1 || opt.candidates <= 1) return {best, best};
   const int cands = static_cast<int>(std::min<int64_t>(opt.candidates, m));
   const int64_t stride = std::max<int64_t>(1, m / std::max(opt.sample, 1));
+  smp.frag.clear(), smp.start.clear(), smp.pts.clear();
+  for (int64_t i = 0; i < m; i += stride) {
+    smp.frag.push_back(static_cast<int32_t>(i));
+    smp.start.push_back(static_cast<int32_t>(smp.pts.size()));
+    ops.approx_points(frags[i], smp.pts);
+  }
+  smp.start.push_back(static_cast<int32_t>(smp.pts.size()));
+  const int64_t samples = static_cast<int64_t>(smp.frag.size());
+  int64_t best_score = -1;
   bool both = false;  // the last scored plane has sample fragments strictly on each side
-  const int64_t samples = (m + stride - 1) / stride;
   // A candidate's score, or a value >= best_score as soon as even the rest of the sample
   // could not bring it below (the choice is the same, for less work).
   auto score = [&](int32_t h) -> int64_t {
-    int64_t front = 0, back = 0, splits = 0, seen = 0;
-    for (int64_t i = 0; i < m; i += stride) {
-      const int n = ops.classify(h, frags[i], s);
-      const bsp::Side sd = FragmentOps::side_of(s.data(), n);
+    int64_t front = 0, back = 0, splits = 0;
+    for (int64_t j = 0; j < samples; ++j) {
+      const bsp::Side sd = ops.guess_side(h, frags[smp.frag[j]], &smp.pts[smp.start[j]], s);
       front += sd == bsp::kFront, back += sd == bsp::kBack, splits += sd == bsp::kSplit;
-      const int64_t left = samples - ++seen;
-      if (best_score >= 0 && opt.split_weight * splits + std::llabs(front - back) - left >= best_score) {
+      if (best_score >= 0 && opt.split_weight * splits + std::llabs(front - back) - (samples - j - 1) >= best_score) {
         both = false;
         return best_score;
       }
@@ -90,10 +105,23 @@ int32_t choose_plane(const std::vector<Frag>& frags, const std::vector<BspTriang
     const int32_t size = planes.size();
     const int32_t h = median_plane(frags, tris, stride, planes);
     // A free plane holds no fragment: it must leave one out of each child.
-    if (score(h) < best_score && both) return h;
+    if (score(h) < best_score && both) return {h, best};
     planes.truncate(size);
   }
-  return best;
+  return {best, best};
+}
+
+// Whether exact sides put fragments into both children of plane h (a guessed free plane
+// must, or the node would make no progress).
+bool divides(const std::vector<Frag>& frags, int32_t h, const FragmentOps& ops, std::vector<int>& s) {
+  bool front = false, back = false;
+  for (const Frag& f : frags) {
+    const bsp::Side sd = FragmentOps::side_of(s.data(), ops.classify(h, f, s));
+    front |= sd == bsp::kFront || sd == bsp::kSplit;
+    back |= sd == bsp::kBack || sd == bsp::kSplit;
+    if (front && back) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -120,13 +148,35 @@ size_t BspTree::bytes() const {
 BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
   const auto start = std::chrono::steady_clock::now();
   BspTree t;
-  std::vector<int32_t> vid;  // per triangle, its vertices' ids in exterior.points
+  std::vector<BspTriangle> input;
+  std::vector<int32_t> input_vid;  // per triangle, its vertices' ids in exterior.points
+  Aabb box;
   for (size_t i = 0; i < exterior.face.size(); ++i) {
     const Vec3* v = &exterior.corners[4 * i];
     const int32_t* id = &exterior.vertex[4 * i];
     for (int k = 1; k + 1 < exterior.size[i]; ++k) {
-      t.tris_.push_back({{v[0], v[k], v[k + 1]}, exterior.face[i], exterior.cell[i]});
-      vid.insert(vid.end(), {id[0], id[k], id[k + 1]});
+      input.push_back({{v[0], v[k], v[k + 1]}, exterior.face[i], exterior.cell[i]});
+      input_vid.insert(input_vid.end(), {id[0], id[k], id[k + 1]});
+      for (const Vec3& p : input.back().p) box.add(p);
+    }
+  }
+  // Triangles in Hilbert order of their centroids and points numbered by first use: a
+  // node's fragments then lie close together in memory, and so do their vertices' memo
+  // entries (meshers number boundary faces in no spatial order).
+  std::vector<std::pair<uint64_t, int32_t>> order(input.size());
+  for (size_t i = 0; i < input.size(); ++i) {
+    const Vec3* p = input[i].p;
+    order[i] = {hilbert_code((p[0] + p[1] + p[2]) * (1.0 / 3), box), static_cast<int32_t>(i)};
+  }
+  std::sort(order.begin(), order.end());
+  std::vector<int32_t> vid, point_id(exterior.points.size(), -1);
+  int32_t points = 0;
+  for (const auto& [code, i] : order) {
+    t.tris_.push_back(input[i]);
+    for (int k = 0; k < 3; ++k) {
+      int32_t& id = point_id[input_vid[3 * static_cast<size_t>(i) + k]];
+      if (id < 0) id = points++;
+      vid.push_back(id);
     }
   }
   if (opt.keep_fragments) t.exact_ = std::make_unique<Exact>();
@@ -134,7 +184,7 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
   t.stats_.triangles = b;
   PlaneTable planes;  // plane i is triangle i's; free planes follow
   for (const BspTriangle& tr : t.tris_) planes.add(tr.p[0], tr.p[1], tr.p[2]);
-  const FragmentOps ops(t.tris_, vid, static_cast<int32_t>(exterior.points.size()), planes);
+  const FragmentOps ops(t.tris_, vid, points, planes);
   std::vector<int32_t> node_plane;
   if (b > 0) {
     // Explicit stack: degenerate inputs can make the tree as deep as b.
@@ -148,11 +198,18 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
     stack.push_back(std::move(root));
     std::vector<int32_t> coplanar;
     std::vector<int> s;
+    Sample sample;
     while (!stack.empty()) {
       Work w = std::move(stack.back());
       stack.pop_back();
       t.stats_.depth = std::max<int64_t>(t.stats_.depth, w.depth);
-      const int32_t h = choose_plane(w.frags, t.tris_, ops, opt, planes, s);
+      const Choice choice = choose_plane(w.frags, t.tris_, ops, opt, planes, sample, s);
+      int32_t h = choice.plane;
+      if (h != choice.triangle && !divides(w.frags, h, ops, s)) {
+        planes.truncate(h);  // the free plane is the table's last
+        h = choice.triangle;
+        ++t.stats_.free_refused;
+      }
       std::vector<Frag> front, back;
       coplanar.clear();
       for (Frag& f : w.frags) {
@@ -179,6 +236,7 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
       BspNode& node = t.nodes_[w.node];
       node_plane[w.node] = h;
       node.splitter = h < b ? h : -1;
+      t.stats_.free_nodes += h >= b;
       node.first = static_cast<int32_t>(t.items_.size());
       node.count = static_cast<int32_t>(coplanar.size());
       t.items_.insert(t.items_.end(), coplanar.begin(), coplanar.end());
@@ -267,6 +325,9 @@ BspTree BspTree::build(const ExteriorFaces& exterior, const BspOptions& opt) {
     node.lo = lo, node.hi = hi;
   }
   t.stats_.nodes = static_cast<int64_t>(t.nodes_.size());
+  t.stats_.filtered_tests = ops.filtered_tests();
+  t.stats_.exact_tests = ops.exact_tests();
+  t.stats_.point_tests = planes.exact_point_tests();
   t.stats_.growth = b ? static_cast<double>(t.stats_.fragments) / b : 0.0;
   t.stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;

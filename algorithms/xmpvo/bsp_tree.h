@@ -65,6 +65,12 @@ struct BspOptions {
 struct BspStats {
   int64_t nodes = 0, depth = 0, fragments = 0, splits = 0;
   int64_t triangles = 0;   // b in triangles (quads count twice)
+  int64_t free_nodes = 0;  // nodes split by a free (median) plane
+  int64_t free_refused = 0;  // free planes guessed to divide that exact sides showed did not
+  // Sides of split-fragment vertices that the endpoints' signs left open: decided by the
+  // interval filter, and of those by exact arithmetic.
+  int64_t filtered_tests = 0, exact_tests = 0;
+  int64_t point_tests = 0;  // sides of triangle vertices the double filter left to orient3d
   double growth = 0;       // fragments / triangles
   double seconds = 0;
 };

@@ -113,6 +113,10 @@ class BspXmpvoOrderer final : public Orderer {
     k["bsp_splits"] = static_cast<double>(bs.splits);
     k["fragment_growth"] = bs.growth;
     k["bsp_build_seconds"] = bs.seconds;
+    k["bsp_free_nodes"] = static_cast<double>(bs.free_nodes);
+    k["bsp_filtered_tests"] = static_cast<double>(bs.filtered_tests);
+    k["bsp_exact_tests"] = static_cast<double>(bs.exact_tests);
+    k["bsp_point_tests"] = static_cast<double>(bs.point_tests);
     k["bytes_bsp"] = static_cast<double>(tree_.bytes());
     k["back_facing"] = static_cast<double>(st.back);
     k["front_facing"] = static_cast<double>(st.front);

@@ -44,7 +44,8 @@
 // Claims: object_exact (exact for every ray when skipped_triangles = 0 and the mesh is
 // acyclic), detects_cycles.
 // Counters: MpvoCore's, exterior_triangles, bsp_nodes, bsp_depth, bsp_fragments,
-// bsp_splits, fragment_growth, bsp_build_seconds, bytes_bsp, per view back_facing,
+// bsp_splits, fragment_growth, bsp_build_seconds, bsp_free_nodes, bsp_filtered_tests,
+// bsp_exact_tests, bsp_point_tests (bsp_tree.h's BspStats), bytes_bsp, per view back_facing,
 // front_facing, skipped_triangles, beam_queries, nodes_visited, boxes_visited,
 // candidates, overlap_tests, depth_undecided, early_stops, relations (distinct cell pairs), bytes_mpvo,
 // bytes_relations.
