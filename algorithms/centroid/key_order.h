@@ -1,24 +1,56 @@
 // Back to front by one key per primitive: the keys and radix sort phases that the cell and
 // the triangle centroid orderers share.
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 
 #include "harness/bench/orderer.h"
 #include "harness/bench/phase_clock.h"
+#include "harness/geometry/vec3.h"
 #include "harness/sort/radix_argsort.h"
 #include "harness/sort/radix_sort.h"
 
 namespace vob {
 
+// Bounds of the keys of points in the box [lo, hi] seen from `eye` (padded against rounding;
+// only a hint to the sort, which checks it): by_view, the depth dot(p - eye, f) over the
+// corners; otherwise the distance from the eye to the box and to its farthest corner, no
+// hint (lo > hi) when the eye is in or near the box (the range then spans many binades).
+struct KeyRange {
+  double lo = 1, hi = 0;
+};
+inline KeyRange key_range_from_box(Vec3 lo, Vec3 hi, Vec3 eye, Vec3 f, bool by_view) {
+  double dmin = 1e300, dmax = -1e300, far = 0, near2 = 0;
+  for (int m = 0; m < 8; ++m) {
+    const Vec3 q{(m & 1) ? hi.x : lo.x, (m & 2) ? hi.y : lo.y, (m & 4) ? hi.z : lo.z};
+    const double d = dot(q - eye, f);
+    dmin = std::min(dmin, d), dmax = std::max(dmax, d), far = std::max(far, length(q - eye));
+  }
+  for (int a = 0; a < 3; ++a) {
+    const double g = std::max({lo[a] - eye[a], 0.0, eye[a] - hi[a]});
+    near2 += g * g;
+  }
+  const double pad = 1e-6 * (far + 1), near = std::sqrt(near2);
+  if (by_view) return {dmin - pad, dmax + pad};
+  if (near > 2 * pad) return {near - pad, far + pad};
+  return {};
+}
+
 // `key(i)` is primitive i's distance (larger = farther); the farthest comes first, ties in
 // id order: ascending float(-key) by its sortable bits, stably. Each key is made, rounded
 // and turned into its sortable bits in one streamed pass (in parallel when threads allow).
+// [kmin, kmax] (optional, kmin > kmax: none) bounds key(i) a little loosely: the key pass
+// then counts the sort's top digit too (RadixArgsort checks that every key fell inside).
 template <class Key>
-Ordering order_by_descending_key(size_t n, Key&& key, RadixArgsort& sort, PhaseClock& clock) {
+Ordering order_by_descending_key(size_t n, Key&& key, RadixArgsort& sort, PhaseClock& clock,
+                                 double kmin = 1, double kmax = 0) {
   {
     auto p = clock.phase("keys");
-    sort.make_keys(n, [&](size_t i) { return float_sort_key(static_cast<float>(-key(i))); });
+    const auto sk = [](double d) { return float_sort_key(static_cast<float>(-d)); };
+    const bool guess = kmin <= kmax;  // -key ascending: kmax gives the least sortable bits
+    sort.make_keys(n, [&](size_t i) { return sk(key(i)); }, guess ? sk(kmax) : 1u, guess ? sk(kmin) : 0u);
   }
   Ordering out;
   {
@@ -27,6 +59,7 @@ Ordering order_by_descending_key(size_t n, Key&& key, RadixArgsort& sort, PhaseC
     sort.sort_keys(out.order.data());
   }
   out.counters["radix passes"] = sort.passes();
+  out.counters["top digit counted in key pass"] = sort.counted_in_key_pass() ? 1 : 0;
   return out;
 }
 

@@ -129,12 +129,32 @@ void RadixArgsort::plan(size_t n) {
   block_max_.assign(nblocks_, 0);
 }
 
+bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
+  pre_ = false;
+  if (lo > hi || n_ < kTwoLevelMinKeys) return false;
+  const uint32_t range = hi - lo;
+  const int bits = range == 0 ? 0 : 32 - __builtin_clz(range);
+  if (bits <= kLowBits || bits - kLowBits > kMaxDigitBits) return false;
+  const int top = std::max(bits - kLowBits, kTopBits);
+  pre_lo_ = lo, pre_hi_ = hi, pre_bits_ = bits;
+  pre_shift_ = bits - top;
+  pre_mask_ = (uint32_t(1) << top) - 1;
+  counts_.assign(2 * nblocks_ * (size_t(pre_mask_) + 1), 0);
+  return pre_ = true;
+}
+
 void RadixArgsort::sort_keys(int32_t* out) {
   const size_t n = n_;
   passes_ = 0;
+  used_pre_ = false;
   if (n == 0) return;
   const uint32_t mn = *std::min_element(block_min_.begin(), block_min_.end());
   const uint32_t mx = *std::max_element(block_max_.begin(), block_max_.end());
+  if (pre_ && mn >= pre_lo_ && mx <= pre_hi_) {  // every key inside the guess: its counts hold
+    used_pre_ = true;
+    sort_two_level(out, pre_lo_, pre_bits_, pre_bits_ - pre_shift_, true);
+    return;
+  }
   const uint32_t range = mx - mn;
   const int bits = range == 0 ? 0 : 32 - __builtin_clz(range);
   if (bits == 0) {  // one key everywhere: the input order stays
@@ -145,7 +165,7 @@ void RadixArgsort::sort_keys(int32_t* out) {
   if (bits > kLowBits && bits - kLowBits <= kMaxDigitBits && (np >= 3 || n >= kTwoLevelMinKeys)) {
     // The top digit: the bits above kLowBits, at least kTopBits (few write streams; bits
     // > kLowBits leaves a low part of 10 bits or more).
-    sort_two_level(out, mn, bits, std::max(bits - kLowBits, kTopBits));
+    sort_two_level(out, mn, bits, std::max(bits - kLowBits, kTopBits), false);
     return;
   }
   const int width = (bits + np - 1) / np;
@@ -201,7 +221,7 @@ void RadixArgsort::sort_keys(int32_t* out) {
   }
 }
 
-void RadixArgsort::sort_two_level(int32_t* out, uint32_t mn, int bits, int top) {
+void RadixArgsort::sort_two_level(int32_t* out, uint32_t mn, int bits, int top, bool counted) {
   const size_t n = n_;
   const int shift = bits - top;
   const size_t radix = size_t(1) << top;
@@ -209,19 +229,21 @@ void RadixArgsort::sort_two_level(int32_t* out, uint32_t mn, int bits, int top) 
   passes_ = 3;  // one scatter through memory, two in cache
   pairs_.reserve(2 * n);
   const size_t nb = nblocks_;
-  counts_.assign(2 * nb * radix, 0);
   const uint32_t* k = keys_.data();
-  for_blocks([&](size_t b, size_t lo, size_t hi) {
-    // Two counter sets (even and odd elements): neighbouring cells share a bucket.
-    uint32_t *c = counts_.data() + b * radix, *c2 = counts_.data() + (nb + b) * radix;
-    size_t i = lo;
-    for (; i + 1 < hi; i += 2) {
-      ++c[((k[i] - mn) >> shift) & mask];
-      ++c2[((k[i + 1] - mn) >> shift) & mask];
-    }
-    if (i < hi) ++c[((k[i] - mn) >> shift) & mask];
-    for (size_t d = 0; d < radix; ++d) c[d] += c2[d];
-  });
+  if (!counted) {
+    counts_.assign(2 * nb * radix, 0);
+    for_blocks([&](size_t b, size_t lo, size_t hi) {
+      // Two counter sets (even and odd elements): neighbouring cells share a bucket.
+      uint32_t *c = counts_.data() + b * radix, *c2 = counts_.data() + (nb + b) * radix;
+      size_t i = lo;
+      for (; i + 1 < hi; i += 2) {
+        ++c[((k[i] - mn) >> shift) & mask];
+        ++c2[((k[i + 1] - mn) >> shift) & mask];
+      }
+      if (i < hi) ++c[((k[i] - mn) >> shift) & mask];
+      for (size_t d = 0; d < radix; ++d) c[d] += c2[d];
+    });
+  }
   // Exclusive prefix over (bucket, block); a bucket starts at its block 0 slot.
   bucket_start_.resize(radix + 1);
   uint32_t sum = 0;

@@ -47,21 +47,43 @@ class RadixArgsort {
     sort_keys(out);
   }
 
-  // The two halves of sort(), apart so that callers can time them as phases.
+  // The two halves of sort(), apart so that callers can time them as phases. [lo, hi] is
+  // an optional guess of the keys' range (lo > hi: none): when it asks for the two-level
+  // path, the key pass also counts its top digit against lo, saving sort_keys a read of the
+  // keys. sort_keys uses those counts only if every key fell inside; the order is the same
+  // either way (a stable sort by more bits than needed is the same permutation).
   template <class KeyOf>
-  void make_keys(size_t n, KeyOf&& key_of) {
+  void make_keys(size_t n, KeyOf&& key_of, uint32_t lo = 1, uint32_t hi = 0) {
     plan(n);
-    for_blocks([&](size_t b, size_t lo, size_t hi) {
+    const bool pre = plan_counts(lo, hi);
+    const int shift = pre_shift_;
+    const uint32_t mask = pre_mask_, base = pre_lo_;
+    const size_t radix = size_t(mask) + 1, nb = nblocks_;
+    for_blocks([&](size_t b, size_t lo_i, size_t hi_i) {
       uint32_t* k = keys_.data();
       // The range as signed ints (x with its top bit flipped): SSE2 vectorises signed
       // min/max, not unsigned.
       int32_t mn = INT32_MAX, mx = INT32_MIN;
-      for (size_t i = lo; i < hi; ++i) {
+      const auto one = [&](size_t i) {
         const uint32_t x = key_of(i);
         k[i] = x;
         const int32_t y = static_cast<int32_t>(x ^ 0x80000000u);
         mn = std::min(mn, y);
         mx = std::max(mx, y);
+        return x;
+      };
+      if (pre) {
+        // Two counter sets (even and odd elements): neighbouring cells share a bucket.
+        uint32_t *c = counts_.data() + b * radix, *c2 = counts_.data() + (nb + b) * radix;
+        size_t i = lo_i;
+        for (; i + 1 < hi_i; i += 2) {
+          ++c[((one(i) - base) >> shift) & mask];
+          ++c2[((one(i + 1) - base) >> shift) & mask];
+        }
+        if (i < hi_i) ++c[((one(i) - base) >> shift) & mask];
+        for (size_t d = 0; d < radix; ++d) c[d] += c2[d];
+      } else {
+        for (size_t i = lo_i; i < hi_i; ++i) one(i);
       }
       block_min_[b] = static_cast<uint32_t>(mn) ^ 0x80000000u;
       block_max_[b] = static_cast<uint32_t>(mx) ^ 0x80000000u;
@@ -70,6 +92,7 @@ class RadixArgsort {
   void sort_keys(int32_t* out);  // out[0..n) for the n of make_keys
 
   int passes() const { return passes_; }  // radix passes of the last sort (0: all keys equal)
+  bool counted_in_key_pass() const { return used_pre_; }  // the last sort used the key pass's counts
   int blocks() const { return static_cast<int>(nblocks_); }
   size_t bytes() const {
     return (keys_.capacity() + pairs_.capacity() + pairs2_.capacity()) * 4 +
@@ -78,8 +101,12 @@ class RadixArgsort {
 
  private:
   void plan(size_t n);         // sizes the buffers, picks the blocks from the thread limit
-  // Ranges of 17 to 27 bits: one scatter by the `top` bits, then each bucket in cache.
-  void sort_two_level(int32_t* out, uint32_t mn, int bits, int top);
+  // Ranges of 17 to 27 bits: one scatter by the `top` bits, then each bucket in cache;
+  // `counted`: counts_ already holds the top digit's counts (from the key pass).
+  void sort_two_level(int32_t* out, uint32_t mn, int bits, int top, bool counted);
+  // From the guessed range [lo, hi]: whether the key pass counts the top digit (then
+  // counts_ is zeroed and pre_* set).
+  bool plan_counts(uint32_t lo, uint32_t hi);
 
   template <class F>
   void for_blocks(F&& f) {
@@ -96,6 +123,9 @@ class RadixArgsort {
 
   size_t n_ = 0, nblocks_ = 1;
   int passes_ = 0;
+  bool pre_ = false, used_pre_ = false;  // the key pass counted the top digit of (key - pre_lo_) >> pre_shift_
+  uint32_t pre_lo_ = 0, pre_hi_ = 0, pre_mask_ = 0;
+  int pre_bits_ = 0, pre_shift_ = 0;
   HugeWords keys_, pairs_, pairs2_;  // pairs: (key << 32 | id), two words each
   std::vector<uint32_t> block_min_, block_max_;
   std::vector<uint32_t> counts_;  // nblocks x radix: counts, then each block's next slot
