@@ -24,6 +24,14 @@ STATE_TEXT = {"not run": "not run", "interrupted": "interrupted", "failed": "fai
               "running": "not finished (still running, or its run was killed)"}
 
 
+def scene_name(scene):
+    """The records' way of naming a scene: name(key=value,...), or an input file's name."""
+    if "input" in scene:
+        return os.path.basename(scene["input"])
+    sets = scene.get("set") or {}
+    return scene.get("name", "?") + (f"({','.join(f'{k}={v}' for k, v in sorted(sets.items()))})" if sets else "")
+
+
 def section(page, out, results):
     runs = [p for p in find(out, results, os.path.join("*", "render.json"))  # not a scene still being drawn
             if not os.path.dirname(p).endswith((".partial", ".old"))]
@@ -40,7 +48,7 @@ def section(page, out, results):
     for path in runs:
         run = json.load(open(path))
         rel = os.path.relpath(os.path.dirname(path), out)
-        page.heading(3, f"{json.dumps(run['scene'])}: {run['tetrahedra']} tetrahedra, {run['size'][0]}x{run['size'][1]}")
+        page.heading(3, f"{scene_name(run['scene'])}: {run['tetrahedra']} tetrahedra, {run['size'][0]}x{run['size'][1]}")
         page.para(f"{run['gl_renderer']}; {run['load']}; reference: {run['reference'] or 'none'}; "
                   f"command: {run['command']}")
         rows = []
