@@ -15,16 +15,17 @@ void ABuffer::reset(int64_t pixels) {
 }
 
 void ABuffer::finish() {
-  // Counting sort by pixel, stable; then each pixel's entries by rank (short lists).
+  // Counting sort by pixel, stable, straight into the lists (each entry's rank parked in its
+  // `next` until the links are made: one scatter of 16-byte entries, no scratch copy); then
+  // each pixel's entries by rank (short lists).
   std::fill(offsets_.begin(), offsets_.end(), 0);
   each_raw([&](const Raw& r) { ++offsets_[r.pixel + 1]; });
   for (int64_t p = 0; p < pixels_; ++p) offsets_[p + 1] += offsets_[p];
-  by_pixel_.resize(static_cast<size_t>(entries_));
   list_.resize(static_cast<size_t>(entries_));
   std::vector<int32_t>& cursor = cursor_;
   cursor.assign(offsets_.begin(), offsets_.end() - 1);
-  Slot* slots = by_pixel_.data();
-  each_raw([&](const Raw& r) { slots[cursor[r.pixel]++] = {r.t, r.item, r.rank}; });
+  PixEntry* list = list_.data();
+  each_raw([&](const Raw& r) { list[cursor[r.pixel]++] = {r.t, r.item, r.rank}; });
   // Per pixel, in rank order, insertion one entry at a time into increasing t, behind every
   // entry not farther than itself (the mirror of "in front of every entry farther than
   // itself" in a decreasing list); then reversed. A new entry passes the entries farther
@@ -32,29 +33,28 @@ void ABuffer::finish() {
   for (int64_t p = 0; p < pixels_; ++p) {
     const int32_t b = offsets_[p], e = offsets_[p + 1];
     if (b == e) continue;
-    Slot* in = slots + b;
+    PixEntry* in = list + b;
     const int32_t k = e - b;
-    for (int32_t i = 1; i < k; ++i) {  // by rank
-      const Slot x = in[i];
+    for (int32_t i = 1; i < k; ++i) {  // by rank (in `next`)
+      const PixEntry x = in[i];
       int32_t j = i;
-      for (; j > 0 && in[j - 1].rank > x.rank; --j) in[j] = in[j - 1];
+      for (; j > 0 && in[j - 1].next > x.next; --j) in[j] = in[j - 1];
       in[j] = x;
     }
     ++head_insertions_;  // the first entry of a list
-    list_[b] = {in[0].t, in[0].item, -1};
-    for (int32_t i = b + 1; i < e; ++i) {
-      const PixEntry x{in[i - b].t, in[i - b].item, -1};
+    for (int32_t i = 1; i < k; ++i) {  // in place: in[0, i) is the list so far
+      const PixEntry x = in[i];
       int32_t j = i;
-      while (j > b && list_[j - 1].t > x.t) {
-        list_[j] = list_[j - 1];
+      while (j > 0 && in[j - 1].t > x.t) {
+        in[j] = in[j - 1];
         --j;
       }
       if (j == i) ++head_insertions_;
       walk_steps_ += i - j;
-      list_[j] = x;
+      in[j] = x;
     }
-    std::reverse(list_.begin() + b, list_.begin() + e);
-    for (int32_t q = b; q < e; ++q) list_[q].next = q + 1 < e ? q + 1 : -1;
+    std::reverse(in, in + k);
+    for (int32_t q = b; q < e; ++q) list[q].next = q + 1 < e ? q + 1 : -1;
   }
 }
 
@@ -109,10 +109,8 @@ void PnLists::to_relations(mpvo::ExtraRelations& out) const {
 
 void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& e,
                    PnLists& pn, PairStats& stats) {
-  int32_t id = abuf.head(pixel);
-  if (id < 0) return;
-  e.clear();
-  for (; id >= 0; id = abuf.entry(id).next) e.push_back(abuf.entry(id));
+  if (abuf.head(pixel) < 0) return;
+  e.assign(abuf.begin(pixel), abuf.end(pixel));
   ++stats.lists;
   stats.max_list = std::max<int64_t>(stats.max_list, static_cast<int64_t>(e.size()));
   // Far to near: beyond the farthest entry the ray is outside the mesh, so the first entry

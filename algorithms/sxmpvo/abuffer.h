@@ -61,21 +61,20 @@ class ABuffer {
     return offsets_[pixel] < offsets_[pixel + 1] ? offsets_[pixel] : -1;
   }
   const PixEntry& entry(int32_t id) const { return list_[id]; }
+  // A pixel's list as one range, farthest first (the same entries as from head()).
+  const PixEntry* begin(int64_t pixel) const { return list_.data() + offsets_[pixel]; }
+  const PixEntry* end(int64_t pixel) const { return list_.data() + offsets_[pixel + 1]; }
   int64_t entries() const { return entries_; }
   int64_t head_insertions() const { return head_insertions_; }
   int64_t walk_steps() const { return walk_steps_; }  // entries passed by non-head inserts
   size_t bytes() const {
     return offsets_.capacity() * sizeof(int32_t) +
-           raw_.capacity() * sizeof(Raw) + by_pixel_.capacity() * sizeof(Slot) +
+           raw_.capacity() * sizeof(Raw) +
            list_.capacity() * sizeof(PixEntry) + cursor_.capacity() * sizeof(int32_t);
   }
 
  private:
   int64_t pixels_ = 0;
-  struct Slot {  // an entry once its pixel is known
-    double t;
-    int32_t item, rank;
-  };
   template <class F>
   void each_raw(F&& f) const {  // every recorded entry: insert()ed, then appended batches
     for (const Raw& r : raw_) f(r);
@@ -85,7 +84,6 @@ class ABuffer {
   int64_t entries_ = 0;
   std::vector<Raw> raw_;           // insert()ed
   std::vector<const std::vector<Raw>*> batches_;  // append()ed, read in place
-  std::vector<Slot> by_pixel_;     // scratch of finish(): per pixel, by rank
   std::vector<int32_t> offsets_;   // pixels + 1
   std::vector<PixEntry> list_;     // per pixel, decreasing t
   std::vector<int32_t> cursor_;    // scratch of finish()
