@@ -53,18 +53,12 @@ SampleRect CellClipper::bounds(int32_t c) const {
   // Crossing the eye plane: every ray meeting the cell at t > 0 leaves it through a face at
   // t > 0, so the union of the faces' exact (half-plane) bounds covers it.
   SampleRect r;
-  bool first = true;
   const LocalFaces& lf = cell_local_faces(mesh_.types[c]);
   for (int f = 0; f < lf.count; ++f) {
     Vec3 v[4];
     for (int i = 0; i < lf.size[f]; ++i) v[i] = mesh_.points[p[lf.v[f][i]]];
     PolygonRaster pr;
-    if (!pr.setup(frame_, v, lf.size[f])) continue;
-    const SampleRect b = pr.bounds();
-    r = first ? b
-              : SampleRect{std::min(r.x0, b.x0), std::min(r.y0, b.y0), std::max(r.x1, b.x1),
-                           std::max(r.y1, b.y1)};
-    first = false;
+    if (pr.setup(frame_, v, lf.size[f])) r = r.unite(pr.bounds());
   }
   return r;
 }

@@ -24,22 +24,21 @@ int face_vertices(const SampleFrame& frame, const CellMesh& mesh, const Projecte
 }
 }  // namespace
 
-SampleRect GlCellRaster::bounds(int32_t c) const {
+template <class Fn>
+void GlCellRaster::each_face(int32_t c, Fn&& fn) const {
   const LocalFaces& lf = cell_local_faces(mesh_.types[size_t(c)]);
-  SampleRect r;
-  bool first = true;
   for (int f = 0; f < lf.count; ++f) {
     Vec3 v[4];
     ProjectedVertex pv[4];
     const int n = face_vertices(frame_, mesh_, proj_, c, lf, f, v, pv);
     PolygonRaster pr;
-    if (!pr.setup(frame_, v, n, pv)) continue;
-    const SampleRect b = pr.bounds();
-    r = first ? b
-              : SampleRect{std::min(r.x0, b.x0), std::min(r.y0, b.y0), std::max(r.x1, b.x1),
-                           std::max(r.y1, b.y1)};
-    first = false;
+    if (pr.setup(frame_, v, n, pv)) fn(pr);
   }
+}
+
+SampleRect GlCellRaster::bounds(int32_t c) const {
+  SampleRect r;
+  each_face(c, [&](const PolygonRaster& pr) { r = r.unite(pr.bounds()); });
   return r;
 }
 
@@ -49,20 +48,14 @@ void GlCellRaster::accumulate(int32_t c, const SampleRect& r) {
   lo_.assign(size, std::numeric_limits<double>::infinity());
   hi_.assign(size, -std::numeric_limits<double>::infinity());
   n_.assign(size, 0);
-  const LocalFaces& lf = cell_local_faces(mesh_.types[size_t(c)]);
-  for (int f = 0; f < lf.count; ++f) {
-    Vec3 v[4];
-    ProjectedVertex pv[4];
-    const int n = face_vertices(frame_, mesh_, proj_, c, lf, f, v, pv);
-    PolygonRaster pr;
-    if (!pr.setup(frame_, v, n, pv)) continue;
+  each_face(c, [&](PolygonRaster& pr) {
     pr.scan(r, [&](int sx, int sy, double t) {
       const size_t i = size_t(sy - r.y0) * w + (sx - r.x0);
       lo_[i] = std::min(lo_[i], t);
       hi_[i] = std::max(hi_[i], t);
       if (n_[i] < 255) ++n_[i];
     });
-  }
+  });
 }
 
 }  // namespace vob

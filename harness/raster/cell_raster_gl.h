@@ -36,6 +36,9 @@ class GlCellRaster {
  private:
   // Rasterizes every face of c into lo_, hi_, n_ over rect r (r non-empty).
   void accumulate(int32_t c, const SampleRect& r);
+  // Calls fn(PolygonRaster&) for every face of c that sets up under the frame's rule.
+  template <class Fn>
+  void each_face(int32_t c, Fn&& fn) const;
 
   const SampleFrame& frame_;
   const CellMesh& mesh_;

@@ -31,6 +31,13 @@ struct SampleRect {
     return {x0 > o.x0 ? x0 : o.x0, y0 > o.y0 ? y0 : o.y0, x1 < o.x1 ? x1 : o.x1,
             y1 < o.y1 ? y1 : o.y1};
   }
+  // The smallest rectangle holding both (an empty one adds nothing).
+  SampleRect unite(const SampleRect& o) const {
+    if (empty()) return o;
+    if (o.empty()) return *this;
+    return {x0 < o.x0 ? x0 : o.x0, y0 < o.y0 ? y0 : o.y0, x1 > o.x1 ? x1 : o.x1,
+            y1 > o.y1 ? y1 : o.y1};
+  }
 };
 
 // floor / ceil of a sample coordinate, clamped so that far-off values stay in int range.
