@@ -24,7 +24,7 @@ void SoftwareBackend::set_primitives(const std::vector<Vec3>& points,
 
 void SoftwareBackend::begin_frame(const Camera& view) {
   frame_ = std::make_unique<SampleFrame>(view, 1, rule_);
-  range_ = gl_depth_range(view, centre_, radius_);
+  if (rule_ == RasterRule::gl) frame_->set_gl_depth_range(gl_depth_range(view, centre_, radius_));
   w_ = frame_->cols();
   h_ = frame_->rows();
   const size_t n = size_t(w_) * h_;
@@ -48,9 +48,8 @@ void SoftwareBackend::draw(const std::vector<int32_t>& ids, bool keep_far) {
   for (int32_t id : ids) {
     if (!raster.setup(*frame_, &points_[4 * size_t(id)], sizes_[id])) continue;
     const uint32_t c = uint32_t(id) + 1;
-    raster.scan(all, [&](int sx, int sy, double t) {
-      if (rule_ == RasterRule::gl)  // the 24-bit value the GL depth test compares
-        t = double(gl_depth24(gl_window_depth(frame_->camera(), range_, t / frame_->dir_length(sx, sy))));
+    raster.scan(all, [&](int sx, int sy, double t, int64_t depth24) {
+      if (rule_ == RasterRule::gl) t = double(depth24);  // what llvmpipe's depth test compares
       const size_t p = size_t(sy) * w_ + sx;
       if (keep_far && stencil_[p] < 255) ++stencil_[p];  // GL_INCR on depth pass and fail
       const int tie = colour_[p] ? tie_order(id, t, int32_t(colour_[p]) - 1, depth_[p]) : 0;

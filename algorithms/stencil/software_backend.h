@@ -41,7 +41,6 @@ class SoftwareBackend final : public LayerBackend {
   bool coplanar(int32_t a, int32_t b);
 
   RasterRule rule_;
-  GlDepthRange range_;  // gl rule: the GL backend's near and far planes
   Vec3 centre_{};
   double radius_ = 1;
   std::vector<Vec3> points_;

@@ -21,7 +21,7 @@ int64_t OracleResult::samples_with_k_above(int k) const {
 }
 
 nlohmann::json OracleResult::to_json() const {
-  return {{"supersample", supersample},
+  nlohmann::json j{{"supersample", supersample},
           {"samples", samples},
           {"fragments", fragments},
           {"covered_pixels", covered_pixels},
@@ -34,6 +34,8 @@ nlohmann::json OracleResult::to_json() const {
           {"examples", examples},
           {"overlapping_pairs", overlapping_pairs},
           {"overlap_examples", overlap_examples}};
+  if (rule_cycles) j["rule_cycles"] = rule_cycles->to_json();
+  return j;
 }
 
 namespace {
@@ -141,7 +143,6 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   const SampleFrame& frame = collector.frame();
   const bool cells = scene.kind() == SceneKind::Cells;
   const bool depth24 = opt.raster == RasterRule::gl && !cells;
-  const GlDepthRange range = gl_depth_range(view, scene.bounds().center(), scene.bounds().radius());
   const double tie = kDepthTieRelative *
                      (scene.bounds().radius() + length(view.eye - scene.bounds().center()));
   const size_t max_examples = static_cast<size_t>(opt.max_examples);
@@ -183,11 +184,8 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
         });
       s.in.resize(n);
       s.query.resize(n);
-      if (depth24) {  // the 24-bit value a GL depth test compares; equal values tie
-        const int sy = fl.row0 + int(i / fl.cols), sx = int(i % fl.cols);
-        const double len = frame.dir_length(sx, sy);  // view depth = t / |D|
-        for (int j = 0; j < n; ++j)
-          s.in[j] = s.query[j] = double(gl_depth24(gl_window_depth(view, range, frags[j].t_in / len)));
+      if (depth24) {  // the 24-bit value llvmpipe's depth test compares (fragments.h); equal values tie
+        for (int j = 0; j < n; ++j) s.in[j] = s.query[j] = frags[j].t_out;
       } else {
         for (int j = 0; j < n; ++j) {
           s.in[j] = frags[j].t_in;
@@ -271,6 +269,8 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   tbb::parallel_sort(pairs.begin(), pairs.end());
   r.violating_pairs = int64_t(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
   r.max_k = int(r.k_histogram.size()) - 1;
+  if (opt.raster == RasterRule::gl && r.violating_fragments > 0 && r.overlapping_pairs == 0)
+    r.rule_cycles = find_rule_cycles(collector, cells);
   if (opt.per_primitive) {
     r.violating_fragments_per_primitive.assign(primitive_id_count(scene), 0);
     for (const Scratch& s : scratch)

@@ -7,10 +7,12 @@
 // distance of the voxel centre (splat.h).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "harness/oracle/rule_cycles.h"
 #include "harness/raster/cell_clip.h"
 #include "harness/raster/raster_rule.h"
 #include "harness/scene/scene.h"
@@ -59,7 +61,14 @@ struct OracleResult {
   // to_json then writes violating_pairs as null, not as a count of 0.
   bool pairs_counted = true;
 
-  bool ok() const { return violating_fragments == 0; }
+  // gl rule, when the order violates: which violations lie on cycles of the rule's pixel
+  // precedence graph, which every order must break (rule_cycles.h). An order whose only
+  // violations are those, no more of them than the fewest any order has, is ok().
+  std::optional<RuleCycles> rule_cycles;
+
+  bool ok() const {
+    return violating_fragments == 0 || (rule_cycles && rule_cycles->as_good_as_the_rule_allows());
+  }
   bool input_fault() const { return overlapping_pairs > 0; }
   int64_t samples_with_k_above(int k) const;
   // Keys as everywhere: covered_pixels, violating_pixels, violating_fragments,

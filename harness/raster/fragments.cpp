@@ -39,6 +39,8 @@ class FragmentSink {
 FragmentCollector::FragmentCollector(const Scene& scene, const Camera& view,
                                      const std::vector<int32_t>& order, const CollectOptions& opt)
     : scene_(scene), order_(order), frame_(view, opt.supersample, opt.raster) {
+  if (opt.raster == RasterRule::gl)  // GL's near and far planes about the scene (raster_rule.h)
+    frame_.set_gl_depth_range(gl_depth_range(view, scene.bounds().center(), scene.bounds().radius()));
   if (opt.raster == RasterRule::gl && scene.kind() == SceneKind::Voxels)
     throw InputError("--raster gl", std::string(scene_kind_name(scene.kind())),
                      "the gl sampling rule covers triangle and cell scenes");
@@ -126,7 +128,10 @@ void FragmentCollector::emit_primitive(int32_t pos, const SampleRect& clip, Frag
     case SceneKind::Triangles: {
       const TriangleSoup& s = scene_.soup();
       const Vec3 v[3] = {s.points[s.tris[id][0]], s.points[s.tris[id][1]], s.points[s.tris[id][2]]};
-      rasterize_polygon(frame_, v, 3, clip, [&](int sx, int sy, double t) { sink.add(sx, sy, t, t); });
+      const bool gl = frame_.rule() == RasterRule::gl;
+      rasterize_polygon(frame_, v, 3, clip, [&](int sx, int sy, double t, int64_t depth24) {
+        sink.add(sx, sy, t, gl ? double(depth24) : t);
+      });
       break;
     }
     case SceneKind::Voxels: {

@@ -18,7 +18,10 @@
 namespace vob {
 
 struct Fragment {
-  double t_in = 0, t_out = 0;  // ray segment (cells); both the hit depth otherwise
+  // Cells: the ray segment. Triangles and voxels: t_in the hit depth; t_out the same, except
+  // for triangles under the gl rule: the 24-bit depth llvmpipe's depth test compares there
+  // (llvmpipe_depth.h), which is what the oracle compares under that rule.
+  double t_in = 0, t_out = 0;
   int32_t prim = 0;            // cell, triangle or voxel id
   int32_t pos = 0;             // position of prim in the drawing order
   double mid() const { return 0.5 * (t_in + t_out); }

@@ -24,7 +24,10 @@
 // it at the near plane, which the GL backends place beyond the scene). Depths are GL's too:
 // window depth is a plane through the snapped vertices (at the vertices' own depths), so
 // 1 / view depth (orthographic: view depth) is interpolated linearly over the fixed-point
-// triangle, and t is that view depth times |D|.
+// triangle, and t is that view depth times |D|. When the frame carries GL's near and far
+// planes (SampleFrame::set_gl_depth_range), an emitter taking a fourth argument also gets
+// the 24-bit depth llvmpipe's depth test compares there (llvmpipe_depth.h: its float
+// plane, not this one), -1 without them.
 //
 // Depth: the ray parameter t at which the sample's ray meets the polygon's plane
 // (t = s * |D|, see sample_frame.h). Orthographic samples with t < 0 (behind the eye plane)
@@ -32,7 +35,9 @@
 #pragma once
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
+#include "harness/raster/llvmpipe_depth.h"
 #include "harness/raster/sample_frame.h"
 
 namespace vob {
@@ -72,7 +77,8 @@ class PolygonRaster {
   double plane_depth(int sx, int sy) const {
     return plane_ok_ ? depth(frame_->x(sx, sy)) : std::numeric_limits<double>::quiet_NaN();
   }
-  // Calls emit(sx, sy, t) for every covered sample in `clip`, row by row, bottom up.
+  // Calls emit(sx, sy, t) (or emit(sx, sy, t, depth24), see above) for every covered
+  // sample in `clip`, row by row, bottom up.
   template <class Emit>
   void scan(const SampleRect& clip, Emit&& emit) const;
 
@@ -109,6 +115,8 @@ class PolygonRaster {
     SampleRect box;
     int64_t x0 = 0, y0 = 0;       // vertex 0 (fixed point)
     double q0 = 0, qx = 0, qy = 0;  // q = q0 + qx (X - x0) + qy (Y - y0), q = 1/zc or zc (ortho)
+    LlvmpipeDepthPlane zplane;      // llvmpipe's depth plane, when has_z
+    bool has_z = false;
     bool covers(int sx, int sy) const {
       const int64_t X = int64_t(sx) * kGlSubpixels, Y = int64_t(sy) * kGlSubpixels;
       for (int i = 0; i < 3; ++i)
@@ -126,7 +134,8 @@ class PolygonRaster {
   bool set_plane(const SampleFrame& frame, const Vec3* v, int n);
   // gl rule (polygon_raster_gl.cpp): fixed-point triangles of the snapped vertices.
   bool setup_gl(const SampleFrame& frame, const Vec3* v, int n, const ProjectedVertex* projected);
-  bool add_gl_triangle(const int64_t* x, const int64_t* y, const double* q);
+  // z: the vertices' float window z (llvmpipe_window_z), or null without GL's depth range.
+  bool add_gl_triangle(const int64_t* x, const int64_t* y, const double* q, const float* z);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
   bool inside(int i, const Vec3& x) const {
@@ -164,7 +173,11 @@ void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
           const double q = g.q0 + g.qx * double(int64_t(sx) * kGlSubpixels - g.x0) +
                            g.qy * double(int64_t(sy) * kGlSubpixels - g.y0);
           const double t = ortho ? q : frame_->dir_length(sx, sy) / q;
-          if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
+          if (!((ortho ? t >= 0 : t > 0) && std::isfinite(t))) continue;
+          if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
+            emit(sx, sy, t, g.has_z ? llvmpipe_depth24(g.zplane, sx, sy) : int64_t(-1));
+          else
+            emit(sx, sy, t);
         }
     }
     return;
@@ -181,7 +194,11 @@ void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
         const double t = depth(x);
         // Perspective hits are at t > 0 by construction; the test drops rounding noise of
         // rays that graze an edge-on polygon. Orthographic: only in front of the eye plane.
-        if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
+        if (!((ortho ? t >= 0 : t > 0) && std::isfinite(t))) continue;
+        if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
+          emit(sx, sy, t, int64_t(-1));
+        else
+          emit(sx, sy, t);
       }
     }
   }

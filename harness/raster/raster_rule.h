@@ -18,13 +18,16 @@
 //   (llvmpipe's bottom_edge_rule 0, which Mesa uses for framebuffer objects: D3D's top-left
 //   rule in a y-down frame, so left edges and the edges at the bottom in GL's y-up window);
 // - within llvmpipe's bounding box: x in [min X >> 8, (max X - 1) >> 8], y likewise;
-// - depth as a GL depth test compares it: window depth z in [0, 1] (gl_depth_range below)
-//   on the plane through the snapped vertices (polygon_raster.h), rounded to the 24-bit
-//   depth buffer, round(z * (2^24 - 1)); fragments of equal 24-bit depth are ties.
+// - depth as llvmpipe's depth test compares it: the vertices' window depth z in [0, 1]
+//   (gl_depth_range below), interpolated as llvmpipe's float setup and fragment code do it
+//   (llvmpipe_depth.h, checked bit for bit against its depth buffer) and converted to 24
+//   bits; fragments of equal 24-bit depth are ties. (Cells composite without a depth test:
+//   their segments are in doubles on the snapped planes, cell_raster_gl.h.)
 // The rule describes llvmpipe given those window coordinates: the GL backends hand
 // llvmpipe the snapped coordinates themselves (harness/gl/window_vertices.h), so its own
-// float vertex transform does not enter. Not described: llvmpipe's float interpolation of
-// depth, which on steep triangles can differ from the plane by tens of 24-bit steps. Other GL implementations snap to other grids (most desktop
+// float vertex transform does not enter. Those float depths can order two triangles one
+// way at one pixel and the other way at another; the oracle then tells violations every
+// order has from the others (harness/oracle/rule_cycles.h). Other GL implementations snap to other grids (most desktop
 // GPUs also use 8 subpixel bits, some 4) and may own other edges; the rule is llvmpipe's.
 #pragma once
 #include <cmath>

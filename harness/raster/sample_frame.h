@@ -82,6 +82,10 @@ class SampleFrame {
   bool project(Vec3 p, double& x, double& y, double& zc) const;
   // Pixels per world unit at view depth zc (zc > 0 in perspective).
   double pixels_per_unit(double zc) const;
+  // gl rule: the near and far planes GL's window depth is taken under (raster_rule.h). With
+  // them set, PolygonRaster::scan hands emitters that take it llvmpipe's 24-bit depth.
+  void set_gl_depth_range(const GlDepthRange& r) { gl_range_ = r, has_gl_range_ = true; }
+  const GlDepthRange* gl_range() const { return has_gl_range_ ? &gl_range_ : nullptr; }
 
  private:
   Camera cam_;
@@ -92,6 +96,8 @@ class SampleFrame {
   std::vector<Vec3> row_, col_;
   Vec3 x0_, dx_, dy_;
   double xmag_ = 0;
+  GlDepthRange gl_range_;
+  bool has_gl_range_ = false;
 };
 
 }  // namespace vob
