@@ -3,7 +3,8 @@
 // judged against its own claims, as pbrt-v4's tests loop over every implementation:
 //   - a complete permutation at every view;
 //   - image_exact: no oracle violation at S = 1 on every acyclic scene, under the sampling
-//     rule the claim is made for (claims.image_exact_under: gl for GL backends);
+//     rule the claim is made for (claims.image_exact_under: gl for GL backends; there the
+//     oracle's verdict, which lets violations on cycles of llvmpipe's depths pass);
 //   - object_exact: none at S = 4 either;
 //   - detects_cycles: the cycle scenes report a cycle (for an orderer that is not exact,
 //     those whose cycle runs through shared faces; see face_connected).
@@ -148,7 +149,9 @@ TEST_P(Conformance, CompleteAndTrueToItsClaims) {
       const OracleResult r = check_ordering(scene, cam, m.ordering.order, rule);
       ASSERT_FALSE(r.input_fault()) << where << ": the test scene itself is invalid";
       covered += r.covered_pixels;
-      EXPECT_EQ(r.violating_fragments, 0) << where << " S=1: " << r.to_json().dump();
+      // gl: violations on cycles of the rule's own depths pass, as few as any order has
+      // (rule_cycles.h); under the exact rule ok() means no violation at all.
+      EXPECT_TRUE(r.ok()) << where << " S=1: " << r.to_json().dump();
     }
     if (claims.composites) {
       // One verdict: a compositing orderer answers for what it composited at this view.
