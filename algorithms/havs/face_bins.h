@@ -34,11 +34,11 @@ struct FaceBins {
   std::vector<BandItem> items;               // per band, in drawing order
   std::vector<ProjectedVertex> projected;    // per mesh point
   std::vector<double> inv_len, len;          // per sample: 1 / |D| and |D| (perspective only)
-  std::vector<SampleRect> rect;              // binning scratch: per face in drawing order
+  std::vector<BandItem> made;                // binning scratch: per face in drawing order
   std::vector<int64_t> slot;                 // binning scratch: per (chunk, band)
   size_t bytes() const {
     return items.capacity() * sizeof(BandItem) + projected.capacity() * sizeof(ProjectedVertex) +
-           (inv_len.capacity() + len.capacity()) * 8 + rect.capacity() * sizeof(SampleRect) + (start.capacity() + slot.capacity()) * 8;
+           (inv_len.capacity() + len.capacity()) * 8 + made.capacity() * sizeof(BandItem) + (start.capacity() + slot.capacity()) * 8;
   }
 };
 

@@ -40,7 +40,7 @@ void check_k(int k) {
 }  // namespace
 
 size_t FaceData::bytes() const {
-  return boundary.capacity() + scalar.capacity() * sizeof(Linear) + quad_slot.capacity() * 4 +
+  return boundary.capacity() + points.capacity() * sizeof(Points) + scalar.capacity() * sizeof(Linear) + quad_slot.capacity() * 4 +
          (quad_half2.capacity() + quad_split.capacity()) * sizeof(Linear);
 }
 
@@ -59,11 +59,13 @@ FaceData build_face_data(const Scene& scene) {
   const auto norm = [&](int32_t p) { return hi > lo ? (m.scalar(p) - lo) / (hi - lo) : 0.5; };
   const size_t nf = mf.num_faces();
   fd.boundary.resize(nf);
+  fd.points.resize(nf);
   fd.scalar.resize(nf);
   fd.quad_slot.assign(nf, -1);
   for (size_t f = 0; f < nf; ++f) {
     fd.boundary[f] = mf.cell1[f] < 0;
     const int32_t* id = mf.face_points(f);
+    for (int j = 0; j < 4; ++j) fd.points[f].id[j] = j < mf.face_size(f) ? id[j] : -1;
     const Vec3 &p0 = m.points[id[0]], &p1 = m.points[id[1]], &p2 = m.points[id[2]];
     fd.scalar[f] = triangle_fn(p0, p1, p2, norm(id[0]), norm(id[1]), norm(id[2]));
     if (mf.face_size(f) == 4) {
