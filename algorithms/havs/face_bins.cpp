@@ -73,13 +73,13 @@ void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<i
     int64_t* cnt = &slot[c * nb];
     ProjectedVertex q[4];
     for (size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
-      if (i + 16 < e) __builtin_prefetch(&fp[order[i + 16]]);
+      if (i + 16 < e) __builtin_prefetch(&fp[order[i + 16]]), __builtin_prefetch(&fd.boundary[order[i + 16]]);
       const int32_t f = order[i];
       const FaceData::Points& ids = fp[f];
       const int m = ids.id[3] < 0 ? 3 : 4;
       for (int j = 0; j < m; ++j) q[j] = b.projected[ids.id[j]];
       BandItem& item = made[i];
-      item.face = f;
+      item.tag = f * 2 + fd.boundary[f];
       for (int j = 0; j < 4; ++j) item.ids[j] = ids.id[j];
       item.rect = reach(frame, q, m);
       const SampleRect& r = item.rect;

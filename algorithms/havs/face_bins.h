@@ -23,7 +23,7 @@
 namespace vob::havs {
 
 struct BandItem {
-  int32_t face;
+  int32_t tag;      // face * 2 + (1 on the mesh boundary), as KEntry::tag
   int32_t ids[4];   // the face's points; ids[3] = -1 for a triangle
   SampleRect rect;  // the sample centres the face may cover
 };
@@ -69,9 +69,8 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
   for (int64_t it = b.start[q]; it < end; ++it) {
     if (it + 8 < end) {  // faces arrive in depth order: their records are scattered
       const BandItem& ahead = b.items[it + 8];
-      __builtin_prefetch(&fd.boundary[ahead.face]);
-      __builtin_prefetch(&fd.quad_slot[ahead.face]);
-      __builtin_prefetch(&fd.scalar[ahead.face]);
+      if (ahead.ids[3] >= 0) __builtin_prefetch(&fd.quad_slot[ahead.tag >> 1]);
+      __builtin_prefetch(&fd.scalar[ahead.tag >> 1]);
       for (int i = 0; i < 4 && ahead.ids[i] >= 0; ++i) {
         __builtin_prefetch(&points[ahead.ids[i]]);
         __builtin_prefetch(&b.projected[ahead.ids[i]]);
@@ -85,8 +84,7 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
       pv[i] = b.projected[item.ids[i]];
       in_front = in_front && pv[i].in_front;
     }
-    const int32_t f = item.face;
-    const int32_t tag = f * 2 + fd.boundary[f];
+    const int32_t tag = item.tag, f = tag >> 1;
     if (n == 3 && in_front && !generic && frame.rule() == RasterRule::exact) {
       if (!ts.setup(frame, v)) continue;
       const FaceData::Linear& l1 = fd.scalar[f];
