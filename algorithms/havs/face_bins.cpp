@@ -81,6 +81,7 @@ void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<i
       BandItem& item = made[i];
       item.tag = f * 2 + fd.boundary[f];
       for (int j = 0; j < 4; ++j) item.ids[j] = ids.id[j];
+      if (m == 3) item.ids[3] = q[0].in_front && q[1].in_front && q[2].in_front ? kFrontTriangle : kTriangle;
       item.rect = reach(frame, q, m);
       const SampleRect& r = item.rect;
       if (!r.empty())
