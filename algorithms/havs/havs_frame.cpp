@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <numeric>
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
 
 #include "harness/oracle/k_metric.h"
 #include "harness/raster/polygon_raster.h"
@@ -262,10 +266,25 @@ RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
   const Shading shade{fd.tau0};
   // Per band, written once per band (a counter per fragment here would share lines).
   std::vector<RenderStats> per_band(b.bands);
-  tbb::parallel_for(0, b.bands, [&](int q) {
-    per_band[q] = k == 2 ? render_band2(fd, frame, b, q, shade, image)
-                         : render_band_any(fd, frame, b, q, k, shade, image);
+  // Bands from a shared queue, the most items first (largest first: with a third of the
+  // bands empty and the largest ~9% of the work on the helix, a split of the band range left
+  // one thread idle at the end); bands are independent, so the result does not depend on it.
+  std::vector<int> queue(b.bands);
+  std::iota(queue.begin(), queue.end(), 0);
+  std::stable_sort(queue.begin(), queue.end(), [&](int x, int y) {
+    return b.start[x + 1] - b.start[x] > b.start[y + 1] - b.start[y];
   });
+  std::atomic<int> next{0};
+  const int workers = static_cast<int>(std::min(
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism),
+      static_cast<size_t>(tbb::this_task_arena::max_concurrency())));
+  tbb::parallel_for(0, std::max(1, workers), [&](int) {
+    for (int i; (i = next.fetch_add(1, std::memory_order_relaxed)) < b.bands;) {
+      const int q = queue[i];
+      per_band[q] = k == 2 ? render_band2(fd, frame, b, q, shade, image)
+                           : render_band_any(fd, frame, b, q, k, shade, image);
+    }
+  }, tbb::simple_partitioner());
   RenderStats total;
   for (const RenderStats& s : per_band) {
     total.fragments += s.fragments;
