@@ -59,26 +59,31 @@ void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<i
       }
     });
   }
-  // Two passes over chunks of the drawing order: count per (chunk, band), then place; the
-  // slots are band-major, chunk-minor, so every band's list keeps the drawing order.
-  const MeshFaces& mf = *fd.faces;
+  // Two passes over chunks of the drawing order: make each face's item (position order) and
+  // count per (chunk, band), then copy the items to their bands; the slots are band-major,
+  // chunk-minor, so every band's list keeps the drawing order. The first pass does the
+  // scattered reads (faces come in depth order), the second reads sequentially.
   const size_t n = order.size(), chunks = (n + kChunk - 1) / kChunk, nb = size_t(b.bands);
-  std::vector<SampleRect>& rect = b.rect;
+  std::vector<BandItem>& made = b.made;
   std::vector<int64_t>& slot = b.slot;
-  rect.resize(n);
+  made.resize(n);
   slot.assign(chunks * nb, 0);
+  const FaceData::Points* fp = fd.points.data();
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
     int64_t* cnt = &slot[c * nb];
     ProjectedVertex q[4];
     for (size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
-      if (i + 16 < e) __builtin_prefetch(&mf.offsets[order[i + 16]]);
-      if (i + 8 < e) __builtin_prefetch(mf.face_points(order[i + 8]));
+      if (i + 16 < e) __builtin_prefetch(&fp[order[i + 16]]), __builtin_prefetch(&fd.boundary[order[i + 16]]);
       const int32_t f = order[i];
-      const int32_t* ids = mf.face_points(f);
-      const int m = mf.face_size(f);
-      for (int j = 0; j < m; ++j) q[j] = b.projected[ids[j]];
-      const SampleRect r = reach(frame, q, m);
-      rect[i] = r;
+      const FaceData::Points& ids = fp[f];
+      const int m = ids.id[3] < 0 ? 3 : 4;
+      for (int j = 0; j < m; ++j) q[j] = b.projected[ids.id[j]];
+      BandItem& item = made[i];
+      item.tag = f * 2 + fd.boundary[f];
+      for (int j = 0; j < 4; ++j) item.ids[j] = ids.id[j];
+      if (m == 3) item.ids[3] = q[0].in_front && q[1].in_front && q[2].in_front ? kFrontTriangle : kTriangle;
+      item.rect = reach(frame, q, m);
+      const SampleRect& r = item.rect;
       if (!r.empty())
         for (int band = r.y0 / b.rows_per_band; band <= r.y1 / b.rows_per_band; ++band) ++cnt[band];
     }
@@ -98,12 +103,9 @@ void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<i
   tbb::parallel_for(size_t(0), chunks, [&](size_t c) {
     int64_t* next = &slot[c * nb];
     for (size_t i = c * kChunk, e = std::min(n, i + kChunk); i < e; ++i) {
-      const SampleRect& r = rect[i];
+      const SampleRect& r = made[i].rect;
       if (r.empty()) continue;
-      BandItem item{order[i], {-1, -1, -1, -1}, r};
-      const int32_t* ids = mf.face_points(order[i]);
-      for (int j = 0, m = mf.face_size(order[i]); j < m; ++j) item.ids[j] = ids[j];
-      for (int band = r.y0 / b.rows_per_band; band <= r.y1 / b.rows_per_band; ++band) b.items[next[band]++] = item;
+      for (int band = r.y0 / b.rows_per_band; band <= r.y1 / b.rows_per_band; ++band) b.items[next[band]++] = made[i];
     }
   });
 }

@@ -22,9 +22,13 @@
 
 namespace vob::havs {
 
+constexpr int32_t kFrontTriangle = -1, kTriangle = -2;
+
 struct BandItem {
-  int32_t face;
-  int32_t ids[4];   // the face's points; ids[3] = -1 for a triangle
+  int32_t tag;      // face * 2 + (1 on the mesh boundary), as KEntry::tag
+  int32_t ids[4];   // the face's points; for a triangle ids[3] is kFrontTriangle when all
+                    // three points are in front of the eye (then the scan reads no
+                    // projected point), kTriangle otherwise
   SampleRect rect;  // the sample centres the face may cover
 };
 
@@ -34,11 +38,11 @@ struct FaceBins {
   std::vector<BandItem> items;               // per band, in drawing order
   std::vector<ProjectedVertex> projected;    // per mesh point
   std::vector<double> inv_len, len;          // per sample: 1 / |D| and |D| (perspective only)
-  std::vector<SampleRect> rect;              // binning scratch: per face in drawing order
+  std::vector<BandItem> made;                // binning scratch: per face in drawing order
   std::vector<int64_t> slot;                 // binning scratch: per (chunk, band)
   size_t bytes() const {
     return items.capacity() * sizeof(BandItem) + projected.capacity() * sizeof(ProjectedVertex) +
-           (inv_len.capacity() + len.capacity()) * 8 + rect.capacity() * sizeof(SampleRect) + (start.capacity() + slot.capacity()) * 8;
+           (inv_len.capacity() + len.capacity()) * 8 + made.capacity() * sizeof(BandItem) + (start.capacity() + slot.capacity()) * 8;
   }
 };
 
@@ -69,25 +73,19 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
   for (int64_t it = b.start[q]; it < end; ++it) {
     if (it + 8 < end) {  // faces arrive in depth order: their records are scattered
       const BandItem& ahead = b.items[it + 8];
-      __builtin_prefetch(&fd.boundary[ahead.face]);
-      __builtin_prefetch(&fd.quad_slot[ahead.face]);
-      __builtin_prefetch(&fd.scalar[ahead.face]);
+      if (ahead.ids[3] >= 0) __builtin_prefetch(&fd.quad_slot[ahead.tag >> 1]);
+      __builtin_prefetch(&fd.scalar[ahead.tag >> 1]);
+      const bool ahead_fast = ahead.ids[3] == kFrontTriangle && !generic && frame.rule() == RasterRule::exact;
       for (int i = 0; i < 4 && ahead.ids[i] >= 0; ++i) {
         __builtin_prefetch(&points[ahead.ids[i]]);
-        __builtin_prefetch(&b.projected[ahead.ids[i]]);
+        if (!ahead_fast) __builtin_prefetch(&b.projected[ahead.ids[i]]);
       }
     }
     const BandItem& item = b.items[it];
     const int n = item.ids[3] < 0 ? 3 : 4;
-    bool in_front = true;
-    for (int i = 0; i < n; ++i) {
-      v[i] = points[item.ids[i]];
-      pv[i] = b.projected[item.ids[i]];
-      in_front = in_front && pv[i].in_front;
-    }
-    const int32_t f = item.face;
-    const int32_t tag = f * 2 + fd.boundary[f];
-    if (n == 3 && in_front && !generic && frame.rule() == RasterRule::exact) {
+    for (int i = 0; i < n; ++i) v[i] = points[item.ids[i]];
+    const int32_t tag = item.tag, f = tag >> 1;
+    if (item.ids[3] == kFrontTriangle && !generic && frame.rule() == RasterRule::exact) {
       if (!ts.setup(frame, v)) continue;
       const FaceData::Linear& l1 = fd.scalar[f];
       const double a1 = ortho ? l1.c : l1.c + dot(l1.g, eye), b1 = ortho ? dot(l1.g, fwd) : 0;
@@ -98,6 +96,7 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
       });
       continue;
     }
+    for (int i = 0; i < n; ++i) pv[i] = b.projected[item.ids[i]];
     if (!pr.setup(frame, v, n, pv)) continue;
     // s(t) along the ray X: perspective p = eye + X t/|X|, orthographic p = X + fwd t.
     const auto along = [&](const FaceData::Linear& l, double& a, double& b_t) {

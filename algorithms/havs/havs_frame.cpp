@@ -5,7 +5,11 @@
 #include <algorithm>
 #include <numeric>
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
 
 #include "harness/oracle/k_metric.h"
 #include "harness/raster/polygon_raster.h"
@@ -40,7 +44,7 @@ void check_k(int k) {
 }  // namespace
 
 size_t FaceData::bytes() const {
-  return boundary.capacity() + scalar.capacity() * sizeof(Linear) + quad_slot.capacity() * 4 +
+  return boundary.capacity() + points.capacity() * sizeof(Points) + scalar.capacity() * sizeof(Linear) + quad_slot.capacity() * 4 +
          (quad_half2.capacity() + quad_split.capacity()) * sizeof(Linear);
 }
 
@@ -59,11 +63,13 @@ FaceData build_face_data(const Scene& scene) {
   const auto norm = [&](int32_t p) { return hi > lo ? (m.scalar(p) - lo) / (hi - lo) : 0.5; };
   const size_t nf = mf.num_faces();
   fd.boundary.resize(nf);
+  fd.points.resize(nf);
   fd.scalar.resize(nf);
   fd.quad_slot.assign(nf, -1);
   for (size_t f = 0; f < nf; ++f) {
     fd.boundary[f] = mf.cell1[f] < 0;
     const int32_t* id = mf.face_points(f);
+    for (int j = 0; j < 4; ++j) fd.points[f].id[j] = j < mf.face_size(f) ? id[j] : -1;
     const Vec3 &p0 = m.points[id[0]], &p1 = m.points[id[1]], &p2 = m.points[id[2]];
     fd.scalar[f] = triangle_fn(p0, p1, p2, norm(id[0]), norm(id[1]), norm(id[2]));
     if (mf.face_size(f) == 4) {
@@ -113,58 +119,133 @@ std::vector<int32_t> cell_order_from_faces(const FaceData& fd, const std::vector
 
 namespace {
 
-// A pixel's k-buffer, count and accumulator side by side: a fragment touches one cache line
-// rather than three (the profile's hottest loads were the separate acc and count arrays).
-template <int K>
-struct PixelState {
-  KEntry e[K];
+// k = 2, the paper's case: each pixel's two entries kept sorted (e0 nearer), as one record
+// with its accumulator (one cache line per fragment). An entry is a 64-bit key, the float
+// bits of d (d >= 0, -0 made +0, so the bits order as the values) over the tag, so key
+// order is `nearer` exactly, and the insert is branch-free selects instead of the data-
+// dependent branches that mispredicted about once per fragment. Which two entries stay and
+// which pair is composited depends only on the set of three, so the segments are
+// kbuffer_insert's (the unsorted hardware layout) exactly; the analysis reruns that one.
+struct Pair2 {
+  uint64_t k0, k1;
+  float v0, v1;
   PixelAccum acc;
   uint8_t count;
 };
 
-// One band of the k-buffer pass. K > 0: k == K known at compile time (the paper's k = 2),
-// loops unrolled and PixelState; K == 0: any k, separate arrays. Same arithmetic either way.
-template <int K>
-RenderStats render_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q, int k,
-                        const Shading& shade, Image& image) {
+inline uint64_t key_of(const KEntry& e) {
+  const float d = e.d + 0.f;  // -0 -> +0
+  uint32_t bits;
+  __builtin_memcpy(&bits, &d, 4);
+  return (uint64_t(bits) << 32) | uint32_t(e.tag);
+}
+inline float d_of(uint64_t key) {
+  const uint32_t bits = uint32_t(key >> 32);
+  float d;
+  __builtin_memcpy(&d, &bits, 4);
+  return d;
+}
+
+// The segments of a band in the order the k-buffer emits them, shaded in batches: the
+// opacities (one exp each) in a loop the compiler vectorises, then each pixel's front-to-back
+// accumulation in emission order (opacities(), kbuffer.h). Same float operations per segment as Shading::segment,
+// so the image is the per-fragment one bit for bit.
+class SegmentBatch {
+ public:
+  static constexpr int kSize = 1024;
+  SegmentBatch(const Shading& shade, Pair2* px) : tau_(float(shade.tau0)), px_(px) {}
+  // n1 -> n2 at pixel p through the boundary logic; returns whether it composites.
+  int64_t add(int64_t p, uint64_t n1, float v1, uint64_t n2, float v2) {
+    PixelAccum& acc = px_[p].acc;
+    acc.inside ^= bool(n1 & 1);
+    if (!acc.inside) return 0;
+    pixel_[n_] = int32_t(p);
+    s_[n_] = Shading::mean(v1, v2);
+    dd_[n_] = d_of(n2) - d_of(n1);
+    if (++n_ == kSize) drain();
+    return 1;
+  }
+  void drain() {
+    float alpha[kSize];
+    opacities(tau_, s_, dd_, alpha, n_);
+    for (int i = 0; i < n_; ++i) Shading::accumulate(px_[pixel_[i]].acc, s_[i], alpha[i]);
+    n_ = 0;
+  }
+
+ private:
+  float tau_;
+  Pair2* px_;
+  int n_ = 0;
+  int32_t pixel_[kSize];
+  float s_[kSize], dd_[kSize];
+};
+
+RenderStats render_band2(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q,
+                         const Shading& shade, Image& image) {
+  const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
+  const int64_t np = int64_t(row1 - row0) * frame.cols();
+  // Per-thread buffer kept from band to band and frame to frame (fresh ones cost page
+  // faults every frame).
+  thread_local std::vector<Pair2> buffer;
+  buffer.resize(np);
+  Pair2* px = buffer.data();
+  for (int64_t p = 0; p < np; ++p) px[p].acc = PixelAccum{}, px[p].count = 0;
+  int64_t frags = 0, segs = 0;
+  SegmentBatch batch(shade, px);
+  scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) __attribute__((always_inline)) {
+    ++frags;
+    Pair2& s = px[p];
+    const uint64_t kf = key_of(e);
+    if (s.count < 2) {
+      if (s.count++ == 0) {
+        s.k0 = kf, s.v0 = e.v;
+      } else if (kf < s.k0) {
+        s.k1 = s.k0, s.v1 = s.v0, s.k0 = kf, s.v0 = e.v;
+      } else {
+        s.k1 = kf, s.v1 = e.v;
+      }
+      return;
+    }
+    // n1 = min(e0, f), m = max(e0, f); n2 = min(m, e1) stays as e0, max(m, e1) as e1.
+    const bool f_first = kf < s.k0;
+    const uint64_t n1 = f_first ? kf : s.k0, m = f_first ? s.k0 : kf;
+    const float v1 = f_first ? e.v : s.v0, vm = f_first ? s.v0 : e.v;
+    const bool m_second = m < s.k1;
+    const uint64_t n2 = m_second ? m : s.k1, far = m_second ? s.k1 : m;
+    const float v2 = m_second ? vm : s.v1, vfar = m_second ? s.v1 : vm;
+    s.k0 = n2, s.v0 = v2, s.k1 = far, s.v1 = vfar;
+    segs += batch.add(p, n1, v1, n2, v2);
+  });
+  for (int64_t p = 0; p < np; ++p)
+    if (px[p].count == 2) segs += batch.add(p, px[p].k0, px[p].v0, px[p].k1, px[p].v1);
+  batch.drain();
+  for (int64_t p = 0; p < np; ++p) store_pixel(image, int64_t(row0) * frame.cols() + p, px[p].acc);
+  return {frags, segs};
+}
+
+// Any k: separate arrays and kbuffer_insert (the analysis' own k-buffer).
+RenderStats render_band_any(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, int q, int k,
+                            const Shading& shade, Image& image) {
   const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
   const int64_t np = int64_t(row1 - row0) * frame.cols();
   int64_t segs = 0, frags = 0;
-  // Per-thread buffers kept from band to band and frame to frame (fresh ones cost page
-  // faults every frame).
-  if constexpr (K > 0) {
-    thread_local std::vector<PixelState<K>> px;
-    px.resize(np);
-    for (PixelState<K>& s : px) s.acc = PixelAccum{}, s.count = 0;
-    scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) {
-      ++frags;
-      PixelState<K>& s = px[p];
-      kbuffer_insert(s.e, s.count, K, e, [&](const KEntry& n1, const KEntry& n2) { segs += shade.segment(s.acc, n1, n2); });
+  thread_local std::vector<KEntry> entries;
+  thread_local std::vector<uint8_t> count;
+  thread_local std::vector<PixelAccum> acc;
+  entries.resize(np * k);
+  count.assign(np, 0);
+  acc.assign(np, PixelAccum{});
+  scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) {
+    ++frags;
+    kbuffer_insert(&entries[p * k], count[p], k, e, [&](const KEntry& n1, const KEntry& n2) {
+      segs += shade.segment(acc[p], n1, n2);
     });
-    for (int64_t p = 0; p < np; ++p) {
-      PixelState<K>& s = px[p];
-      kbuffer_flush(s.e, s.count, [&](const KEntry& n1, const KEntry& n2) { segs += shade.segment(s.acc, n1, n2); });
-      store_pixel(image, int64_t(row0) * frame.cols() + p, s.acc);
-    }
-  } else {
-    thread_local std::vector<KEntry> entries;
-    thread_local std::vector<uint8_t> count;
-    thread_local std::vector<PixelAccum> acc;
-    entries.resize(np * k);
-    count.assign(np, 0);
-    acc.assign(np, PixelAccum{});
-    scan_band(fd, frame, b, q, [&](int64_t p, const KEntry& e) {
-      ++frags;
-      kbuffer_insert(&entries[p * k], count[p], k, e, [&](const KEntry& n1, const KEntry& n2) {
-        segs += shade.segment(acc[p], n1, n2);
-      });
+  });
+  for (int64_t p = 0; p < np; ++p) {
+    kbuffer_flush(&entries[p * k], count[p], [&](const KEntry& n1, const KEntry& n2) {
+      segs += shade.segment(acc[p], n1, n2);
     });
-    for (int64_t p = 0; p < np; ++p) {
-      kbuffer_flush(&entries[p * k], count[p], [&](const KEntry& n1, const KEntry& n2) {
-        segs += shade.segment(acc[p], n1, n2);
-      });
-      store_pixel(image, int64_t(row0) * frame.cols() + p, acc[p]);
-    }
+    store_pixel(image, int64_t(row0) * frame.cols() + p, acc[p]);
   }
   return {frags, segs};
 }
@@ -185,10 +266,25 @@ RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
   const Shading shade{fd.tau0};
   // Per band, written once per band (a counter per fragment here would share lines).
   std::vector<RenderStats> per_band(b.bands);
-  tbb::parallel_for(0, b.bands, [&](int q) {
-    per_band[q] = k == 2 ? render_band<2>(fd, frame, b, q, k, shade, image)
-                         : render_band<0>(fd, frame, b, q, k, shade, image);
+  // Bands from a shared queue, the most items first (largest first: with a third of the
+  // bands empty and the largest ~9% of the work on the helix, a split of the band range left
+  // one thread idle at the end); bands are independent, so the result does not depend on it.
+  std::vector<int> queue(b.bands);
+  std::iota(queue.begin(), queue.end(), 0);
+  std::stable_sort(queue.begin(), queue.end(), [&](int x, int y) {
+    return b.start[x + 1] - b.start[x] > b.start[y + 1] - b.start[y];
   });
+  std::atomic<int> next{0};
+  const int workers = static_cast<int>(std::min(
+      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism),
+      static_cast<size_t>(tbb::this_task_arena::max_concurrency())));
+  tbb::parallel_for(0, std::max(1, workers), [&](int) {
+    for (int i; (i = next.fetch_add(1, std::memory_order_relaxed)) < b.bands;) {
+      const int q = queue[i];
+      per_band[q] = k == 2 ? render_band2(fd, frame, b, q, shade, image)
+                           : render_band_any(fd, frame, b, q, k, shade, image);
+    }
+  }, tbb::simple_partitioner());
   RenderStats total;
   for (const RenderStats& s : per_band) {
     total.fragments += s.fragments;

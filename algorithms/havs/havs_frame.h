@@ -36,6 +36,10 @@ struct FaceData {
   const MeshFaces* faces = nullptr;
   const Centroids* centroids = nullptr;
   std::vector<uint8_t> boundary;      // per face
+  struct Points {
+    int32_t id[4];                    // the face's points; id[3] = -1 for a triangle
+  };
+  std::vector<Points> points;         // per face: one load where MeshFaces takes two dependent
   struct Linear {
     Vec3 g;
     double c = 0;

@@ -30,8 +30,12 @@
 // composited segment sequence is the exact one. k_needed = 1 + max m(f) (0 if uncovered) is
 // the per-pixel measure of Table 2 ("positions a fragment had to move").
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 namespace vob::havs {
 
@@ -93,13 +97,44 @@ struct PixelAccum {
   bool inside = false;
 };
 
+// exp(-x) for x >= 0 in float, inline (the libm call and its dependency chain were the
+// shading's cost): Cephes' expf, range reduction by n = round(-x log2 e) with ln 2 split in
+// two, degree-5 polynomial, 2^n from the exponent bits. Relative error about 1 ulp (the
+// bound below is checked in tests/algorithms/havs/havs_shading_test.cpp); x >= 87 gives
+// exp(-87) ~ 1.6e-38, i.e. opacity 1. The magic constant rounds to nearest (the default
+// mode; no -ffast-math here).
+inline float exp_neg(float x) {
+  float y = std::max(-x, -87.f);
+  const float magic = 12582912.f;  // 1.5 * 2^23
+  const float n = (y * 1.44269504088896341f + magic) - magic;
+  y = y - n * 0.693359375f;
+  y = y - n * -2.12194440e-4f;
+  const float z = y * y;
+  float p = 1.9875691500e-4f;
+  p = p * y + 1.3981999507e-3f;
+  p = p * y + 8.3334519073e-3f;
+  p = p * y + 4.1665795894e-2f;
+  p = p * y + 1.6666665459e-1f;
+  p = p * y + 5.0000001201e-1f;
+  p = p * z + y + 1.f;
+  const int32_t bits = (int32_t(n) + 127) << 23;
+  float scale;
+  __builtin_memcpy(&scale, &bits, 4);
+  return p * scale;
+}
+
+// alpha[i] = Shading::opacity(tau, s[i], dd[i]) for i < n, four at a time with SSE2 (the
+// same float operations lane by lane, so the same bits; GCC does not vectorise the scalar
+// loop itself under its default -ftrapping-math).
+inline void opacities(float tau, const float* s, const float* dd, float* alpha, int n);
+
 // The harness compositor's transfer function (render/compositor.cpp): green-to-pink ramp,
 // extinction tau0 * (0.25 + 0.75 s).
-// The k-buffer composites in float with one expf per segment (precise = false); the
-// analysis' exact image is the reference, in double with std::exp (precise = true). The two
-// opacities differ by float rounding: |alpha_float - alpha_double| <= 4e-7 for every segment
-// (tests/algorithms/havs/havs_shading_test.cpp sweeps the extinction range), so a pixel's
-// colour moves by at most that times its number of segments.
+// The k-buffer composites in float with one inline exp per segment (exp_neg; precise =
+// false); the analysis' exact image is the reference, in double with std::exp (precise =
+// true). The two opacities differ by float rounding: |alpha_float - alpha_double| <= 4e-7
+// for every segment (tests/algorithms/havs/havs_shading_test.cpp sweeps the extinction
+// range), so a pixel's colour moves by at most that times its number of segments.
 struct Shading {
   double tau0 = 1;
   bool precise = false;
@@ -107,25 +142,65 @@ struct Shading {
   bool segment(PixelAccum& px, const KEntry& n1, const KEntry& n2) const {
     if (n1.boundary()) px.inside = !px.inside;
     if (!px.inside) return false;
-    if (precise) {
-      const double s = 0.5 * (double(n1.v) + double(n2.v));
-      const double alpha = 1.0 - std::exp(-tau0 * (0.25 + 0.75 * s) * (double(n2.d) - n1.d));
-      const float w = float((1.0 - px.a) * alpha);
-      px.r += w * float(0.15 + s * 0.85);
-      px.g += w * float(0.80 - s * 0.45);
-      px.b += w * float(0.30 + s * 0.40);
-      px.a += w;
-    } else {
-      const float s = 0.5f * (n1.v + n2.v);
-      const float alpha = 1.f - std::exp(-float(tau0) * (0.25f + 0.75f * s) * (n2.d - n1.d));
-      const float w = (1.f - px.a) * alpha;
-      px.r += w * (0.15f + s * 0.85f);
-      px.g += w * (0.80f - s * 0.45f);
-      px.b += w * (0.30f + s * 0.40f);
-      px.a += w;
-    }
+    if (precise)
+      composite_double(px, n1, n2);
+    else
+      composite(px, n1.v, n2.v, n2.d - n1.d);
     return true;
   }
+  // The float path: segment of scalars v1, v2 and length dd, in three steps that a caller
+  // may also run over a batch of segments (the k = 2 pass: opacities vectorised).
+  void composite(PixelAccum& px, float v1, float v2, float dd) const {
+    const float s = mean(v1, v2);
+    accumulate(px, s, opacity(float(tau0), s, dd));
+  }
+  static float mean(float v1, float v2) { return 0.5f * (v1 + v2); }
+  static float opacity(float tau, float s, float dd) { return 1.f - exp_neg(tau * (0.25f + 0.75f * s) * dd); }
+  static void accumulate(PixelAccum& px, float s, float alpha) {
+    const float w = (1.f - px.a) * alpha;
+    px.r += w * (0.15f + s * 0.85f);
+    px.g += w * (0.80f - s * 0.45f);
+    px.b += w * (0.30f + s * 0.40f);
+    px.a += w;
+  }
+  __attribute__((noinline)) void composite_double(PixelAccum& px, const KEntry& n1, const KEntry& n2) const {
+    const double s = 0.5 * (double(n1.v) + double(n2.v));
+    const double alpha = 1.0 - std::exp(-tau0 * (0.25 + 0.75 * s) * (double(n2.d) - n1.d));
+    const float w = float((1.0 - px.a) * alpha);
+    px.r += w * float(0.15 + s * 0.85);
+    px.g += w * float(0.80 - s * 0.45);
+    px.b += w * float(0.30 + s * 0.40);
+    px.a += w;
+  }
 };
+
+inline void opacities(float tau, const float* s, const float* dd, float* alpha, int n) {
+  int i = 0;
+#ifdef __SSE2__
+  const __m128 vtau = _mm_set1_ps(tau), magic = _mm_set1_ps(12582912.f);
+  for (; i + 4 <= n; i += 4) {
+    const __m128 x = _mm_mul_ps(
+        _mm_mul_ps(vtau, _mm_add_ps(_mm_set1_ps(0.25f), _mm_mul_ps(_mm_set1_ps(0.75f), _mm_loadu_ps(s + i)))),
+        _mm_loadu_ps(dd + i));
+    // exp_neg, lane by lane.
+    __m128 y = _mm_max_ps(_mm_xor_ps(x, _mm_set1_ps(-0.f)), _mm_set1_ps(-87.f));
+    const __m128 nf = _mm_sub_ps(_mm_add_ps(_mm_mul_ps(y, _mm_set1_ps(1.44269504088896341f)), magic), magic);
+    y = _mm_sub_ps(y, _mm_mul_ps(nf, _mm_set1_ps(0.693359375f)));
+    y = _mm_sub_ps(y, _mm_mul_ps(nf, _mm_set1_ps(-2.12194440e-4f)));
+    const __m128 z = _mm_mul_ps(y, y);
+    __m128 p = _mm_set1_ps(1.9875691500e-4f);
+    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(1.3981999507e-3f));
+    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(8.3334519073e-3f));
+    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(4.1665795894e-2f));
+    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(1.6666665459e-1f));
+    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(5.0000001201e-1f));
+    p = _mm_add_ps(_mm_add_ps(_mm_mul_ps(p, z), y), _mm_set1_ps(1.f));
+    const __m128i bits = _mm_slli_epi32(_mm_add_epi32(_mm_cvttps_epi32(nf), _mm_set1_epi32(127)), 23);
+    const __m128 e = _mm_mul_ps(p, _mm_castsi128_ps(bits));
+    _mm_storeu_ps(alpha + i, _mm_sub_ps(_mm_set1_ps(1.f), e));
+  }
+#endif
+  for (; i < n; ++i) alpha[i] = Shading::opacity(tau, s[i], dd[i]);
+}
 
 }  // namespace vob::havs

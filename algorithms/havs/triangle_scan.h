@@ -12,6 +12,7 @@
 // threshold is widened by a slack far above the rounding of its own evaluation.
 // Depths: t = num / (n . X) * |X| with |X| from a per-sample table of the same length(X).
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -48,58 +49,69 @@ class TriangleScan {
 
   // emit(sx, sy, t, X) for every covered sample of `clip` (within the frame), row by row
   // bottom up, left to right, as PolygonRaster::scan. len: |X| per sample (perspective).
+  // The ranges of up to kRows rows are made edge by edge (each edge's kind decided once,
+  // not per row: faces are a few rows tall, and the per-row branches mispredicted).
   template <class Emit>
   void scan(const SampleRect& clip, const double* len, Emit&& emit) const {
     const SampleFrame& fr = *frame_;
     const bool ortho = fr.ortho();
     const int cols = fr.cols();
-    for (int sy = clip.y0; sy <= clip.y1; ++sy) {
-      int p0 = clip.x0, p1 = clip.x1, c0 = clip.x0, c1 = clip.x1;
-      if (!row_range(sy, p0, p1, c0, c1)) continue;
-      const Vec3 row = fr.row_term(sy);
-      const double* lrow = ortho ? nullptr : len + int64_t(sy) * cols;
-      const auto sample = [&](int sx, const Vec3& x) {
-        const double t = ortho ? -(dot(plane_.plane.n, x) + plane_.plane.d) * plane_.inv_nf
-                               : plane_.num / dot(plane_.plane.n, x) * lrow[sx];
-        if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t, x);
-      };
-      for (int sx = p0; sx <= p1; ++sx) {
-        const Vec3 x = row + fr.col_term(sx);
-        if ((sx < c0 || sx > c1) && !inside_exact(x)) continue;
-        sample(sx, x);
+    for (int ya = clip.y0; ya <= clip.y1; ya += kRows) {
+      const int ny = std::min(clip.y1 - ya + 1, kRows);
+      int p0[kRows], p1[kRows], c0[kRows], c1[kRows];
+      row_ranges(ya, ny, clip, p0, p1, c0, c1);
+      for (int r = 0; r < ny; ++r) {
+        if (p0[r] > p1[r]) continue;
+        const int sy = ya + r;
+        const Vec3 row = fr.row_term(sy);
+        const double* lrow = ortho ? nullptr : len + int64_t(sy) * cols;
+        const auto sample = [&](int sx, const Vec3& x) {
+          const double t = ortho ? -(dot(plane_.plane.n, x) + plane_.plane.d) * plane_.inv_nf
+                                 : plane_.num / dot(plane_.plane.n, x) * lrow[sx];
+          if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t, x);
+        };
+        for (int sx = p0[r]; sx <= p1[r]; ++sx) {
+          const Vec3 x = row + fr.col_term(sx);
+          if ((sx < c0[r] || sx > c1[r]) && !inside_exact(x)) continue;
+          sample(sx, x);
+        }
       }
     }
   }
 
  private:
-  // Possible samples [p0, p1] and certainly inside ones [c0, c1] of row sy (clipped to the
-  // incoming ranges); false when none is possible.
-  bool row_range(int sy, int& p0, int& p1, int& c0, int& c1) const {
-    const double y = sy + 0.5;
+  static constexpr int kRows = 16;
+  // Rows ya .. ya + ny - 1: possible samples [p0, p1] and certainly inside ones [c0, c1]
+  // (within clip's columns); p0 > p1 where none is possible. Order-independent over edges:
+  // bounds only tighten, and an emptied range stays empty.
+  void row_ranges(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const {
+    for (int r = 0; r < ny; ++r) p0[r] = c0[r] = clip.x0, p1[r] = c1[r] = clip.x1;
     const int lim = frame_->cols();
     for (int i = 0; i < 3; ++i) {
       const PolygonRaster::Edge& e = e_[i];
-      const Row& r = row_[i];
-      if (r.flat) {
-        const double base = e.b * y + e.k;
-        if (!(base >= -e.eta)) return false;
-        if (!(base > e.eta)) c0 = 1, c1 = 0;  // within eta: exact tests
-        continue;
-      }
-      if (!r.finite) {
-        c0 = 1, c1 = 0;
-        continue;
-      }
-      const double lo = r.lo0 - r.slope * y, hi = r.hi0 - r.slope * y;
-      if (r.slack > 0) {  // a > 0: x >= lo possible, x > hi certain
-        p0 = std::max(p0, -floor_near(-(lo - r.slack - 0.5), lim));
-        c0 = std::max(c0, floor_near(hi + r.slack - 0.5, lim) + 1);
+      const Row& w = row_[i];
+      if (w.flat) {
+        for (int r = 0; r < ny; ++r) {
+          const double base = e.b * (ya + r + 0.5) + e.k;
+          if (!(base >= -e.eta)) p0[r] = 1, p1[r] = 0;       // no sample on this row
+          else if (!(base > e.eta)) c0[r] = 1, c1[r] = 0;    // within eta: exact tests
+        }
+      } else if (!w.finite) {
+        for (int r = 0; r < ny; ++r) c0[r] = 1, c1[r] = 0;
+      } else if (w.slack > 0) {  // a > 0: x >= lo possible, x > hi certain
+        for (int r = 0; r < ny; ++r) {
+          const double y = ya + r + 0.5, lo = w.lo0 - w.slope * y, hi = w.hi0 - w.slope * y;
+          p0[r] = std::max(p0[r], -floor_near(-(lo - w.slack - 0.5), lim));
+          c0[r] = std::max(c0[r], floor_near(hi + w.slack - 0.5, lim) + 1);
+        }
       } else {  // a < 0: x <= lo possible, x < hi certain
-        p1 = std::min(p1, floor_near(lo - r.slack - 0.5, lim));
-        c1 = std::min(c1, -floor_near(-(hi + r.slack - 0.5), lim) - 1);
+        for (int r = 0; r < ny; ++r) {
+          const double y = ya + r + 0.5, lo = w.lo0 - w.slope * y, hi = w.hi0 - w.slope * y;
+          p1[r] = std::min(p1[r], floor_near(lo - w.slack - 0.5, lim));
+          c1[r] = std::min(c1[r], -floor_near(-(hi + w.slack - 0.5), lim) - 1);
+        }
       }
     }
-    return p0 <= p1;
   }
   // floor(v) where it matters, for v compared with sample indices in [0, lim): clamped to
   // [-lim - 4, lim + 2] and truncated after a shift that makes it positive (no libm floor; the
