@@ -43,7 +43,7 @@ class Worker {
     run_query(vi);
     stats_.queries_rechecked += rechecked_;
   }
-  // The crossings edge e owns (it is their first edge), by the sweep; any case the sweep
+  // The relations along edge e by the sweep (edges with crossings); any case the sweep
   // cannot decide (edge_sweep.cpp) falls back to full queries of the edge's crossings.
   void sweep_edge(int32_t e);
 
@@ -58,8 +58,7 @@ class Worker {
   void run_query(int32_t vi);
   void begin(int32_t vi);
   void gather(const ArrVertex& v);
-  // pos_known: every wedge's pos is set (the sweep's), else found by binary search.
-  void emit_sectors(const ArrVertex& v, bool pos_known = false);
+  void emit_sectors(const ArrVertex& v);
   int orient_at(const ArrVertex& v, int32_t p, int32_t q);
   int orient_raw(const ArrVertex& v, int32_t p, int32_t q);
   int depth(int32_t x, int32_t y);
@@ -74,10 +73,14 @@ class Worker {
   bool start_list(int32_t e);
   bool order_crossings(int32_t e);
   bool cross(int32_t e, int32_t vi);
+  void emit_segment();
+  int edge_dir(int32_t f, int32_t p, int32_t q) const;
   int point_side(int32_t x, int32_t p, int32_t q);
+  int plane_side(int32_t h, int32_t p);
+  int depth_x(int32_t g, int32_t h);
   size_t insert_at(int32_t f);
+  size_t insert_at_crossing(int32_t f);
   size_t place(int32_t f, int32_t guess);
-  bool edge_wedge(int32_t f, std::pair<int32_t, int32_t> pq);
   int32_t track(int32_t f, int m, int32_t j);
 
   const QueryInput& in_;
@@ -107,15 +110,19 @@ class Worker {
   int32_t start_point_ = -1;
   std::vector<int32_t> start_inside_;
   std::vector<Wedge> start_wedges_;
-  // The swept edge's faces and their positions in list_ (faces of list_ in front).
+  // The swept edge's faces, their positions in list_ (faces of list_ in front), the side
+  // of the edge each covers (the sign of D), and their depth order where on one side.
   int32_t eface_[4] = {}, epos_[4] = {};
+  int8_t eside_[4] = {};
+  bool ebefore_[4][4] = {};
   int n_eface_ = 0;
-  // orient_at's memo at one sweep crossing (memo_ on): (p, q) -> sign.
-  static constexpr int kMemo = 24;
-  bool memo_ = false;
-  int memo_n_ = 0;
-  int32_t memo_p_[kMemo] = {}, memo_q_[kMemo] = {};
-  int8_t memo_s_[kMemo] = {};
+  // The sweep's current crossing (vertex id, the crossing edge's points) and, per face
+  // compared there, the side of its plane holding both points (0: none, or not certain).
+  int32_t xvi_ = -1, xc_pt_ = -1, xd_pt_ = -1;
+  static constexpr int kPsign = 16;
+  int n_psign_ = 0;
+  int32_t psign_face_[kPsign] = {};
+  int8_t psign_[kPsign] = {};
   // emit's table of recent pairs (key + 1; 0 empty); cleared when pairs are rolled back.
   static constexpr int kSeenBits = 12;
   std::vector<uint64_t> seen_ = std::vector<uint64_t>(size_t{1} << kSeenBits, 0);

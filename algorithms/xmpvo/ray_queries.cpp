@@ -25,16 +25,6 @@ int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
              (p == v.d && q == v.c)) {
     return 0;
   }
-  if (memo_) {
-    // The sweep's crossings ask the same few signs (edges of four faces) repeatedly.
-    for (int k = 0; k < memo_n_; ++k) {
-      if (memo_p_[k] == p && memo_q_[k] == q) return memo_s_[k];
-      if (memo_p_[k] == q && memo_q_[k] == p) return -memo_s_[k];
-    }
-    const int s = orient_raw(v, p, q);
-    if (memo_n_ < kMemo) memo_p_[memo_n_] = p, memo_q_[memo_n_] = q, memo_s_[memo_n_++] = static_cast<int8_t>(s);
-    return s;
-  }
   return orient_raw(v, p, q);
 }
 
@@ -136,8 +126,6 @@ void Worker::begin(int32_t vi) {
   const Projection& proj = in_.proj;
   current_ = &v;
   vi_ = vi;
-  memo_ = false;
-  memo_n_ = 0;
   ray_ = v.b < 0 ? VertexRay::at_point(signs_.g, pt(v.a))
                  : VertexRay::at_crossing(signs_.g, pt(v.a), pt(v.b), pt(v.c), pt(v.d));
   terms_ = RayTerms::of(ray_);
@@ -175,19 +163,16 @@ void Worker::gather(const ArrVertex& v) {
 }
 
 // The relations at v from inside_ (sorted front to back) and wedges_.
-void Worker::emit_sectors(const ArrVertex& v, bool pos_known) {
+void Worker::emit_sectors(const ArrVertex& v) {
   const int32_t ni = static_cast<int32_t>(inside_.size());
   for (Wedge& w : wedges_) {
     int32_t lo = 0, hi = ni;
-    if (pos_known) lo = w.pos;
-    while (lo < hi && !pos_known) {
+    while (lo < hi) {
       const int32_t mid = (lo + hi) / 2;
       if (depth(w.face, inside_[mid]) < 0) hi = mid;
       else lo = mid + 1;
     }
     w.pos = lo;
-    // The inside faces on either side of a boundary face are consecutive where it is not.
-    if (lo > 0 && lo < ni) emit(inside_[lo - 1], inside_[lo]);
   }
   rays_.clear();
   for (const Wedge& w : wedges_)
@@ -210,6 +195,14 @@ void Worker::emit_sectors(const ArrVertex& v, bool pos_known) {
       else if (w.pos > 0) emit(inside_[w.pos - 1], w.face);
       const bool last_here = j + 1 == sector_.size() || wedges_[sector_[j + 1]].pos != w.pos;
       if (last_here && w.pos < ni) emit(w.face, inside_[w.pos]);
+    }
+    // The inside faces on either side of a boundary face that does not cover the sector
+    // are consecutive there, unless a face covering it lies between them.
+    for (const Wedge& w : wedges_) {
+      if (w.pos == 0 || w.pos == ni) continue;
+      bool between = false;
+      for (int32_t k : sector_) between |= wedges_[k].pos == w.pos;
+      if (!between) emit(inside_[w.pos - 1], inside_[w.pos]);
     }
   }
 }
@@ -294,7 +287,7 @@ void QueryStats::add(const QueryStats& x) {
   side_filtered += x.side_filtered, side_rechecked += x.side_rechecked;
   queries_rechecked += x.queries_rechecked, depth_rechecked += x.depth_rechecked;
   sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
-  sweep_fallbacks += x.sweep_fallbacks;
+  sweep_fallbacks += x.sweep_fallbacks, depth_plane_sides += x.depth_plane_sides;
   scratch_bytes += x.scratch_bytes;
 }
 
