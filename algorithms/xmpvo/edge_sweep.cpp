@@ -50,47 +50,30 @@ void Worker::sweep_edge(int32_t e) {
   std::fill(seen_.begin(), seen_.end(), 0);
   stats_.sweep_crossings = answered;
   ++stats_.sweep_fallbacks;
-  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) query(arr.edge_vertices[x]);
+  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) query(arr.edge_crossings[x].vertex);
 }
 
 bool Worker::sweep(int32_t e) {
   undecided_ = false;
   if (!order_crossings(e) || !start_list(e)) return false;
   emit_segment();
-  for (int32_t vi : order_) {
-    if (!cross(e, vi)) return false;
+  for (const EdgeCrossing& x : order_) {
+    if (!cross(e, x)) return false;
     emit_segment();
   }
   return !undecided_;
 }
 
-// The crossings on e from a to b, when their order is certain: each exact crossing lies
-// in its vertex box, so its position along e (a dot product with e's projected direction,
-// monotone along the exact edge) lies within the box's extent, widened by the rounding.
+// The crossings on e from a to b, when their order is certain: their extents along e
+// (Arrangement::index_crossings) are disjoint.
 bool Worker::order_crossings(int32_t e) {
   const Arrangement& arr = in_.arr;
-  const auto [ax, ay] = in_.proj.uv[arr.edges[e].first];
-  const auto [bx, by] = in_.proj.uv[arr.edges[e].second];
-  const double dx = bx - ax, dy = by - ay;
-  keys_.clear();
-  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) {
-    const Box& b = arr.vertices[arr.edge_vertices[x]].box;
-    keys_.push_back({dx * (0.5 * (b.x0 + b.x1) - ax) + dy * (0.5 * (b.y0 + b.y1) - ay), arr.edge_vertices[x]});
-  }
-  std::sort(keys_.begin(), keys_.end());
-  auto extent = [&](int32_t vi) {
-    const Box& b = arr.vertices[vi].box;
-    const double xc = 0.5 * (b.x0 + b.x1), yc = 0.5 * (b.y0 + b.y1);
-    return std::fabs(dx) * (0.5 * (b.x1 - b.x0)) + std::fabs(dy) * (0.5 * (b.y1 - b.y0)) +
-           1e-14 * (std::fabs(dx) * (std::fabs(xc) + std::fabs(ax)) + std::fabs(dy) * (std::fabs(yc) + std::fabs(ay))) +
-           1e-300;
-  };
-  order_.clear();
-  for (size_t k = 0; k < keys_.size(); ++k) {
-    if (k > 0 && !(keys_[k - 1].first + extent(keys_[k - 1].second) < keys_[k].first - extent(keys_[k].second)))
-      return false;
-    order_.push_back(keys_[k].second);
-  }
+  order_.assign(arr.edge_crossings.begin() + arr.edge_vertex_off[e], arr.edge_crossings.begin() + arr.edge_vertex_off[e + 1]);
+  // Insertion sort: a few crossings per edge, mostly in order already.
+  for (size_t k = 1; k < order_.size(); ++k)
+    for (size_t m = k; m > 0 && order_[m].key < order_[m - 1].key; --m) std::swap(order_[m], order_[m - 1]);
+  for (size_t k = 1; k < order_.size(); ++k)
+    if (!(order_[k - 1].key + order_[k - 1].ext < order_[k].key - order_[k].ext)) return false;
   return true;
 }
 
@@ -130,8 +113,7 @@ bool Worker::start_list(int32_t e) {
   for (int32_t x = arr.edge_face_off[e]; x < arr.edge_face_off[e + 1]; ++x) {
     if (n_eface_ == 4) return false;
     const int32_t f = arr.edge_faces[x];
-    const int dir = edge_dir(f, a, b);
-    if (dir == 0) return false;
+    const int dir = arr.edge_face_dir[x];
     eface_[n_eface_] = f;
     eside_[n_eface_] = static_cast<int8_t>(dir * -in_.proj.facing[f]);
     epos_[n_eface_++] = static_cast<int32_t>(insert_at(f));
@@ -143,27 +125,14 @@ bool Worker::start_list(int32_t e) {
   return !undecided_;
 }
 
-// +1 when face f has the directed edge p -> q, -1 for q -> p, 0 when it has neither.
-int Worker::edge_dir(int32_t f, int32_t p, int32_t q) const {
-  const int32_t* v = &in_.ext.vertex[4 * f];
-  const int n = in_.ext.size[f];
-  for (int k = 0; k < n; ++k) {
-    const int32_t p0 = v[k], p1 = v[k + 1 < n ? k + 1 : 0];
-    if (p0 == p && p1 == q) return 1;
-    if (p0 == q && p1 == p) return -1;
-  }
-  return 0;
-}
-
-// Crossing vi of e with e' = (c, d): the faces of e' leave or enter list_. The faces of e
+// Crossing `xing` of e with e' = (c, d): the faces of e' leave or enter list_. The faces of e
 // keep their positions in list_ (epos_); an entering face goes where the leaving face of
 // the same edge was when its neighbours confirm it, else by binary search.
-bool Worker::cross(int32_t e, int32_t vi) {
+bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
-  const ArrVertex& v = arr.vertices[vi];
-  const int32_t other = v.e1 == e ? v.e2 : v.e1;
+  const int32_t other = xing.other;
   const auto [c, d] = arr.edges[other];
-  xvi_ = vi, xc_pt_ = c, xd_pt_ = d, n_psign_ = 0;
+  xvi_ = xing.vertex, xc_pt_ = c, xd_pt_ = d, n_psign_ = 0;
   const int32_t a = arr.edges[e].first;
   const int sa = point_side(a, c, d);
   if (sa == 0) return false;
@@ -171,8 +140,7 @@ bool Worker::cross(int32_t e, int32_t vi) {
   int n_enter = 0, n_leave = 0;
   for (int32_t x = arr.edge_face_off[other]; x < arr.edge_face_off[other + 1]; ++x) {
     const int32_t g = arr.edge_faces[x];
-    const int dir = edge_dir(g, c, d);
-    if (dir == 0) return false;
+    const int dir = arr.edge_face_dir[x];
     if (sa * dir * -in_.proj.facing[g] > 0) {
       const auto it = std::find(list_.begin(), list_.end(), g);
       if (it == list_.end()) return false;

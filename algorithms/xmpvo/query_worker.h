@@ -33,7 +33,8 @@ class Worker {
   }
   size_t bytes() const {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
-            key_stamp_.capacity() + list_.capacity() + order_.capacity() + start_inside_.capacity()) * 4 +
+            key_stamp_.capacity() + list_.capacity() + start_inside_.capacity()) * 4 +
+           order_.capacity() * sizeof(EdgeCrossing) +
            start_wedges_.capacity() * sizeof(Wedge) +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
            wedges_.capacity() * sizeof(Wedge) + (pairs_.capacity() + seen_.capacity()) * 8;
@@ -72,9 +73,8 @@ class Worker {
   bool sweep(int32_t e);
   bool start_list(int32_t e);
   bool order_crossings(int32_t e);
-  bool cross(int32_t e, int32_t vi);
+  bool cross(int32_t e, const EdgeCrossing& xing);
   void emit_segment();
-  int edge_dir(int32_t f, int32_t p, int32_t q) const;
   int point_side(int32_t x, int32_t p, int32_t q);
   int plane_side(int32_t h, int32_t p);
   int depth_x(int32_t g, int32_t h);
@@ -105,7 +105,8 @@ class Worker {
   bool undecided_ = false;  // a depth comparison returned 0 (the sweep then falls back)
   // The sweep's sorted covering faces of the open segment before the current crossing
   // (faces of the swept edge excluded), and the edge's crossings in order.
-  std::vector<int32_t> list_, order_;
+  std::vector<int32_t> list_;
+  std::vector<EdgeCrossing> order_;
   // The last sweep start: its point, covering faces sorted, and wedges.
   int32_t start_point_ = -1;
   std::vector<int32_t> start_inside_;
