@@ -90,11 +90,22 @@ bool Worker::start_list(int32_t e) {
   // same point: its covering faces are found and sorted once.
   if (start_point_ != a) {
     start_point_ = -1;
-    gather(v);
-    sort_inside(v);
-    start_inside_ = inside_;
-    start_wedges_ = wedges_;
-    if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes
+    const std::pair<const Worker*, int32_t> at = start_of_ ? (*start_of_)[va] : std::pair<const Worker*, int32_t>{};
+    if (at.first) {
+      // The point query's, when it kept them.
+      const Start& st = at.first->starts_[at.second];
+      const auto& ins = at.first->starts_inside_;
+      const auto& wed = at.first->starts_wedges_;
+      start_inside_.assign(ins.begin() + st.inside0, ins.begin() + st.inside0 + st.ninside);
+      start_wedges_.assign(wed.begin() + st.wedge0, wed.begin() + st.wedge0 + st.nwedge);
+      start_point_ = a;
+    } else {
+      gather(v);
+      sort_inside(v);
+      start_inside_ = inside_;
+      start_wedges_ = wedges_;
+      if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes
+    }
   }
   list_ = start_inside_;
   for (const Wedge& w : start_wedges_) {
@@ -234,10 +245,20 @@ int Worker::depth_x(int32_t g, int32_t h) {
 }
 
 // Side of point p to face h's plane (orient3d of its first three vertices), filtered; 0
-// for h's own vertices (on the plane, or a quadrilateral's fourth: depth() decides).
+// for h's own vertices when the filter cannot tell (on the plane, or a quadrilateral's
+// fourth: depth() decides).
 int Worker::plane_side(int32_t h, int32_t p) {
-  const int32_t* hv = &in_.ext.vertex[4 * h];
-  if (hv[0] == p || hv[1] == p || hv[2] == p || (in_.ext.size[h] > 3 && hv[3] == p)) return 0;
+  // Neighbouring crossings on an edge share points (a strip of faces crosses it): memo.
+  const uint64_t key = (uint64_t(uint32_t(h)) << 32 | uint32_t(p)) + 1;
+  const size_t slot = (key * 0x9E3779B97F4A7C15ull) >> (64 - kPlaneMemoBits);
+  if (plane_memo_key_[slot] == key) return plane_memo_sign_[slot];
+  const int r = plane_side_raw(h, p);
+  plane_memo_key_[slot] = key;
+  plane_memo_sign_[slot] = static_cast<int8_t>(r);
+  return r;
+}
+
+int Worker::plane_side_raw(int32_t h, int32_t p) {
   const FacePlane& f = in_.plane[h];
   const Vec3& q = pt(p);
   const Fd s = Fd{f.n[0][0], f.n[0][1]} * (Fd{q.x, 0} - Fd{f.f[0].x, 0}) +
@@ -245,6 +266,8 @@ int Worker::plane_side(int32_t h, int32_t p) {
                Fd{f.n[2][0], f.n[2][1]} * (Fd{q.z, 0} - Fd{f.f[0].z, 0});
   const int r = fd_sign(s);
   if (r != 2) return r;
+  const int32_t* hv = &in_.ext.vertex[4 * h];
+  if (hv[0] == p || hv[1] == p || hv[2] == p || (in_.ext.size[h] > 3 && hv[3] == p)) return 0;
   ++stats_.depth_rechecked;
   rechecked_ = true;
   return orient3d(f.f[0], f.f[1], f.f[2], q);

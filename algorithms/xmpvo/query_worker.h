@@ -35,7 +35,8 @@ class Worker {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
             key_stamp_.capacity() + list_.capacity() + start_inside_.capacity()) * 4 +
            order_.capacity() * sizeof(EdgeCrossing) +
-           start_wedges_.capacity() * sizeof(Wedge) +
+           (start_wedges_.capacity() + starts_wedges_.capacity()) * sizeof(Wedge) +
+           starts_.capacity() * sizeof(Start) + starts_inside_.capacity() * 4 + plane_memo_key_.capacity() * 9 +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
            wedges_.capacity() * sizeof(Wedge) + (pairs_.capacity() + seen_.capacity()) * 8;
   }
@@ -47,6 +48,18 @@ class Worker {
   // The relations along edge e by the sweep (edges with crossings); any case the sweep
   // cannot decide (edge_sweep.cpp) falls back to full queries of the edge's crossings.
   void sweep_edge(int32_t e);
+
+  // The point queries' sorted covering faces and wedges (kept when keep_starts_), for the
+  // sweeps starting there; start_of_, set between the point queries and the sweeps, gives
+  // per point vertex the worker and index of its entry (run_ray_queries).
+  struct Start {
+    int32_t vi, inside0, ninside, wedge0, nwedge;
+  };
+  bool keep_starts_ = false;
+  std::vector<Start> starts_;
+  std::vector<int32_t> starts_inside_;
+  std::vector<Wedge> starts_wedges_;
+  const std::vector<std::pair<const Worker*, int32_t>>* start_of_ = nullptr;
 
   QueryStats stats_;
   Signs signs_;
@@ -77,6 +90,7 @@ class Worker {
   void emit_segment();
   int point_side(int32_t x, int32_t p, int32_t q);
   int plane_side(int32_t h, int32_t p);
+  int plane_side_raw(int32_t h, int32_t p);
   int depth_x(int32_t g, int32_t h);
   size_t insert_at(int32_t f);
   size_t insert_at_crossing(int32_t f);
@@ -120,6 +134,10 @@ class Worker {
   // The sweep's current crossing (vertex id, the crossing edge's points) and, per face
   // compared there, the side of its plane holding both points (0: none, or not certain).
   int32_t xvi_ = -1, xc_pt_ = -1, xd_pt_ = -1;
+  // plane_side's memo (view-independent signs): key (h << 32 | p) + 1, 0 empty.
+  static constexpr int kPlaneMemoBits = 12;
+  std::vector<uint64_t> plane_memo_key_ = std::vector<uint64_t>(size_t{1} << kPlaneMemoBits, 0);
+  std::vector<int8_t> plane_memo_sign_ = std::vector<int8_t>(size_t{1} << kPlaneMemoBits, 0);
   static constexpr int kPsign = 16;
   int n_psign_ = 0;
   int32_t psign_face_[kPsign] = {};

@@ -116,7 +116,16 @@ void Worker::run_query(int32_t vi) {
   const ArrVertex& v = *current_;
   gather(v);
   if (wedges_.empty()) return;
+  const bool undecided = undecided_;
+  undecided_ = false;
   sort_inside(v);
+  if (keep_starts_ && v.b < 0 && !undecided_) {
+    starts_.push_back({vi, static_cast<int32_t>(starts_inside_.size()), static_cast<int32_t>(inside_.size()),
+                       static_cast<int32_t>(starts_wedges_.size()), static_cast<int32_t>(wedges_.size())});
+    starts_inside_.insert(starts_inside_.end(), inside_.begin(), inside_.end());
+    starts_wedges_.insert(starts_wedges_.end(), wedges_.begin(), wedges_.end());
+  }
+  undecided_ |= undecided;
   emit_sectors(v);
 }
 
@@ -301,20 +310,29 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   std::vector<int32_t> point_vertex(in.ext.points.size(), -1);
   for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
   tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex); });
-  auto queries = [&](size_t v0, size_t v1) {
+  auto queries = [&](size_t v0, size_t v1, bool keep_starts) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
+      w.keep_starts_ = keep_starts;
       for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
     });
   };
   // Points first: they tell whether the view is free of the degeneracies the sweep
   // cannot see (a point on another face's projected boundary).
-  queries(0, arr.projected_vertices);
+  const bool sweep = in.sweep && in.signs.mode == Mode::Exact;
+  queries(0, arr.projected_vertices, sweep);
   bool degenerate = false;
   for (const Worker& w : workers) degenerate |= w.degenerate_seen_;
-  if (!in.sweep || degenerate || in.signs.mode != Mode::Exact) {
-    queries(arr.projected_vertices, arr.vertices.size());
+  std::vector<std::pair<const Worker*, int32_t>> start_of;
+  if (!sweep || degenerate) {
+    queries(arr.projected_vertices, arr.vertices.size(), false);
   } else {
+    // The sweeps start from the point queries' sorted faces.
+    start_of.assign(arr.projected_vertices, {nullptr, -1});
+    for (Worker& w : workers) {
+      for (size_t k = 0; k < w.starts_.size(); ++k) start_of[w.starts_[k].vi] = {&w, static_cast<int32_t>(k)};
+      w.start_of_ = &start_of;
+    }
     tbb::parallel_for(tbb::blocked_range<size_t>(0, arr.edges.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
       for (size_t e = r.begin(); e < r.end(); ++e) w.sweep_edge(static_cast<int32_t>(e));
