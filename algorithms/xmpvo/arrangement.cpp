@@ -48,19 +48,19 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   crossings_filtered = crossings_rechecked = 0;
   const bool filter = signs.mode == Mode::Exact && proj.uv_filter;
   // Proper crossing from the double filter: 1 / 0 when certain, 2 when not.
-  auto filtered_cross = [&](int32_t a, int32_t b, int32_t c, int32_t d) {
-    const std::vector<Uv>& uv = proj.uv;
-    const double s = proj.slack;
-    const int ca = uv_side(uv[a], uv[c], uv[d], s), cb = uv_side(uv[b], uv[c], uv[d], s);
+  const double slack = proj.slack;
+  auto filtered_cross = [slack](Uv a, Uv b, Uv c, Uv d) {
+    const int ca = uv_side(a, c, d, slack), cb = uv_side(b, c, d, slack);
     if (ca != 2 && cb != 2 && ca == cb) return 0;
-    const int ac = uv_side(uv[c], uv[a], uv[b], s), ad = uv_side(uv[d], uv[a], uv[b], s);
+    const int ac = uv_side(c, a, b, slack), ad = uv_side(d, a, b, slack);
     if (ac != 2 && ad != 2 && ac == ad) return 0;
     return ca != 2 && cb != 2 && ac != 2 && ad != 2 ? 1 : 2;
   };
   // Each bucket's edges copied side by side first: the pair loop then reads no scattered
-  // memory. A pair is tested once, in the bucket of its boxes' common lower corner.
+  // memory (not even the projected points). A pair is tested once, in the bucket of its boxes' common lower corner.
   struct Item {
     Box box;
+    Uv ua, ub;
     int32_t a, b, id;
   };
   std::vector<Item> local;
@@ -71,7 +71,8 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
       local.clear();
       for (int32_t x = edge_off[cell]; x < edge_off[cell + 1]; ++x) {
         const int32_t id = edge_items[x];
-        local.push_back({box_[id], edges[id].first, edges[id].second, id});
+        const auto [a, b] = edges[id];
+        local.push_back({box_[id], proj.uv[a], proj.uv[b], a, b, id});
       }
       const double cx0 = grid.gx0 + c * grid.cw, cy0 = grid.gy0 + r * grid.ch;
       for (size_t x = 0; x < local.size(); ++x)
@@ -88,7 +89,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           const bool inside = lx > cx0 + tx && ly > cy0 + ty;
           if (!inside && (grid.col(lx) != c || grid.row(ly) != r)) continue;
           ++candidates;
-          const int f = filter ? filtered_cross(a, b, cc, d) : 2;
+          const int f = filter ? filtered_cross(ix.ua, ix.ub, iy.ua, iy.ub) : 2;
           if (f != 2) ++crossings_filtered;
           else if (filter) ++crossings_rechecked;
           if (f == 0 || (f == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])))
