@@ -164,9 +164,27 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
       enter[n_enter++] = g;
     }
   }
+  // list_ now holds the faces covering the crossing: the first of its two sweeps tells the
+  // other where its edge's faces go among them; the second takes that for its entering face.
+  Handoffs* h = handoffs_->ready ? handoffs_ : nullptr;
+  const bool theirs = h && h->ready[xing.self].load(std::memory_order_acquire);
+  if (h && !theirs && n_eface_ <= 2 && !undecided_) {
+    Handoff& o = h->data[xing.partner];
+    o.n = n_eface_;
+    for (int k = 0; k < n_eface_; ++k) o.face[k] = eface_[k], o.pos[k] = epos_[k];
+    h->ready[xing.partner].store(1, std::memory_order_release);
+  }
+  int32_t given = -1;
+  if (theirs && n_enter == 1) {
+    const Handoff& o = h->data[xing.self];
+    for (int k = 0; k < o.n; ++k)
+      if (o.face[k] == enter[0]) given = o.pos[k];
+    stats_.sweep_handoffs += given >= 0;
+  }
   const bool simple = n_leave <= 1 && n_enter <= 1;
   for (int k = 0; k < n_enter; ++k) {
-    const size_t j = simple && n_leave == 1 ? place(enter[k], leave_at) : insert_at_crossing(enter[k]);
+    const size_t j = given >= 0 ? static_cast<size_t>(given)
+                     : simple && n_leave == 1 ? place(enter[k], leave_at) : insert_at_crossing(enter[k]);
     for (int m = 0; m < n_eface_; ++m) epos_[m] = track(enter[k], m, static_cast<int32_t>(j));
     list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(j), enter[k]);
   }

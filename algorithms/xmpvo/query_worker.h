@@ -4,7 +4,9 @@
 // one vertex; the edge sweep (edge_sweep.cpp) carries the sorted covering faces along one
 // projected edge from crossing to crossing.
 #pragma once
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -22,11 +24,23 @@ struct Wedge {
   int32_t pos;  // number of inside faces in front of it
 };
 
+// What the first of a crossing's two sweeps learns for the other: where its edge's faces
+// go among the faces covering the crossing (both sweeps' lists, without their own edges'
+// faces, are those faces in the same order). Per slot of Arrangement::edge_crossings,
+// written to the other edge's slot; `ready` (released after the data) says it is there.
+struct Handoff {
+  int32_t n, face[2], pos[2];
+};
+struct Handoffs {
+  std::unique_ptr<Handoff[]> data;  // uninitialised where not ready
+  std::unique_ptr<std::atomic<uint8_t>[]> ready;
+};
+
 class Worker {
  public:
   Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane,
-         const std::vector<int32_t>& point_vertex)
-      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
+         const std::vector<int32_t>& point_vertex, Handoffs* handoffs)
+      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex), handoffs_(handoffs),
         face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
         key_(in.ext.face.size()), touch_(in.ext.face.size()) {
     signs_.side = signs_.dis_side = 0;
@@ -100,6 +114,7 @@ class Worker {
   const QueryInput& in_;
   const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
   const std::vector<int32_t>& point_vertex_;  // per exterior point, its vertex id or -1
+  Handoffs* handoffs_;                        // the sweeps' (ready null: none)
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
 

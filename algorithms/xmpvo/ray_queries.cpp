@@ -297,6 +297,7 @@ void QueryStats::add(const QueryStats& x) {
   queries_rechecked += x.queries_rechecked, depth_rechecked += x.depth_rechecked;
   sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
   sweep_fallbacks += x.sweep_fallbacks, depth_plane_sides += x.depth_plane_sides;
+  sweep_handoffs += x.sweep_handoffs;
   scratch_bytes += x.scratch_bytes;
 }
 
@@ -309,7 +310,8 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   for (int32_t f : in.proj.kept) view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
   std::vector<int32_t> point_vertex(in.ext.points.size(), -1);
   for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex); });
+  detail::Handoffs handoffs;
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex, &handoffs); });
   auto queries = [&](size_t v0, size_t v1, bool keep_starts) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
@@ -333,6 +335,8 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
       for (size_t k = 0; k < w.starts_.size(); ++k) start_of[w.starts_[k].vi] = {&w, static_cast<int32_t>(k)};
       w.start_of_ = &start_of;
     }
+    handoffs.data.reset(new detail::Handoff[arr.edge_crossings.size()]);
+    handoffs.ready.reset(new std::atomic<uint8_t>[arr.edge_crossings.size()]());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, arr.edges.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
       for (size_t e = r.begin(); e < r.end(); ++e) w.sweep_edge(static_cast<int32_t>(e));
