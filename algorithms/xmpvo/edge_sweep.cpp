@@ -170,15 +170,14 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   const bool theirs = h && h->ready[xing.self].load(std::memory_order_acquire);
   if (h && !theirs && n_eface_ <= 2 && !undecided_) {
     Handoff& o = h->data[xing.partner];
-    o.n = n_eface_;
-    for (int k = 0; k < n_eface_; ++k) o.face[k] = eface_[k], o.pos[k] = epos_[k];
+    for (int k = 0; k < n_eface_; ++k) o.pos[k] = epos_[k];
     h->ready[xing.partner].store(1, std::memory_order_release);
   }
   int32_t given = -1;
   if (theirs && n_enter == 1) {
-    const Handoff& o = h->data[xing.self];
-    for (int k = 0; k < o.n; ++k)
-      if (o.face[k] == enter[0]) given = o.pos[k];
+    const int32_t x0 = arr.edge_face_off[other], x1 = std::min(x0 + 2, arr.edge_face_off[other + 1]);
+    for (int32_t x = x0; x < x1; ++x)
+      if (arr.edge_faces[x] == enter[0]) given = h->data[xing.self].pos[x - x0];
     stats_.sweep_handoffs += given >= 0;
   }
   const bool simple = n_leave <= 1 && n_enter <= 1;

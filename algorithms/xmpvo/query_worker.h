@@ -25,11 +25,12 @@ struct Wedge {
 };
 
 // What the first of a crossing's two sweeps learns for the other: where its edge's faces
-// go among the faces covering the crossing (both sweeps' lists, without their own edges'
-// faces, are those faces in the same order). Per slot of Arrangement::edge_crossings,
-// written to the other edge's slot; `ready` (released after the data) says it is there.
+// (at most two, in Arrangement::edge_faces order) go among the faces covering the crossing
+// (both sweeps' lists, without their own edges' faces, are those faces in the same order).
+// Per slot of Arrangement::edge_crossings, written to the other edge's slot; `ready`
+// (released after the data) says it is there.
 struct Handoff {
-  int32_t n, face[2], pos[2];
+  int32_t pos[2];
 };
 struct Handoffs {
   std::unique_ptr<Handoff[]> data;  // uninitialised where not ready

@@ -351,6 +351,7 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     w.stats_.scratch_bytes = w.bytes();
     stats.add(w.stats_);
   }
+  if (handoffs.ready) stats.scratch_bytes += arr.edge_crossings.size() * (sizeof(detail::Handoff) + 1);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;
