@@ -1,10 +1,11 @@
 // XMPVO's edge sweep: the relations along one projected edge e = (a, b) with crossings.
 // Between two consecutive crossings on e the faces whose projection covers e (faces of e
 // excluded) do not change, and neither does their depth order (exterior faces of a valid
-// mesh do not cross), so the sweep keeps them sorted front to back in list_: found and
-// sorted once at a by a full query, then at each crossing with an edge e' = (c, d) the
-// faces of e' on a's side leave and those on b's side enter (one binary search each), and
-// the faces of e keep their positions (epos_).
+// mesh do not cross), so the sweep keeps them sorted front to back in list_: taken from
+// a's point query, then at each crossing with an edge e' = (c, d) the faces of e' on a's
+// side leave and those on b's side enter (one binary search each, or where the sweep of e'
+// put e's faces if it passed the crossing first: a Handoff), and the faces of e keep their
+// positions (epos_).
 //
 // What is emitted: along each open segment of e between its vertices, on each side of e,
 // the consecutive pairs next to the positions of e's faces (their neighbours where they
@@ -37,7 +38,7 @@ namespace vob::xmpvo::detail {
 
 void Worker::sweep_edge(int32_t e) {
   const Arrangement& arr = in_.arr;
-  // Without crossings both segments' regions touch a and b: the point queries see them.
+  // Without crossings the regions along e touch a and b: the point queries see them.
   if (arr.edge_vertex_off[e] == arr.edge_vertex_off[e + 1]) return;
   ++stats_.sweep_edges;
   const size_t mark = pairs_.size();
