@@ -64,12 +64,13 @@
 // disagree_* counts and decision totals facing_decisions, side_decisions,
 // crossing_decisions. The filters' share: side_filtered / side_rechecked (side tests the
 // double filter decided / left to the exact predicate), crossings_filtered /
-// crossings_rechecked (candidate edge pairs), depth_rechecked (depth keys too close to
-// call), queries_rechecked (vertex queries or swept edges with any exact re-check);
+// crossings_rechecked (candidate edge pairs), depth_rechecked (depth keys, or the sweep's
+// plane sides, too close to call), queries_rechecked (vertex queries or swept edges with any exact re-check);
 // sweep_edges, sweep_crossings (crossings the sweeps passed, two per crossing),
 // sweep_fallbacks (edges whose crossings got full queries), depth_plane_sides (sweep depth
-// comparisons decided by the sides of a face plane alone); vertex_queries counts every
-// vertex ray a query or the sweep built.
+// comparisons decided by the sides of a face plane alone), sweep_handoffs (crossings
+// where the second sweep took its entering face's position from the first); vertex_queries
+// counts every vertex ray a query or the sweep built.
 #pragma once
 #include "harness/bench/registry.h"
 
