@@ -58,9 +58,10 @@ bool Worker::sweep(int32_t e) {
   undecided_ = false;
   if (!order_crossings(e) || !start_list(e)) return false;
   emit_segment();
-  for (const EdgeCrossing& x : order_) {
-    if (!cross(e, x)) return false;
-    emit_segment();
+  for (const int32_t slot : order_) {
+    if (!cross(e, in_.arr.edge_crossings[slot])) return false;
+    // The pairs next to e's faces change only where a face leaves or enters beside them.
+    if (beside_) emit_segment();
   }
   return !undecided_;
 }
@@ -69,12 +70,17 @@ bool Worker::sweep(int32_t e) {
 // (Arrangement::index_crossings) are disjoint.
 bool Worker::order_crossings(int32_t e) {
   const Arrangement& arr = in_.arr;
-  order_.assign(arr.edge_crossings.begin() + arr.edge_vertex_off[e], arr.edge_crossings.begin() + arr.edge_vertex_off[e + 1]);
-  // Insertion sort: a few crossings per edge, mostly in order already.
-  for (size_t k = 1; k < order_.size(); ++k)
-    for (size_t m = k; m > 0 && order_[m].key < order_[m - 1].key; --m) std::swap(order_[m], order_[m - 1]);
-  for (size_t k = 1; k < order_.size(); ++k)
-    if (!(order_[k - 1].key + order_[k - 1].ext < order_[k].key - order_[k].ext)) return false;
+  keys_.clear();
+  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) keys_.push_back({arr.edge_crossings[x].key, x});
+  std::sort(keys_.begin(), keys_.end());
+  order_.clear();
+  for (size_t k = 0; k < keys_.size(); ++k) {
+    if (k > 0) {
+      const EdgeCrossing &p = arr.edge_crossings[keys_[k - 1].second], &q = arr.edge_crossings[keys_[k].second];
+      if (!(p.key + p.ext < q.key - q.ext)) return false;
+    }
+    order_.push_back(keys_[k].second);
+  }
   return true;
 }
 
@@ -150,6 +156,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   if (sa == 0) return false;
   int32_t enter[8], leave_at = -1;
   int n_enter = 0, n_leave = 0;
+  beside_ = false;
   for (int32_t x = arr.edge_face_off[other]; x < arr.edge_face_off[other + 1]; ++x) {
     const int32_t g = arr.edge_faces[x];
     const int dir = arr.edge_face_dir[x];
@@ -157,6 +164,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
       const auto it = std::find(list_.begin(), list_.end(), g);
       if (it == list_.end()) return false;
       const int32_t i = static_cast<int32_t>(it - list_.begin());
+      for (int k = 0; k < n_eface_; ++k) beside_ |= i == epos_[k] - 1 || i == epos_[k];
       list_.erase(it);
       for (int k = 0; k < n_eface_; ++k) epos_[k] -= i < epos_[k];
       leave_at = i, ++n_leave;
@@ -185,6 +193,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   for (int k = 0; k < n_enter; ++k) {
     const size_t j = given >= 0 ? static_cast<size_t>(given)
                      : simple && n_leave == 1 ? place(enter[k], leave_at) : insert_at_crossing(enter[k]);
+    for (int m = 0; m < n_eface_; ++m) beside_ |= static_cast<int32_t>(j) == epos_[m];
     for (int m = 0; m < n_eface_; ++m) epos_[m] = track(enter[k], m, static_cast<int32_t>(j));
     list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(j), enter[k]);
   }
