@@ -19,13 +19,25 @@ struct ArrVertex {
   int32_t e1 = -1, e2 = -1;  // crossing: the edge ids of (a, b) and (c, d)
 };
 
+// A crossing as one of its edges sees it: where it lies along that edge (the vertex box's
+// centre and its extent, both projected on the edge's direction from its first point),
+// the vertex and the other edge. Stored per edge side by side, for the edge sweep.
+struct EdgeCrossing {
+  double key, ext;
+  int32_t vertex, other;
+  int32_t self, partner;  // its slot in edge_crossings, and the other edge's slot for it
+};
+
 struct Arrangement {
   std::vector<std::pair<int32_t, int32_t>> edges;  // unique projected edges
   std::vector<int32_t> edge_off, edge_items;       // edges per bucket (CSR)
   std::vector<ArrVertex> vertices;                 // points first, then crossings
   size_t projected_vertices = 0;
-  // Per edge (CSR): its kept faces, and the crossings on it (vertex ids, either role).
-  std::vector<int32_t> edge_face_off, edge_faces, edge_vertex_off, edge_vertices;
+  // Per edge (CSR): its kept faces (with the direction each has the edge in: +1 first ->
+  // second), and the crossings on it (either role).
+  std::vector<int32_t> edge_face_off, edge_faces, edge_vertex_off;
+  std::vector<int8_t> edge_face_dir;
+  std::vector<EdgeCrossing> edge_crossings;
   // Candidate pairs the double filter decided, and those it left to the exact test.
   int64_t crossings_filtered = 0, crossings_rechecked = 0;
 
@@ -35,9 +47,10 @@ struct Arrangement {
 
  private:
   std::vector<Box> box_;  // per edge, its projected box
+  BucketGrid grid_;       // of the edges
   Box edge_box(const Projection& proj, int32_t e) const;
   void build_edges(const ExteriorFaces& ext, const Projection& proj);
-  void index_crossings();
+  void index_crossings(const Projection& proj);
   ArrVertex crossing_vertex(const Projection& proj, int32_t a, int32_t b, int32_t c, int32_t d,
                             const Box& ba, const Box& bb) const;
 };

@@ -1,34 +1,45 @@
-// XMPVO's edge sweep: the ray queries of the crossings on one projected edge e = (a, b),
-// sharing their covering faces. Between two consecutive crossings on e the faces whose
-// projection covers e (faces of e excluded) do not change, and neither does their depth
-// order (exterior faces of a valid mesh do not cross), so the sweep keeps them sorted
-// front to back in list_: found and sorted once at a by a full query, then at each
-// crossing with an edge e' the faces of e' on a's side leave and those on b's side enter
-// (one binary search each). At a crossing e owns (its first edge) the inside faces are
-// list_ after the leaving ones, the boundary faces those of e and e', and the relations
-// follow as in a full query (emit_sectors).
+// XMPVO's edge sweep: the relations along one projected edge e = (a, b) with crossings.
+// Between two consecutive crossings on e the faces whose projection covers e (faces of e
+// excluded) do not change, and neither does their depth order (exterior faces of a valid
+// mesh do not cross), so the sweep keeps them sorted front to back in list_: taken from
+// a's point query, then at each crossing with an edge e' = (c, d) the faces of e' on a's
+// side leave and those on b's side enter (one binary search each, or where the sweep of e'
+// put e's faces if it passed the crossing first: a Handoff), and the faces of e keep their
+// positions (epos_).
 //
-// Premises, each checked, else the edge's crossings get full queries (pairs rolled back):
+// What is emitted: along each open segment of e between its vertices, on each side of e,
+// the consecutive pairs next to the positions of e's faces (their neighbours where they
+// cover, the pair they separate where they do not). A pair that is consecutive somewhere
+// stops being so across an edge of one of its faces or of a face entering between them,
+// and there it is such a pair of that edge: so the sweeps of all edges with crossings and
+// the full queries at the points find exactly the pairs the full queries at every
+// arrangement vertex find (the segments next to a and b also touch a and b). Crossings
+// themselves get no query.
+//
+// Depth at a crossing: an entering face g holds e', so the crossing's ray meets g's plane
+// on the segment (c, d). Where c and d lie strictly on one side of a face h's plane
+// (orient3d, filtered), so does that point, and g is in front of h exactly when that is
+// the eye's side; otherwise the crossing's ray and plane keys decide (depth()).
+//
+// Premises, each checked, else every crossing on e gets a full query (pairs rolled back):
 // no point lies on the projected boundary of a face it is not a vertex of (the point
 // queries watch for it, for the whole view: run_ray_queries); the crossings on e are
 // certainly ordered (their boxes' extents along e are disjoint, which also rules out
-// three edges through one point); every face of e and e' meets the crossing in one edge;
-// a leaving face is in list_; no depth comparison is undecided. All signs are the exact
-// ones (filtered as in full queries), so the relations are those of the full queries.
+// three edges through one point); a leaving face is in list_; no depth comparison is
+// undecided. All signs are the exact ones (filtered as in full queries).
 #include <algorithm>
 #include <cmath>
 
 #include "algorithms/xmpvo/query_worker.h"
 #include "algorithms/xmpvo/uv_filter.h"
+#include "harness/geometry/predicates.h"
 
 namespace vob::xmpvo::detail {
 
 void Worker::sweep_edge(int32_t e) {
   const Arrangement& arr = in_.arr;
-  bool owns = false;
-  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1] && !owns; ++x)
-    owns = arr.vertices[arr.edge_vertices[x]].e1 == e;
-  if (!owns) return;
+  // Without crossings the regions along e touch a and b: the point queries see them.
+  if (arr.edge_vertex_off[e] == arr.edge_vertex_off[e + 1]) return;
   ++stats_.sweep_edges;
   const size_t mark = pairs_.size();
   const int64_t answered = stats_.sweep_crossings;
@@ -40,50 +51,42 @@ void Worker::sweep_edge(int32_t e) {
   std::fill(seen_.begin(), seen_.end(), 0);
   stats_.sweep_crossings = answered;
   ++stats_.sweep_fallbacks;
-  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x)
-    if (arr.vertices[arr.edge_vertices[x]].e1 == e) query(arr.edge_vertices[x]);
+  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) query(arr.edge_crossings[x].vertex);
 }
 
 bool Worker::sweep(int32_t e) {
   undecided_ = false;
   if (!order_crossings(e) || !start_list(e)) return false;
-  for (int32_t vi : order_)
-    if (!cross(e, vi)) return false;
+  emit_segment();
+  for (const int32_t slot : order_) {
+    if (!cross(e, in_.arr.edge_crossings[slot])) return false;
+    // The pairs next to e's faces change only where a face leaves or enters beside them.
+    if (beside_) emit_segment();
+  }
   return !undecided_;
 }
 
-// The crossings on e from a to b, when their order is certain: each exact crossing lies
-// in its vertex box, so its position along e (a dot product with e's projected direction,
-// monotone along the exact edge) lies within the box's extent, widened by the rounding.
+// The crossings on e from a to b, when their order is certain: their extents along e
+// (Arrangement::index_crossings) are disjoint.
 bool Worker::order_crossings(int32_t e) {
   const Arrangement& arr = in_.arr;
-  const auto [ax, ay] = in_.proj.uv[arr.edges[e].first];
-  const auto [bx, by] = in_.proj.uv[arr.edges[e].second];
-  const double dx = bx - ax, dy = by - ay;
   keys_.clear();
-  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) {
-    const Box& b = arr.vertices[arr.edge_vertices[x]].box;
-    keys_.push_back({dx * (0.5 * (b.x0 + b.x1) - ax) + dy * (0.5 * (b.y0 + b.y1) - ay), arr.edge_vertices[x]});
-  }
+  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) keys_.push_back({arr.edge_crossings[x].key, x});
   std::sort(keys_.begin(), keys_.end());
-  auto extent = [&](int32_t vi) {
-    const Box& b = arr.vertices[vi].box;
-    const double xc = 0.5 * (b.x0 + b.x1), yc = 0.5 * (b.y0 + b.y1);
-    return std::fabs(dx) * (0.5 * (b.x1 - b.x0)) + std::fabs(dy) * (0.5 * (b.y1 - b.y0)) +
-           1e-14 * (std::fabs(dx) * (std::fabs(xc) + std::fabs(ax)) + std::fabs(dy) * (std::fabs(yc) + std::fabs(ay))) +
-           1e-300;
-  };
   order_.clear();
   for (size_t k = 0; k < keys_.size(); ++k) {
-    if (k > 0 && !(keys_[k - 1].first + extent(keys_[k - 1].second) < keys_[k].first - extent(keys_[k].second)))
-      return false;
+    if (k > 0) {
+      const EdgeCrossing &p = arr.edge_crossings[keys_[k - 1].second], &q = arr.edge_crossings[keys_[k].second];
+      if (!(p.key + p.ext < q.key - q.ext)) return false;
+    }
     order_.push_back(keys_[k].second);
   }
   return true;
 }
 
 // list_ just after a along e: the faces covering a's neighbourhood, and the faces with a
-// as a corner whose angle holds the direction of b strictly; sorted at a's ray.
+// as a corner whose angle holds the direction of b strictly; sorted at a's ray. The faces
+// of e: their positions, the side of e they cover, their order where on one side.
 bool Worker::start_list(int32_t e) {
   const auto [a, b] = in_.arr.edges[e];
   const int32_t va = point_vertex_[a];
@@ -94,11 +97,22 @@ bool Worker::start_list(int32_t e) {
   // same point: its covering faces are found and sorted once.
   if (start_point_ != a) {
     start_point_ = -1;
-    gather(v);
-    sort_inside(v);
-    start_inside_ = inside_;
-    start_wedges_ = wedges_;
-    if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes
+    const std::pair<const Worker*, int32_t> at = start_of_ ? (*start_of_)[va] : std::pair<const Worker*, int32_t>{};
+    if (at.first) {
+      // The point query's, when it kept them.
+      const Start& st = at.first->starts_[at.second];
+      const auto& ins = at.first->starts_inside_;
+      const auto& wed = at.first->starts_wedges_;
+      start_inside_.assign(ins.begin() + st.inside0, ins.begin() + st.inside0 + st.ninside);
+      start_wedges_.assign(wed.begin() + st.wedge0, wed.begin() + st.wedge0 + st.nwedge);
+      start_point_ = a;
+    } else {
+      gather(v);
+      sort_inside(v);
+      start_inside_ = inside_;
+      start_wedges_ = wedges_;
+      if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes
+    }
   }
   list_ = start_inside_;
   for (const Wedge& w : start_wedges_) {
@@ -116,108 +130,174 @@ bool Worker::start_list(int32_t e) {
   n_eface_ = 0;
   for (int32_t x = arr.edge_face_off[e]; x < arr.edge_face_off[e + 1]; ++x) {
     if (n_eface_ == 4) return false;
-    eface_[n_eface_] = arr.edge_faces[x];
-    epos_[n_eface_++] = static_cast<int32_t>(insert_at(arr.edge_faces[x]));
+    const int32_t f = arr.edge_faces[x];
+    const int dir = arr.edge_face_dir[x];
+    eface_[n_eface_] = f;
+    eside_[n_eface_] = static_cast<int8_t>(dir * -in_.proj.facing[f]);
+    epos_[n_eface_++] = static_cast<int32_t>(insert_at(f));
   }
-  return true;
+  // Faces of e on one side (a fold of the surface) keep their depth order along e.
+  for (int i = 0; i < n_eface_; ++i)
+    for (int j = 0; j < n_eface_; ++j)
+      ebefore_[i][j] = i != j && eside_[i] == eside_[j] && depth(eface_[i], eface_[j]) < 0;
+  return !undecided_;
 }
 
-// Crossing vi of e with e': the faces of e' leave or enter list_; at a crossing e owns,
-// the relations of the full query at vi. The faces of e keep their positions in list_
-// (epos_), a leaving face's position is where it was, an entering face's where the
-// leaving face of the same edge was when its neighbours confirm it (the ray through the
-// crossing meets both faces' planes at one point of e'), else a binary search.
-bool Worker::cross(int32_t e, int32_t vi) {
+// Crossing `xing` of e with e' = (c, d): the faces of e' leave or enter list_. The faces of e
+// keep their positions in list_ (epos_); an entering face goes where the leaving face of
+// the same edge was when its neighbours confirm it, else by binary search.
+bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
-  begin(vi);
-  memo_ = true;
-  const ArrVertex& v = *current_;
-  const int32_t other = v.e1 == e ? v.e2 : v.e1;
+  const int32_t other = xing.other;
   const auto [c, d] = arr.edges[other];
+  xvi_ = xing.vertex, xc_pt_ = c, xd_pt_ = d, n_psign_ = 0;
   const int32_t a = arr.edges[e].first;
   const int sa = point_side(a, c, d);
   if (sa == 0) return false;
-  int32_t enter[8], leave_face = -1, leave_at = -1;
+  int32_t enter[8], leave_at = -1;
   int n_enter = 0, n_leave = 0;
+  beside_ = false;
   for (int32_t x = arr.edge_face_off[other]; x < arr.edge_face_off[other + 1]; ++x) {
     const int32_t g = arr.edge_faces[x];
-    const int32_t* p = &in_.ext.vertex[4 * g];
-    const int n = in_.ext.size[g];
-    int dir = 0;  // +1: g has the directed edge c -> d, -1: d -> c
-    for (int k = 0; k < n; ++k) {
-      const int32_t p0 = p[k], p1 = p[k + 1 < n ? k + 1 : 0];
-      if (p0 == c && p1 == d) dir = 1;
-      if (p0 == d && p1 == c) dir = -1;
-    }
-    if (dir == 0) return false;
+    const int dir = arr.edge_face_dir[x];
     if (sa * dir * -in_.proj.facing[g] > 0) {
       const auto it = std::find(list_.begin(), list_.end(), g);
       if (it == list_.end()) return false;
       const int32_t i = static_cast<int32_t>(it - list_.begin());
+      for (int k = 0; k < n_eface_; ++k) beside_ |= i == epos_[k] - 1 || i == epos_[k];
       list_.erase(it);
       for (int k = 0; k < n_eface_; ++k) epos_[k] -= i < epos_[k];
-      leave_face = g, leave_at = i, ++n_leave;
+      leave_at = i, ++n_leave;
     } else {
       if (n_enter == 8) return false;
       enter[n_enter++] = g;
     }
   }
-  const bool simple = n_leave <= 1 && n_enter <= 1;
-  size_t at = 0;
-  if (simple && n_enter == 1) at = n_leave == 1 ? place(enter[0], leave_at) : insert_at(enter[0]);
-  if (v.e1 == e) {
-    inside_ = list_;
-    wedges_.clear();
-    for (int32_t edge : {e, other})
-      for (int32_t x = arr.edge_face_off[edge]; x < arr.edge_face_off[edge + 1]; ++x) {
-        const size_t before = wedges_.size();
-        const int32_t g = arr.edge_faces[x];
-        if (!edge_wedge(g, edge == e ? arr.edges[e] : arr.edges[other])) classify(v, g);
-        if (wedges_.size() != before + 1 || !wedges_.back().half) return false;
-        Wedge& w = wedges_.back();
-        w.pos = edge == e ? epos_[x - arr.edge_face_off[edge]]
-                : g == leave_face ? leave_at : static_cast<int32_t>(at);
-      }
-    emit_sectors(v, simple);
-    ++stats_.sweep_crossings;
+  // list_ now holds the faces covering the crossing: the first of its two sweeps tells the
+  // other where its edge's faces go among them; the second takes that for its entering face.
+  Handoffs* h = handoffs_->ready ? handoffs_ : nullptr;
+  const bool theirs = h && h->ready[xing.self].load(std::memory_order_acquire);
+  if (h && !theirs && n_eface_ <= 2 && !undecided_) {
+    Handoff& o = h->data[xing.partner];
+    for (int k = 0; k < n_eface_; ++k) o.pos[k] = epos_[k];
+    h->ready[xing.partner].store(1, std::memory_order_release);
   }
+  int32_t given = -1;
+  if (theirs && n_enter == 1) {
+    const int32_t x0 = arr.edge_face_off[other], x1 = std::min(x0 + 2, arr.edge_face_off[other + 1]);
+    for (int32_t x = x0; x < x1; ++x)
+      if (arr.edge_faces[x] == enter[0]) given = h->data[xing.self].pos[x - x0];
+    stats_.sweep_handoffs += given >= 0;
+  }
+  const bool simple = n_leave <= 1 && n_enter <= 1;
   for (int k = 0; k < n_enter; ++k) {
-    const size_t j = simple ? at : insert_at(enter[k]);
+    const size_t j = given >= 0 ? static_cast<size_t>(given)
+                     : simple && n_leave == 1 ? place(enter[k], leave_at) : insert_at_crossing(enter[k]);
+    for (int m = 0; m < n_eface_; ++m) beside_ |= static_cast<int32_t>(j) == epos_[m];
     for (int m = 0; m < n_eface_; ++m) epos_[m] = track(enter[k], m, static_cast<int32_t>(j));
     list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(j), enter[k]);
   }
+  ++stats_.sweep_crossings;
   return !undecided_;
+}
+
+// The pairs next to the faces of e along the current segment, on each side of e.
+void Worker::emit_segment() {
+  const int32_t n = static_cast<int32_t>(list_.size());
+  for (int i = 0; i < n_eface_; ++i) {
+    const int32_t p = epos_[i];
+    // Faces of e on this face's side at the same position: the nearest in front, behind.
+    int fj = -1, bj = -1;
+    for (int j = 0; j < n_eface_; ++j) {
+      if (j == i || eside_[j] != eside_[i] || epos_[j] != p) continue;
+      if (ebefore_[j][i] && (fj < 0 || ebefore_[fj][j])) fj = j;
+      if (ebefore_[i][j] && (bj < 0 || ebefore_[j][bj])) bj = j;
+    }
+    const int32_t front = fj >= 0 ? eface_[fj] : p > 0 ? list_[p - 1] : -1;
+    const int32_t back = bj >= 0 ? eface_[bj] : p < n ? list_[p] : -1;
+    if (front >= 0) emit(front, eface_[i]);
+    if (back >= 0) emit(eface_[i], back);
+    // The pair it separates on the other side, unless a face of e is there too.
+    if (p == 0 || p == n) continue;
+    bool other_here = false;
+    for (int j = 0; j < n_eface_; ++j) other_here |= eside_[j] != eside_[i] && epos_[j] == p;
+    if (!other_here) emit(list_[p - 1], list_[p]);
+  }
 }
 
 // Where entering face f goes in list_: at `guess` when its neighbours there confirm it,
 // else by binary search.
 size_t Worker::place(int32_t f, int32_t guess) {
   const size_t j = static_cast<size_t>(guess);
-  if ((j == 0 || depth(f, list_[j - 1]) > 0) && (j == list_.size() || depth(f, list_[j]) < 0)) return j;
-  return insert_at(f);
+  if ((j == 0 || depth_x(f, list_[j - 1]) > 0) && (j == list_.size() || depth_x(f, list_[j]) < 0)) return j;
+  return insert_at_crossing(f);
 }
 
 // A face of e at position pos after face f enters list_ at j.
 int32_t Worker::track(int32_t f, int m, int32_t j) {
   const int32_t pos = epos_[m];
   if (j != pos) return pos + (j < pos);
-  return pos + (depth(f, eface_[m]) < 0);
+  return pos + (depth_x(f, eface_[m]) < 0);
 }
 
-// A triangle with the crossing inside its edge (p, q): the wedge classify would find
-// without testing its other sides, which hold the open edge strictly (a projected
-// triangle that is not edge-on has no zero-length height). Quadrilaterals are classified.
-bool Worker::edge_wedge(int32_t f, std::pair<int32_t, int32_t> pq) {
-  if (in_.ext.size[f] != 3) return false;
-  const int32_t* p = &in_.ext.vertex[4 * f];
-  for (int k = 0; k < 3; ++k) {
-    const int32_t a = p[k], b = p[k + 1 < 3 ? k + 1 : 0];
-    if (!((a == pq.first && b == pq.second) || (a == pq.second && b == pq.first))) continue;
-    const int inner = -in_.proj.facing[f];
-    wedges_.push_back({f, inner > 0 ? b : a, inner > 0 ? a : b, p[(k + 2) % 3], true, 0});
-    return true;
+// Where face f of e' goes in list_ (front to back) at the current crossing.
+size_t Worker::insert_at_crossing(int32_t f) {
+  size_t lo = 0, hi = list_.size();
+  while (lo < hi) {
+    const size_t mid = (lo + hi) / 2;
+    if (depth_x(f, list_[mid]) < 0) hi = mid;
+    else lo = mid + 1;
   }
-  return false;
+  return lo;
+}
+
+// Depth order of face g of e' and face h covering the crossing, on the crossing's ray:
+// from the sides of c and d to h's plane when they agree, else from the ray's keys.
+int Worker::depth_x(int32_t g, int32_t h) {
+  int k = 0;
+  while (k < n_psign_ && psign_face_[k] != h) ++k;
+  if (k == n_psign_) {
+    const int sc = plane_side(h, xc_pt_);
+    const int sd = sc == 0 ? 0 : plane_side(h, xd_pt_);
+    k = n_psign_ < kPsign ? n_psign_++ : 0;
+    psign_face_[k] = h;
+    psign_[k] = static_cast<int8_t>(sc == sd ? sc : 0);
+  }
+  if (psign_[k] != 0) {
+    ++stats_.depth_plane_sides;
+    return psign_[k] == in_.proj.facing[h] ? -1 : 1;
+  }
+  if (vi_ != xvi_) begin(xvi_);
+  return depth(g, h);
+}
+
+// Side of point p to face h's plane (orient3d of its first three vertices), filtered; 0
+// for h's own vertices when the filter cannot tell (on the plane, or a quadrilateral's
+// fourth: depth() decides).
+int Worker::plane_side(int32_t h, int32_t p) {
+  // Neighbouring crossings on an edge share points (a strip of faces crosses it): memo.
+  const uint64_t key = (uint64_t(uint32_t(h)) << 32 | uint32_t(p)) + 1;
+  const size_t slot = (key * 0x9E3779B97F4A7C15ull) >> (64 - kPlaneMemoBits);
+  if (plane_memo_key_[slot] == key) return plane_memo_sign_[slot];
+  const int r = plane_side_raw(h, p);
+  plane_memo_key_[slot] = key;
+  plane_memo_sign_[slot] = static_cast<int8_t>(r);
+  return r;
+}
+
+int Worker::plane_side_raw(int32_t h, int32_t p) {
+  const FacePlane& f = in_.plane[h];
+  const Vec3& q = pt(p);
+  const Fd s = Fd{f.n[0][0], f.n[0][1]} * (Fd{q.x, 0} - Fd{f.f[0].x, 0}) +
+               Fd{f.n[1][0], f.n[1][1]} * (Fd{q.y, 0} - Fd{f.f[0].y, 0}) +
+               Fd{f.n[2][0], f.n[2][1]} * (Fd{q.z, 0} - Fd{f.f[0].z, 0});
+  const int r = fd_sign(s);
+  if (r != 2) return r;
+  const int32_t* hv = &in_.ext.vertex[4 * h];
+  if (hv[0] == p || hv[1] == p || hv[2] == p || (in_.ext.size[h] > 3 && hv[3] == p)) return 0;
+  ++stats_.depth_rechecked;
+  rechecked_ = true;
+  return orient3d(f.f[0], f.f[1], f.f[2], q);
 }
 
 // Sign of D(x, p, q) for a projected point x, as orient_at gives it at a point vertex.

@@ -4,7 +4,9 @@
 // one vertex; the edge sweep (edge_sweep.cpp) carries the sorted covering faces along one
 // projected edge from crossing to crossing.
 #pragma once
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -22,19 +24,34 @@ struct Wedge {
   int32_t pos;  // number of inside faces in front of it
 };
 
+// What the first of a crossing's two sweeps learns for the other: where its edge's faces
+// (at most two, in Arrangement::edge_faces order) go among the faces covering the crossing
+// (both sweeps' lists, without their own edges' faces, are those faces in the same order).
+// Per slot of Arrangement::edge_crossings, written to the other edge's slot; `ready`
+// (released after the data) says it is there.
+struct Handoff {
+  int32_t pos[2];
+};
+struct Handoffs {
+  std::unique_ptr<Handoff[]> data;  // uninitialised where not ready
+  std::unique_ptr<std::atomic<uint8_t>[]> ready;
+};
+
 class Worker {
  public:
   Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane,
-         const std::vector<int32_t>& point_vertex)
-      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
+         const std::vector<int32_t>& point_vertex, Handoffs* handoffs)
+      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex), handoffs_(handoffs),
         face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
         key_(in.ext.face.size()), touch_(in.ext.face.size()) {
     signs_.side = signs_.dis_side = 0;
   }
   size_t bytes() const {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
-            key_stamp_.capacity() + list_.capacity() + order_.capacity() + start_inside_.capacity()) * 4 +
-           start_wedges_.capacity() * sizeof(Wedge) +
+            key_stamp_.capacity() + list_.capacity() + start_inside_.capacity()) * 4 +
+           order_.capacity() * 4 +
+           (start_wedges_.capacity() + starts_wedges_.capacity()) * sizeof(Wedge) +
+           starts_.capacity() * sizeof(Start) + starts_inside_.capacity() * 4 + plane_memo_key_.capacity() * 9 +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
            wedges_.capacity() * sizeof(Wedge) + (pairs_.capacity() + seen_.capacity()) * 8;
   }
@@ -43,9 +60,21 @@ class Worker {
     run_query(vi);
     stats_.queries_rechecked += rechecked_;
   }
-  // The crossings edge e owns (it is their first edge), by the sweep; any case the sweep
+  // The relations along edge e by the sweep (edges with crossings); any case the sweep
   // cannot decide (edge_sweep.cpp) falls back to full queries of the edge's crossings.
   void sweep_edge(int32_t e);
+
+  // The point queries' sorted covering faces and wedges (kept when keep_starts_), for the
+  // sweeps starting there; start_of_, set between the point queries and the sweeps, gives
+  // per point vertex the worker and index of its entry (run_ray_queries).
+  struct Start {
+    int32_t vi, inside0, ninside, wedge0, nwedge;
+  };
+  bool keep_starts_ = false;
+  std::vector<Start> starts_;
+  std::vector<int32_t> starts_inside_;
+  std::vector<Wedge> starts_wedges_;
+  const std::vector<std::pair<const Worker*, int32_t>>* start_of_ = nullptr;
 
   QueryStats stats_;
   Signs signs_;
@@ -58,8 +87,7 @@ class Worker {
   void run_query(int32_t vi);
   void begin(int32_t vi);
   void gather(const ArrVertex& v);
-  // pos_known: every wedge's pos is set (the sweep's), else found by binary search.
-  void emit_sectors(const ArrVertex& v, bool pos_known = false);
+  void emit_sectors(const ArrVertex& v);
   int orient_at(const ArrVertex& v, int32_t p, int32_t q);
   int orient_raw(const ArrVertex& v, int32_t p, int32_t q);
   int depth(int32_t x, int32_t y);
@@ -73,16 +101,21 @@ class Worker {
   bool sweep(int32_t e);
   bool start_list(int32_t e);
   bool order_crossings(int32_t e);
-  bool cross(int32_t e, int32_t vi);
+  bool cross(int32_t e, const EdgeCrossing& xing);
+  void emit_segment();
   int point_side(int32_t x, int32_t p, int32_t q);
+  int plane_side(int32_t h, int32_t p);
+  int plane_side_raw(int32_t h, int32_t p);
+  int depth_x(int32_t g, int32_t h);
   size_t insert_at(int32_t f);
+  size_t insert_at_crossing(int32_t f);
   size_t place(int32_t f, int32_t guess);
-  bool edge_wedge(int32_t f, std::pair<int32_t, int32_t> pq);
   int32_t track(int32_t f, int m, int32_t j);
 
   const QueryInput& in_;
   const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
   const std::vector<int32_t>& point_vertex_;  // per exterior point, its vertex id or -1
+  Handoffs* handoffs_;                        // the sweeps' (ready null: none)
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
 
@@ -102,20 +135,30 @@ class Worker {
   bool undecided_ = false;  // a depth comparison returned 0 (the sweep then falls back)
   // The sweep's sorted covering faces of the open segment before the current crossing
   // (faces of the swept edge excluded), and the edge's crossings in order.
-  std::vector<int32_t> list_, order_;
+  std::vector<int32_t> list_;
+  std::vector<int32_t> order_;  // slots of Arrangement::edge_crossings, along the edge
+  bool beside_ = false;         // the last crossing changed a neighbour of e's faces
   // The last sweep start: its point, covering faces sorted, and wedges.
   int32_t start_point_ = -1;
   std::vector<int32_t> start_inside_;
   std::vector<Wedge> start_wedges_;
-  // The swept edge's faces and their positions in list_ (faces of list_ in front).
+  // The swept edge's faces, their positions in list_ (faces of list_ in front), the side
+  // of the edge each covers (the sign of D), and their depth order where on one side.
   int32_t eface_[4] = {}, epos_[4] = {};
+  int8_t eside_[4] = {};
+  bool ebefore_[4][4] = {};
   int n_eface_ = 0;
-  // orient_at's memo at one sweep crossing (memo_ on): (p, q) -> sign.
-  static constexpr int kMemo = 24;
-  bool memo_ = false;
-  int memo_n_ = 0;
-  int32_t memo_p_[kMemo] = {}, memo_q_[kMemo] = {};
-  int8_t memo_s_[kMemo] = {};
+  // The sweep's current crossing (vertex id, the crossing edge's points) and, per face
+  // compared there, the side of its plane holding both points (0: none, or not certain).
+  int32_t xvi_ = -1, xc_pt_ = -1, xd_pt_ = -1;
+  // plane_side's memo (view-independent signs): key (h << 32 | p) + 1, 0 empty.
+  static constexpr int kPlaneMemoBits = 12;
+  std::vector<uint64_t> plane_memo_key_ = std::vector<uint64_t>(size_t{1} << kPlaneMemoBits, 0);
+  std::vector<int8_t> plane_memo_sign_ = std::vector<int8_t>(size_t{1} << kPlaneMemoBits, 0);
+  static constexpr int kPsign = 16;
+  int n_psign_ = 0;
+  int32_t psign_face_[kPsign] = {};
+  int8_t psign_[kPsign] = {};
   // emit's table of recent pairs (key + 1; 0 empty); cleared when pairs are rolled back.
   static constexpr int kSeenBits = 12;
   std::vector<uint64_t> seen_ = std::vector<uint64_t>(size_t{1} << kSeenBits, 0);

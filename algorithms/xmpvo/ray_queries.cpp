@@ -25,16 +25,6 @@ int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
              (p == v.d && q == v.c)) {
     return 0;
   }
-  if (memo_) {
-    // The sweep's crossings ask the same few signs (edges of four faces) repeatedly.
-    for (int k = 0; k < memo_n_; ++k) {
-      if (memo_p_[k] == p && memo_q_[k] == q) return memo_s_[k];
-      if (memo_p_[k] == q && memo_q_[k] == p) return -memo_s_[k];
-    }
-    const int s = orient_raw(v, p, q);
-    if (memo_n_ < kMemo) memo_p_[memo_n_] = p, memo_q_[memo_n_] = q, memo_s_[memo_n_++] = static_cast<int8_t>(s);
-    return s;
-  }
   return orient_raw(v, p, q);
 }
 
@@ -126,7 +116,16 @@ void Worker::run_query(int32_t vi) {
   const ArrVertex& v = *current_;
   gather(v);
   if (wedges_.empty()) return;
+  const bool undecided = undecided_;
+  undecided_ = false;
   sort_inside(v);
+  if (keep_starts_ && v.b < 0 && !undecided_) {
+    starts_.push_back({vi, static_cast<int32_t>(starts_inside_.size()), static_cast<int32_t>(inside_.size()),
+                       static_cast<int32_t>(starts_wedges_.size()), static_cast<int32_t>(wedges_.size())});
+    starts_inside_.insert(starts_inside_.end(), inside_.begin(), inside_.end());
+    starts_wedges_.insert(starts_wedges_.end(), wedges_.begin(), wedges_.end());
+  }
+  undecided_ |= undecided;
   emit_sectors(v);
 }
 
@@ -136,8 +135,6 @@ void Worker::begin(int32_t vi) {
   const Projection& proj = in_.proj;
   current_ = &v;
   vi_ = vi;
-  memo_ = false;
-  memo_n_ = 0;
   ray_ = v.b < 0 ? VertexRay::at_point(signs_.g, pt(v.a))
                  : VertexRay::at_crossing(signs_.g, pt(v.a), pt(v.b), pt(v.c), pt(v.d));
   terms_ = RayTerms::of(ray_);
@@ -175,19 +172,16 @@ void Worker::gather(const ArrVertex& v) {
 }
 
 // The relations at v from inside_ (sorted front to back) and wedges_.
-void Worker::emit_sectors(const ArrVertex& v, bool pos_known) {
+void Worker::emit_sectors(const ArrVertex& v) {
   const int32_t ni = static_cast<int32_t>(inside_.size());
   for (Wedge& w : wedges_) {
     int32_t lo = 0, hi = ni;
-    if (pos_known) lo = w.pos;
-    while (lo < hi && !pos_known) {
+    while (lo < hi) {
       const int32_t mid = (lo + hi) / 2;
       if (depth(w.face, inside_[mid]) < 0) hi = mid;
       else lo = mid + 1;
     }
     w.pos = lo;
-    // The inside faces on either side of a boundary face are consecutive where it is not.
-    if (lo > 0 && lo < ni) emit(inside_[lo - 1], inside_[lo]);
   }
   rays_.clear();
   for (const Wedge& w : wedges_)
@@ -210,6 +204,14 @@ void Worker::emit_sectors(const ArrVertex& v, bool pos_known) {
       else if (w.pos > 0) emit(inside_[w.pos - 1], w.face);
       const bool last_here = j + 1 == sector_.size() || wedges_[sector_[j + 1]].pos != w.pos;
       if (last_here && w.pos < ni) emit(w.face, inside_[w.pos]);
+    }
+    // The inside faces on either side of a boundary face that does not cover the sector
+    // are consecutive there, unless a face covering it lies between them.
+    for (const Wedge& w : wedges_) {
+      if (w.pos == 0 || w.pos == ni) continue;
+      bool between = false;
+      for (int32_t k : sector_) between |= wedges_[k].pos == w.pos;
+      if (!between) emit(inside_[w.pos - 1], inside_[w.pos]);
     }
   }
 }
@@ -294,7 +296,8 @@ void QueryStats::add(const QueryStats& x) {
   side_filtered += x.side_filtered, side_rechecked += x.side_rechecked;
   queries_rechecked += x.queries_rechecked, depth_rechecked += x.depth_rechecked;
   sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
-  sweep_fallbacks += x.sweep_fallbacks;
+  sweep_fallbacks += x.sweep_fallbacks, depth_plane_sides += x.depth_plane_sides;
+  sweep_handoffs += x.sweep_handoffs;
   scratch_bytes += x.scratch_bytes;
 }
 
@@ -307,21 +310,33 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   for (int32_t f : in.proj.kept) view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
   std::vector<int32_t> point_vertex(in.ext.points.size(), -1);
   for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex); });
-  auto queries = [&](size_t v0, size_t v1) {
+  detail::Handoffs handoffs;
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex, &handoffs); });
+  auto queries = [&](size_t v0, size_t v1, bool keep_starts) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
+      w.keep_starts_ = keep_starts;
       for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
     });
   };
   // Points first: they tell whether the view is free of the degeneracies the sweep
   // cannot see (a point on another face's projected boundary).
-  queries(0, arr.projected_vertices);
+  const bool sweep = in.sweep && in.signs.mode == Mode::Exact;
+  queries(0, arr.projected_vertices, sweep);
   bool degenerate = false;
   for (const Worker& w : workers) degenerate |= w.degenerate_seen_;
-  if (!in.sweep || degenerate || in.signs.mode != Mode::Exact) {
-    queries(arr.projected_vertices, arr.vertices.size());
+  std::vector<std::pair<const Worker*, int32_t>> start_of;
+  if (!sweep || degenerate) {
+    queries(arr.projected_vertices, arr.vertices.size(), false);
   } else {
+    // The sweeps start from the point queries' sorted faces.
+    start_of.assign(arr.projected_vertices, {nullptr, -1});
+    for (Worker& w : workers) {
+      for (size_t k = 0; k < w.starts_.size(); ++k) start_of[w.starts_[k].vi] = {&w, static_cast<int32_t>(k)};
+      w.start_of_ = &start_of;
+    }
+    handoffs.data.reset(new detail::Handoff[arr.edge_crossings.size()]);
+    handoffs.ready.reset(new std::atomic<uint8_t>[arr.edge_crossings.size()]());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, arr.edges.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
       for (size_t e = r.begin(); e < r.end(); ++e) w.sweep_edge(static_cast<int32_t>(e));
@@ -336,6 +351,7 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     w.stats_.scratch_bytes = w.bytes();
     stats.add(w.stats_);
   }
+  if (handoffs.ready) stats.scratch_bytes += arr.edge_crossings.size() * (sizeof(detail::Handoff) + 1);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;

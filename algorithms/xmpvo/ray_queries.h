@@ -38,8 +38,11 @@ struct QueryStats {
   // queries with at least one such exact re-check.
   int64_t side_filtered = 0, side_rechecked = 0, queries_rechecked = 0;
   int64_t depth_rechecked = 0;  // depth comparisons the filtered plane keys left undecided
-  // Edges swept, crossings the sweep answered, edges that fell back to full queries.
-  int64_t sweep_edges = 0, sweep_crossings = 0, sweep_fallbacks = 0;
+  // Edges swept, crossings the sweeps passed (two per crossing), edges that fell back to
+  // full queries; sweep depth comparisons decided by the sides of a plane alone; crossings
+  // where a sweep took the entering face's position from the other edge's sweep.
+  int64_t sweep_edges = 0, sweep_crossings = 0, sweep_fallbacks = 0, depth_plane_sides = 0;
+  int64_t sweep_handoffs = 0;
   size_t scratch_bytes = 0;        // the query threads' scratch
   void add(const QueryStats& o);
 };

@@ -27,16 +27,19 @@
 //       ones plus the boundary ones covering it, in depth order -- the ray shot just inside
 //       the region, symbolically. Two faces covering a region at v are ordered by where
 //       v's own ray meets their planes (exact, vertex_plane_order), and by the full
-//       depth_order only when they touch on that ray. Points get such a full query; the
-//       crossings on each projected edge are answered by a sweep along it that keeps the
-//       covering faces sorted (edge_sweep.cpp), with full queries wherever its premises
+//       depth_order only when they touch on that ray. Points get such a full query; each
+//       projected edge with crossings a sweep along it that keeps the covering faces sorted
+//       and emits the pairs next to its own faces on each segment (edge_sweep.cpp;
+//       crossings get no query of their own), with full queries wherever its premises
 //       fail. Queries run in parallel (TBB); the relation set does not depend on the
 //       thread split.
 //       Consecutive (back-facing nearer, front-facing farther)
 //       pairs give "cell of the nearer in front of cell of the farther". Only pairs next to
-//       a boundary face are taken (inside faces' pairs straddling a boundary face
-//       included): a run of regions where a pair stays consecutive is bounded by edges of
-//       the pair or of faces between them, so one of its corners has such a face.
+//       a boundary face are taken (and the inside faces' pair a boundary face separates in
+//       a sector it does not cover, when no covering boundary face lies between them): a
+//       run of regions where a pair stays consecutive is bounded by edges of the pair or of
+//       faces between them, so one of its corners has such a face. Every relation is
+//       between faces consecutive on some ray, which is all the order needs.
 //   "DFS"  MpvoCore's DFS with the relations (sinks, then unvisited cells; cycles reported
 //       and broken).
 //
@@ -61,11 +64,13 @@
 // disagree_* counts and decision totals facing_decisions, side_decisions,
 // crossing_decisions. The filters' share: side_filtered / side_rechecked (side tests the
 // double filter decided / left to the exact predicate), crossings_filtered /
-// crossings_rechecked (candidate edge pairs), depth_rechecked (depth keys too close to
-// call), queries_rechecked (vertex queries or swept edges with any exact re-check);
-// sweep_edges, sweep_crossings (crossings the sweep answered), sweep_fallbacks (edges whose
-// crossings got full queries); vertex_queries counts every vertex a query or the sweep set
-// up (a crossing twice under the sweep, once per edge).
+// crossings_rechecked (candidate edge pairs), depth_rechecked (depth keys, or the sweep's
+// plane sides, too close to call), queries_rechecked (vertex queries or swept edges with any exact re-check);
+// sweep_edges, sweep_crossings (crossings the sweeps passed, two per crossing),
+// sweep_fallbacks (edges whose crossings got full queries), depth_plane_sides (sweep depth
+// comparisons decided by the sides of a face plane alone), sweep_handoffs (crossings
+// where the second sweep took its entering face's position from the first); vertex_queries
+// counts every vertex ray a query or the sweep built.
 #pragma once
 #include "harness/bench/registry.h"
 

@@ -1,7 +1,8 @@
 // XMPVO's edge sweep (edge_sweep.cpp) finds the same relations as a full query at every
 // arrangement vertex, where it runs (generated meshes) and where its premises fail and it
-// falls back (touching volumes, hard cases); the orders stay valid.
+// falls back (touching volumes, hard cases); the orders stay valid; one and two threads agree.
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "algorithms/xmpvo/ray_queries.h"
 #include "datasets/datasets.h"
@@ -79,4 +80,26 @@ TEST(XmpvoEdgeSweep, OrdersStayValid) {
     EXPECT_GT(o.ordering.counters.at("sweep_crossings"), 0);
     EXPECT_LE(o.ordering.counters.at("sweep_fallbacks"), o.ordering.counters.at("sweep_edges"));
   }
+}
+
+// Sweeps on two threads meet at crossings in any order (the first hands the second its
+// faces' positions): the relations are those of one thread.
+TEST(XmpvoEdgeSweep, SameRelationsOnOneAndTwoThreads) {
+  const Scene s = dataset("helix", {{"cells", "3000"}});
+  int64_t handed = 0;
+  for (int v = 0; v < 4; ++v) {
+    const Camera view = fibonacci_view(s.bounds(), 14, v, ViewOptions{160, 160});
+    Relations one, two;
+    {
+      tbb::global_control c(tbb::global_control::max_allowed_parallelism, 1);
+      one = relations(s, view, true);
+    }
+    {
+      tbb::global_control c(tbb::global_control::max_allowed_parallelism, 2);
+      two = relations(s, view, true);
+    }
+    EXPECT_EQ(one.pairs, two.pairs) << "view " << v;
+    handed += one.stats.sweep_handoffs;
+  }
+  EXPECT_GT(handed, 0);
 }
