@@ -3,6 +3,9 @@
 
 #include "algorithms/sxmpvo/abuffer.h"
 
+#include <algorithm>
+#include <random>
+
 using namespace vob::sxmpvo;
 
 namespace {
@@ -86,6 +89,45 @@ TEST(ABuffer, ReplaysArrivalsByRank) {
   EXPECT_EQ(shuffled.head_insertions(), by_rank.head_insertions());
   EXPECT_EQ(shuffled.head_insertions(), 3);  // 1.0, 3.0 on pixel 0; 5.0 on pixel 1
   EXPECT_EQ(shuffled.walk_steps(), by_rank.walk_steps());
+}
+
+// Lists of 0 to 45 entries (short and long paths), depths with ties, recorded in shuffled
+// batches: the same lists and counts as the paper's linked-list insertion, done naively.
+TEST(ABuffer, ShortAndLongListsMatchLinkedListInsertion) {
+  std::mt19937 rng(3);
+  const int64_t pixels = 46;
+  std::vector<ABuffer::Raw> all;
+  for (int64_t p = 0; p < pixels; ++p)
+    for (int64_t i = 0; i < p; ++i)
+      all.push_back({double(rng() % 12), back(int32_t(i)), int32_t(p), 0});
+  std::shuffle(all.begin(), all.end(), rng);  // arrival order
+  for (size_t r = 0; r < all.size(); ++r) all[r].rank = int32_t(r);
+  std::vector<std::vector<std::pair<double, int32_t>>> naive(pixels);  // far to near
+  int64_t heads = 0, walks = 0;
+  for (const ABuffer::Raw& r : all) {
+    auto& l = naive[r.pixel];
+    size_t j = 0;
+    while (j < l.size() && l[j].first > r.t) ++j;  // behind every entry farther than itself
+    heads += j == 0;
+    walks += int64_t(j);
+    l.insert(l.begin() + j, {r.t, r.item});
+  }
+  std::shuffle(all.begin(), all.end(), rng);  // recorded in any order
+  const std::vector<ABuffer::Raw> b1(all.begin(), all.begin() + all.size() / 3),
+      b2(all.begin() + all.size() / 3, all.end());
+  ABuffer a;
+  a.reset(pixels);
+  a.append(b2);
+  a.append(b1);
+  a.finish();
+  for (int64_t p = 0; p < pixels; ++p) {
+    std::vector<std::pair<double, int32_t>> got;
+    for (int32_t i = a.head(p); i >= 0; i = a.entry(i).next) got.emplace_back(a.entry(i).t, a.entry(i).item);
+    EXPECT_EQ(got, naive[p]) << "pixel " << p;
+  }
+  EXPECT_EQ(a.head_insertions(), heads);
+  EXPECT_EQ(a.walk_steps(), walks);
+  EXPECT_GT(walks, 1000);
 }
 
 TEST(PnLists, NoDuplicatesAndMoveToFront) {
