@@ -91,19 +91,17 @@ void PnLists::add(int32_t occluding, int32_t occluded) {
 }
 
 void PnLists::to_relations(mpvo::ExtraRelations& out) const {
-  const size_t n = head_.size();
-  out.offsets.assign(n + 1, 0);
-  out.not_sink.assign(n, 0);
+  // The sparse form: only the cells with a list are touched, not every cell of the mesh.
+  out.offsets.clear();
+  out.not_sink.clear();
+  if (out.span.size() != head_.size()) out.span.assign(head_.size(), {0, 0});
+  out.cells = touched_;
   out.behind.resize(pool_.size());
-  for (int32_t c : touched_)
-    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) ++out.offsets[c + 1];
-  for (size_t c = 0; c < n; ++c) out.offsets[c + 1] += out.offsets[c];
+  int32_t k = 0;
   for (int32_t c : touched_) {
-    int32_t k = out.offsets[c];
-    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) {
-      out.behind[k++] = pool_[i].cell;
-      out.not_sink[pool_[i].cell] = 1;  // an occluded PN is no sink
-    }
+    const int32_t first = k;
+    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) out.behind[k++] = pool_[i].cell;
+    out.span[c] = {first, k};
   }
 }
 

@@ -97,7 +97,8 @@ class PnLists {
   // Records "occluded is behind occluding" unless already recorded. A duplicate found
   // below the head is moved to the head, where the next, coherent query finds it at once.
   void add(int32_t occluding, int32_t occluded);
-  // The lists as MPVO extra relations (occluded = eligible neighbour of occluding).
+  // The lists as MPVO extra relations (occluded = eligible neighbour of occluding), in the
+  // sparse form (touching only the cells with a list).
   void to_relations(mpvo::ExtraRelations& out) const;
 
   int64_t relations() const { return static_cast<int64_t>(pool_.size()); }

@@ -19,14 +19,16 @@ std::vector<double> depths(const ABuffer& a, int64_t pixel) {
   return t;
 }
 
-// The PN relations as (occluding, occluded) pairs, from the CSR.
+// The PN relations as (occluding, occluded) pairs, by occluding cell, from the sparse form.
 std::vector<std::pair<int32_t, int32_t>> relations(const PnLists& pn, size_t cells) {
   vob::mpvo::ExtraRelations x;
   pn.to_relations(x);
+  EXPECT_TRUE(x.offsets.empty());
+  EXPECT_EQ(x.span.size(), cells);
   std::vector<std::pair<int32_t, int32_t>> r;
-  for (size_t c = 0; c < cells; ++c)
-    for (int32_t k = x.offsets[c]; k < x.offsets[c + 1]; ++k)
-      r.emplace_back(static_cast<int32_t>(c), x.behind[k]);
+  for (int32_t c : x.cells)
+    for (int32_t k = x.span[c].first; k < x.span[c].second; ++k) r.emplace_back(c, x.behind[k]);
+  std::stable_sort(r.begin(), r.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   return r;
 }
 
@@ -145,7 +147,9 @@ TEST(PnLists, NoDuplicatesAndMoveToFront) {
   EXPECT_EQ(relations(pn, 4), (std::vector<std::pair<int32_t, int32_t>>{{0, 1}, {0, 2}, {3, 1}}));
   vob::mpvo::ExtraRelations x;
   pn.to_relations(x);
-  EXPECT_EQ(x.not_sink, (std::vector<uint8_t>{0, 1, 1, 0}));
+  std::vector<int32_t> occluded = x.behind;  // the cells that are no sinks
+  std::sort(occluded.begin(), occluded.end());
+  EXPECT_EQ(occluded, (std::vector<int32_t>{1, 1, 2}));
   pn.reset(4);  // a new frame forgets the old lists
   EXPECT_EQ(pn.relations(), 0);
   EXPECT_TRUE(relations(pn, 4).empty());
