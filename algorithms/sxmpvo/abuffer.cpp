@@ -14,10 +14,9 @@ void ABuffer::reset(int64_t pixels) {
   head_insertions_ = walk_steps_ = 0;
 }
 
-void ABuffer::finish() {
+void ABuffer::gather() {
   // Counting sort by pixel, stable, straight into the lists (each entry's rank parked in its
-  // `next` until the links are made: one scatter of 16-byte entries, no scratch copy); then
-  // each pixel's entries by rank (short lists).
+  // `next` until the links are made: one scatter of 16-byte entries, no scratch copy).
   std::fill(offsets_.begin(), offsets_.end(), 0);
   each_raw([&](const Raw& r) { ++offsets_[r.pixel + 1]; });
   for (int64_t p = 0; p < pixels_; ++p) offsets_[p + 1] += offsets_[p];
@@ -26,11 +25,15 @@ void ABuffer::finish() {
   cursor.assign(offsets_.begin(), offsets_.end() - 1);
   PixEntry* list = list_.data();
   each_raw([&](const Raw& r) { list[cursor[r.pixel]++] = {r.t, r.item, r.rank}; });
-  // Per pixel, in rank order, insertion one entry at a time into increasing t, behind every
-  // entry not farther than itself (the mirror of "in front of every entry farther than
-  // itself" in a decreasing list); then reversed. A new entry passes the entries farther
-  // than it.
-  for (int64_t p = 0; p < pixels_; ++p) {
+}
+
+void ABuffer::order(int64_t p0, int64_t p1) {
+  PixEntry* list = list_.data();
+  // Per pixel, by rank (short lists); then, in rank order, insertion one entry at a time
+  // into increasing t, behind every entry not farther than itself (the mirror of "in front
+  // of every entry farther than itself" in a decreasing list); then reversed. A new entry
+  // passes the entries farther than it.
+  for (int64_t p = p0; p < p1; ++p) {
     const int32_t b = offsets_[p], e = offsets_[p + 1];
     if (b == e) continue;
     PixEntry* in = list + b;
