@@ -60,6 +60,31 @@ inline bool owns_zero(const SampleFrame& fr, const TinyEdge& e) {
 inline bool lex_less_flat(const Vec3& a, const Vec3& b) {
   return (a.x < b.x) | ((a.x == b.x) & ((a.y < b.y) | ((a.y == b.y) & (a.z < b.z))));
 }
+
+// Which samples of `box` the edges e cover, written to hit as (row - y0) << 6 | (col - x0),
+// without a jump on the answer (about half the box is out, at random): each sample is
+// written and the count steps by the answer. A zero edge value (rare) takes the top-left
+// rule's slow test. In perspective c is a signed zero, and c + m . X decides as m . X does.
+template <bool kOrtho>
+int covered(const SampleFrame& fr, const TinyEdge* e, const SampleRect& box, int16_t* hit) {
+  int hits = 0;
+  for (int sy = box.y0; sy <= box.y1; ++sy) {
+    const Vec3 row = fr.row_term(sy);
+    for (int sx = box.x0; sx <= box.x1; ++sx) {
+      const Vec3 x = row + fr.col_term(sx);
+      double v[3];
+      for (int i = 0; i < 3; ++i) v[i] = kOrtho ? e[i].c + dot(e[i].m, x) : dot(e[i].m, x);
+      const bool out = (v[0] < 0) | (v[1] < 0) | (v[2] < 0);
+      bool in = !out;
+      if (((v[0] == 0) | (v[1] == 0) | (v[2] == 0)) & in) [[unlikely]]
+        in = (v[0] != 0 || owns_zero(fr, e[0])) && (v[1] != 0 || owns_zero(fr, e[1])) &&
+             (v[2] != 0 || owns_zero(fr, e[2]));
+      hit[hits] = static_cast<int16_t>((sy - box.y0) << 6 | (sx - box.x0));  // both < 64
+      hits += in;
+    }
+  }
+  return hits;
+}
 }  // namespace detail
 
 template <class Emit>
@@ -97,26 +122,8 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
     const double s = fwd ? facing : -facing;
     e[i] = {m * s, c * s};
   }
-  // First which samples are covered, without a jump on the answer (about half the box is
-  // out, at random): each sample's index is written and the count steps by the answer.
-  // A zero edge value (rare) takes the top-left rule's slow test.
   int16_t hit[kTinyMaxSamples];
-  int hits = 0;
-  for (int sy = box.y0; sy <= box.y1; ++sy) {
-    const Vec3 row = fr.row_term(sy);
-    for (int sx = box.x0; sx <= box.x1; ++sx) {
-      const Vec3 x = row + fr.col_term(sx);
-      const double a = e[0].c + dot(e[0].m, x), b = e[1].c + dot(e[1].m, x),
-                   c = e[2].c + dot(e[2].m, x);
-      const bool out = (a < 0) | (b < 0) | (c < 0);
-      bool in = !out;
-      if (((a == 0) | (b == 0) | (c == 0)) & in) [[unlikely]]
-        in = (a != 0 || detail::owns_zero(fr, e[0])) && (b != 0 || detail::owns_zero(fr, e[1])) &&
-             (c != 0 || detail::owns_zero(fr, e[2]));
-      hit[hits] = static_cast<int16_t>((sy - box.y0) << 6 | (sx - box.x0));  // both < 64
-      hits += in;
-    }
-  }
+  const int hits = ortho ? detail::covered<true>(fr, e, box, hit) : detail::covered<false>(fr, e, box, hit);
   for (int j = 0; j < hits; ++j) {
     const int sy = box.y0 + (hit[j] >> 6), sx = box.x0 + (hit[j] & 63);
     const Vec3 x = fr.row_term(sy) + fr.col_term(sx);
