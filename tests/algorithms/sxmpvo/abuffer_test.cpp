@@ -93,9 +93,9 @@ TEST(ABuffer, ReplaysArrivalsByRank) {
   EXPECT_EQ(shuffled.walk_steps(), by_rank.walk_steps());
 }
 
-// Lists of 0 to 45 entries (short and long paths), depths with ties, recorded in shuffled
-// batches: the same lists and counts as the paper's linked-list insertion, done naively.
-TEST(ABuffer, ShortAndLongListsMatchLinkedListInsertion) {
+// Lists of 0 to 45 entries, depths with ties, recorded in shuffled batches and ordered in
+// two pixel ranges: the same lists and counts as the paper's linked-list insertion, naively.
+TEST(ABuffer, ListsMatchLinkedListInsertion) {
   std::mt19937 rng(3);
   const int64_t pixels = 46;
   std::vector<ABuffer::Raw> all;
@@ -121,7 +121,9 @@ TEST(ABuffer, ShortAndLongListsMatchLinkedListInsertion) {
   a.reset(pixels);
   a.append(b2);
   a.append(b1);
-  a.finish();
+  a.gather();  // as SXMPVO does: lists ordered a range of pixels at a time
+  a.order(0, 17);
+  a.order(17, pixels);
   for (int64_t p = 0; p < pixels; ++p) {
     std::vector<std::pair<double, int32_t>> got;
     for (int32_t i = a.head(p); i >= 0; i = a.entry(i).next) got.emplace_back(a.entry(i).t, a.entry(i).item);
