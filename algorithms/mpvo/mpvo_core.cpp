@@ -46,11 +46,13 @@ void ExtraRelations::clear() {
   offsets.clear();
   behind.clear();
   not_sink.clear();
+  cells.clear();
 }
 
 size_t ExtraRelations::bytes() const {
   return offsets.capacity() * sizeof(int32_t) + behind.capacity() * sizeof(int32_t) +
-         not_sink.capacity();
+         not_sink.capacity() + cells.capacity() * sizeof(int32_t) +
+         span.capacity() * sizeof(span[0]);
 }
 
 void MpvoCore::prepare(const Scene& scene, PhaseClock& clock, RenumberOption renumber) {
@@ -197,12 +199,22 @@ void MpvoCore::begin_dfs(Ordering& out, const ExtraRelations* extra) {
     throw std::invalid_argument("ExtraRelations: offsets must have cells+1 entries");
   if (extra && !extra->not_sink.empty() && extra->not_sink.size() != n)
     throw std::invalid_argument("ExtraRelations: not_sink must have one entry per cell");
+  if (extra && extra->sparse() && extra->span.size() != n)
+    throw std::invalid_argument("ExtraRelations: span must have one entry per cell");
   extra_ = extra;
   if (extra && !extra->offsets.empty()) {
     const int32_t* off = extra->offsets.data();
     for (size_t c = 0; c < n; ++c) state_[c] = off[c + 1] != off[c] ? kHasExtra : kNew;
   } else {
     std::fill(state_.begin(), state_.end(), kNew);
+  }
+  if (extra && !extra->not_sink.empty()) {
+    const uint8_t* ns = extra->not_sink.data();
+    for (size_t c = 0; c < n; ++c) state_[c] |= ns[c] ? kNotSink : 0;
+  }
+  if (extra && extra->sparse()) {  // touches only the cells named
+    for (int32_t c : extra->cells) state_[c] |= kHasExtra;
+    for (int32_t c : extra->behind) state_[c] |= kNotSink;
   }
   out.order.clear();
   out.order.reserve(n);
@@ -230,6 +242,7 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
   const int32_t* nbr = neighbour_.data();
   const uint8_t* behind = behind_mask_.data();
   const int32_t* xoff = kExtra ? extra_->offsets.data() : nullptr;
+  const std::pair<int32_t, int32_t>* xspan = kExtra && !xoff ? extra_->span.data() : nullptr;
   const int32_t* xbehind = kExtra ? extra_->behind.data() : nullptr;
   // With extra relations the state carries kHasExtra: step it by increments.
   auto advance = [&](int32_t cell, uint8_t to) {
@@ -262,9 +275,10 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
       if (child < 0) next = kExtraSlot;
     }
     if (kExtra && child < 0 && (state_[c] & kHasExtra)) {
-      const int32_t count = xoff[c + 1] - xoff[c];
+      const int32_t first = xspan ? xspan[c].first : xoff[c];
+      const int32_t count = (xspan ? xspan[c].second : xoff[c + 1]) - first;
       while (next - kExtraSlot < count) {
-        const int32_t nb = xbehind[xoff[c] + (next++ - kExtraSlot)];
+        const int32_t nb = xbehind[first + (next++ - kExtraSlot)];
         const uint8_t st = state_[nb] & kStateMask;
         if (st == kNew) {
           child = nb;
@@ -287,7 +301,7 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
 
 bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
   if ((state_[root] & kStateMask) != kNew) return false;
-  if (extra_ && !extra_->offsets.empty())
+  if (extra_ && (!extra_->offsets.empty() || extra_->sparse()))
     dfs_walk<true>(root, out);
   else
     dfs_walk<false>(root, out);

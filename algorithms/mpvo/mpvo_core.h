@@ -56,6 +56,14 @@ struct ExtraRelations {
   std::vector<int32_t> offsets;   // cells+1 entries, or empty for none
   std::vector<int32_t> behind;
   std::vector<uint8_t> not_sink;  // one per cell, or empty for none
+  // The sparse form, for relations on few cells (SXMPVO's, a frame at a time), where the
+  // dense arrays would cost passes over every cell: with `offsets` empty, each cell c of
+  // `cells` has behind[span[c].first, span[c].second), no other cell has any (their span
+  // entries are never read, so span needs no clearing between frames), and every cell in
+  // `behind` is no sink. span has one entry per cell.
+  std::vector<int32_t> cells;
+  std::vector<std::pair<int32_t, int32_t>> span;
+  bool sparse() const { return offsets.empty() && !cells.empty(); }
 
   // Builds the CSR and the not_sink flags from (front, behind) pairs; each pair means
   // `behind` must be drawn before `front`. Ids must be in [0, cells).
@@ -136,10 +144,8 @@ class MpvoCore {
   // Starts a traversal writing into out.order / out.cycles. `extra` (may be null) must
   // stay alive and unchanged until the traversal's last dfs_* call.
   void begin_dfs(Ordering& out, const ExtraRelations* extra = nullptr);
-  // Sink: no outbound arrow and not marked not_sink by the extra relations.
-  bool is_sink(int32_t c) const {
-    return outbound_[c] == 0 && !(extra_ && !extra_->not_sink.empty() && extra_->not_sink[c]);
-  }
+  // Sink: no outbound arrow and not marked not_sink by the extra relations (after begin_dfs).
+  bool is_sink(int32_t c) const { return outbound_[c] == 0 && !(state_[c] & kNotSink); }
   bool visited(int32_t c) const { return (state_[c] & kStateMask) != kNew; }
   // DFS from `root` unless it was already visited; returns whether a search started.
   bool dfs_from(int32_t root, Ordering& out);
@@ -164,8 +170,9 @@ class MpvoCore {
  private:
   // A cell's DFS state (kNew -> kOnStack -> kDone, by increments) and, in bit 2, whether
   // it has extra relations: most cells have none, and the flag, read with the state, spares
-  // the DFS a look at the extra offsets of every cell (a cache miss in 4 bytes a cell).
-  enum : uint8_t { kNew = 0, kOnStack = 1, kDone = 2, kStateMask = 3, kHasExtra = 4 };
+  // the DFS a look at the extra offsets of every cell (a cache miss in 4 bytes a cell); in
+  // bit 3, whether an extra relation puts something in front of it (no sink).
+  enum : uint8_t { kNew = 0, kOnStack = 1, kDone = 2, kStateMask = 3, kHasExtra = 4, kNotSink = 8 };
   static constexpr int32_t kExtraSlot = 8;  // slots 0..7 are faces, then extra relations
   struct Frame {
     int32_t cell;
@@ -200,7 +207,7 @@ class MpvoCore {
   bool plain_double_ = false;
 
   const ExtraRelations* extra_ = nullptr;
-  std::vector<uint8_t> state_;  // kNew / kOnStack / kDone, | kHasExtra
+  std::vector<uint8_t> state_;  // kNew / kOnStack / kDone, | kHasExtra | kNotSink
   std::vector<Frame> stack_;
   int64_t sinks_ = 0, cycle_roots_ = 0;
 };

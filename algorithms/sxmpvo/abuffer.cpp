@@ -14,10 +14,9 @@ void ABuffer::reset(int64_t pixels) {
   head_insertions_ = walk_steps_ = 0;
 }
 
-void ABuffer::finish() {
+void ABuffer::gather() {
   // Counting sort by pixel, stable, straight into the lists (each entry's rank parked in its
-  // `next` until the links are made: one scatter of 16-byte entries, no scratch copy); then
-  // each pixel's entries by rank (short lists).
+  // `next` until the links are made: one scatter of 16-byte entries, no scratch copy).
   std::fill(offsets_.begin(), offsets_.end(), 0);
   each_raw([&](const Raw& r) { ++offsets_[r.pixel + 1]; });
   for (int64_t p = 0; p < pixels_; ++p) offsets_[p + 1] += offsets_[p];
@@ -26,11 +25,15 @@ void ABuffer::finish() {
   cursor.assign(offsets_.begin(), offsets_.end() - 1);
   PixEntry* list = list_.data();
   each_raw([&](const Raw& r) { list[cursor[r.pixel]++] = {r.t, r.item, r.rank}; });
-  // Per pixel, in rank order, insertion one entry at a time into increasing t, behind every
-  // entry not farther than itself (the mirror of "in front of every entry farther than
-  // itself" in a decreasing list); then reversed. A new entry passes the entries farther
-  // than it.
-  for (int64_t p = 0; p < pixels_; ++p) {
+}
+
+void ABuffer::order(int64_t p0, int64_t p1) {
+  PixEntry* list = list_.data();
+  // Per pixel, by rank (short lists); then, in rank order, insertion one entry at a time
+  // into increasing t, behind every entry not farther than itself (the mirror of "in front
+  // of every entry farther than itself" in a decreasing list); then reversed. A new entry
+  // passes the entries farther than it.
+  for (int64_t p = p0; p < p1; ++p) {
     const int32_t b = offsets_[p], e = offsets_[p + 1];
     if (b == e) continue;
     PixEntry* in = list + b;
@@ -91,19 +94,17 @@ void PnLists::add(int32_t occluding, int32_t occluded) {
 }
 
 void PnLists::to_relations(mpvo::ExtraRelations& out) const {
-  const size_t n = head_.size();
-  out.offsets.assign(n + 1, 0);
-  out.not_sink.assign(n, 0);
+  // The sparse form: only the cells with a list are touched, not every cell of the mesh.
+  out.offsets.clear();
+  out.not_sink.clear();
+  if (out.span.size() != head_.size()) out.span.assign(head_.size(), {0, 0});
+  out.cells = touched_;
   out.behind.resize(pool_.size());
-  for (int32_t c : touched_)
-    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) ++out.offsets[c + 1];
-  for (size_t c = 0; c < n; ++c) out.offsets[c + 1] += out.offsets[c];
+  int32_t k = 0;
   for (int32_t c : touched_) {
-    int32_t k = out.offsets[c];
-    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) {
-      out.behind[k++] = pool_[i].cell;
-      out.not_sink[pool_[i].cell] = 1;  // an occluded PN is no sink
-    }
+    const int32_t first = k;
+    for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) out.behind[k++] = pool_[i].cell;
+    out.span[c] = {first, k};
   }
 }
 

@@ -54,7 +54,14 @@ class ABuffer {
   // Builds the lists: per pixel, the entries by increasing rank inserted one by one so that
   // the list stays in decreasing t; an entry at least as far as the head becomes the head
   // (a head insertion), otherwise it goes behind every entry farther than itself.
-  void finish();
+  // finish() = gather() and order(0, pixels()): a caller may order pixel ranges one at a
+  // time and use each while its lists are in cache.
+  void finish() {
+    gather();
+    order(0, pixels_);
+  }
+  void gather();                    // every entry into its pixel's list, by rank
+  void order(int64_t p0, int64_t p1);  // the lists of pixels [p0, p1) after gather()
   int64_t pixels() const { return pixels_; }
   // First (farthest) entry of a pixel's list, or -1; entries link to the next nearer one.
   int32_t head(int64_t pixel) const {
@@ -97,7 +104,8 @@ class PnLists {
   // Records "occluded is behind occluding" unless already recorded. A duplicate found
   // below the head is moved to the head, where the next, coherent query finds it at once.
   void add(int32_t occluding, int32_t occluded);
-  // The lists as MPVO extra relations (occluded = eligible neighbour of occluding).
+  // The lists as MPVO extra relations (occluded = eligible neighbour of occluding), in the
+  // sparse form (touching only the cells with a list).
   void to_relations(mpvo::ExtraRelations& out) const;
 
   int64_t relations() const { return static_cast<int64_t>(pool_.size()); }

@@ -180,12 +180,17 @@ class SxmpvoOrderer final : public Orderer {
       tiny_[r] = tiny;
     });
     for (const auto& batch : batches_) abuf_.append(batch);
-    abuf_.finish();
+    abuf_.gather();
     const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
     pn_.reset(core_.num_cells());
     const int64_t pixels = abuf_.pixels();
-    for (int64_t p = 0; p < pixels; ++p)
-      if (abuf_.head(p) >= 0) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
+    // Lists ordered and paired a few rows at a time, while they are in cache.
+    for (int64_t p0 = 0, step = 8 * int64_t(cols); p0 < pixels; p0 += step) {
+      const int64_t p1 = std::min(pixels, p0 + step);
+      abuf_.order(p0, p1);
+      for (int64_t p = p0; p < p1; ++p)
+        if (abuf_.head(p) >= 0) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
+    }
     pn_.to_relations(extra_);
   }
 

@@ -17,6 +17,7 @@
 // (tests/algorithms/sxmpvo/tiny_faces_test.cpp).
 #pragma once
 #include <cmath>
+#include <cstdint>
 
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
@@ -55,6 +56,35 @@ inline bool owns_zero(const SampleFrame& fr, const TinyEdge& e) {
   const double a = dot(e.m, fr.affine_dx()), b = dot(e.m, fr.affine_dy());
   return a > 0 || (a == 0 && (b < 0 || (b == 0 && dot(e.m, fr.forward()) > 0)));
 }
+// lex_less without branches: its outcome is a coin toss per edge, a mispredicted jump.
+inline bool lex_less_flat(const Vec3& a, const Vec3& b) {
+  return (a.x < b.x) | ((a.x == b.x) & ((a.y < b.y) | ((a.y == b.y) & (a.z < b.z))));
+}
+
+// Which samples of `box` the edges e cover, written to hit as (row - y0) << 6 | (col - x0),
+// without a jump on the answer (about half the box is out, at random): each sample is
+// written and the count steps by the answer. A zero edge value (rare) takes the top-left
+// rule's slow test. In perspective c is a signed zero, and c + m . X decides as m . X does.
+template <bool kOrtho>
+int covered(const SampleFrame& fr, const TinyEdge* e, const SampleRect& box, int16_t* hit) {
+  int hits = 0;
+  for (int sy = box.y0; sy <= box.y1; ++sy) {
+    const Vec3 row = fr.row_term(sy);
+    for (int sx = box.x0; sx <= box.x1; ++sx) {
+      const Vec3 x = row + fr.col_term(sx);
+      double v[3];
+      for (int i = 0; i < 3; ++i) v[i] = kOrtho ? e[i].c + dot(e[i].m, x) : dot(e[i].m, x);
+      const bool out = (v[0] < 0) | (v[1] < 0) | (v[2] < 0);
+      bool in = !out;
+      if (((v[0] == 0) | (v[1] == 0) | (v[2] == 0)) & in) [[unlikely]]
+        in = (v[0] != 0 || owns_zero(fr, e[0])) && (v[1] != 0 || owns_zero(fr, e[1])) &&
+             (v[2] != 0 || owns_zero(fr, e[2]));
+      hit[hits] = static_cast<int16_t>((sy - box.y0) << 6 | (sx - box.x0));  // both < 64
+      hits += in;
+    }
+  }
+  return hits;
+}
 }  // namespace detail
 
 template <class Emit>
@@ -77,9 +107,9 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
   const double facing = -phase1_sign;
   detail::TinyEdge e[3];
   for (int i = 0; i < 3; ++i) {
-    const Vec3 &pi = v[i], &pj = v[(i + 1) % 3];
-    const bool fwd = lex_less(pi, pj);
-    const Vec3 &pa = fwd ? pi : pj, &pb = fwd ? pj : pi;
+    const Vec3* ends[2] = {&v[(i + 1) % 3], &v[i]};  // fwd: pa = v[i]
+    const bool fwd = detail::lex_less_flat(v[i], v[(i + 1) % 3]);
+    const Vec3 &pa = *ends[fwd], &pb = *ends[!fwd];
     Vec3 m;
     double c = 0;
     if (ortho) {
@@ -92,22 +122,13 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
     const double s = fwd ? facing : -facing;
     e[i] = {m * s, c * s};
   }
-  for (int sy = box.y0; sy <= box.y1; ++sy) {
-    const Vec3 row = fr.row_term(sy);
-    for (int sx = box.x0; sx <= box.x1; ++sx) {
-      const Vec3 x = row + fr.col_term(sx);
-      bool in = true;
-      for (const detail::TinyEdge& edge : e) {
-        const double val = edge.c + dot(edge.m, x);
-        if (val < 0 || (val == 0 && !detail::owns_zero(fr, edge))) {
-          in = false;
-          break;
-        }
-      }
-      if (!in) continue;
-      const double t = ortho ? -(dot(n, x) + d) * inv_nf : num / dot(n, x) * length(x);
-      if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
-    }
+  int16_t hit[kTinyMaxSamples];
+  const int hits = ortho ? detail::covered<true>(fr, e, box, hit) : detail::covered<false>(fr, e, box, hit);
+  for (int j = 0; j < hits; ++j) {
+    const int sy = box.y0 + (hit[j] >> 6), sx = box.x0 + (hit[j] & 63);
+    const Vec3 x = fr.row_term(sy) + fr.col_term(sx);
+    const double t = ortho ? -(dot(n, x) + d) * inv_nf : num / dot(n, x) * length(x);
+    if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
   }
 }
 

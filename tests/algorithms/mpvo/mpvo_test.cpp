@@ -86,6 +86,34 @@ TEST(MpvoCore, ExtraRelationsAreEligibleNeighboursAndCyclesAreBroken) {
   }
 }
 
+// The sparse form (SXMPVO's): the same traversal as the dense one; a second frame with
+// other relations reads no stale span entry of the first.
+TEST(MpvoCore, SparseExtraRelations) {
+  Scene s = Scene::from_mesh("loose", two_loose_tets());
+  mpvo::MpvoCore core;
+  core.bind(s);
+  core.create_partial_order(fibonacci_view(s.bounds(), 1, 0));
+  mpvo::ExtraRelations x;
+  x.span.assign(2, {0, 0});
+  for (int32_t front : {0, 1}) {
+    x.cells = {front};
+    x.behind = {1 - front};
+    x.span[front] = {0, 1};
+    Ordering o;
+    core.begin_dfs(o, &x);
+    EXPECT_FALSE(core.is_sink(1 - front));
+    EXPECT_TRUE(core.is_sink(front));
+    core.dfs_sinks(o);
+    core.dfs_unvisited(o);
+    core.add_counters(o);
+    EXPECT_EQ(o.order, (std::vector<int32_t>{1 - front, front}));
+    EXPECT_EQ(o.counters["sink_cells"], 1);
+  }
+  x.span.resize(1);
+  Ordering o;
+  EXPECT_THROW(core.begin_dfs(o, &x), std::invalid_argument);
+}
+
 TEST(MpvoCore, EyeOnFacePlanesGetsExactZeroSigns) {
   // Integer grid: the eye lies exactly in the planes x = 1 and y = z of some faces.
   Scene s = Scene::from_mesh("block", tet_block(3, 3, 3));

@@ -3,6 +3,9 @@
 
 #include "algorithms/sxmpvo/abuffer.h"
 
+#include <algorithm>
+#include <random>
+
 using namespace vob::sxmpvo;
 
 namespace {
@@ -16,14 +19,16 @@ std::vector<double> depths(const ABuffer& a, int64_t pixel) {
   return t;
 }
 
-// The PN relations as (occluding, occluded) pairs, from the CSR.
+// The PN relations as (occluding, occluded) pairs, by occluding cell, from the sparse form.
 std::vector<std::pair<int32_t, int32_t>> relations(const PnLists& pn, size_t cells) {
   vob::mpvo::ExtraRelations x;
   pn.to_relations(x);
+  EXPECT_TRUE(x.offsets.empty());
+  EXPECT_EQ(x.span.size(), cells);
   std::vector<std::pair<int32_t, int32_t>> r;
-  for (size_t c = 0; c < cells; ++c)
-    for (int32_t k = x.offsets[c]; k < x.offsets[c + 1]; ++k)
-      r.emplace_back(static_cast<int32_t>(c), x.behind[k]);
+  for (int32_t c : x.cells)
+    for (int32_t k = x.span[c].first; k < x.span[c].second; ++k) r.emplace_back(c, x.behind[k]);
+  std::stable_sort(r.begin(), r.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   return r;
 }
 
@@ -88,6 +93,47 @@ TEST(ABuffer, ReplaysArrivalsByRank) {
   EXPECT_EQ(shuffled.walk_steps(), by_rank.walk_steps());
 }
 
+// Lists of 0 to 45 entries, depths with ties, recorded in shuffled batches and ordered in
+// two pixel ranges: the same lists and counts as the paper's linked-list insertion, naively.
+TEST(ABuffer, ListsMatchLinkedListInsertion) {
+  std::mt19937 rng(3);
+  const int64_t pixels = 46;
+  std::vector<ABuffer::Raw> all;
+  for (int64_t p = 0; p < pixels; ++p)
+    for (int64_t i = 0; i < p; ++i)
+      all.push_back({double(rng() % 12), back(int32_t(i)), int32_t(p), 0});
+  std::shuffle(all.begin(), all.end(), rng);  // arrival order
+  for (size_t r = 0; r < all.size(); ++r) all[r].rank = int32_t(r);
+  std::vector<std::vector<std::pair<double, int32_t>>> naive(pixels);  // far to near
+  int64_t heads = 0, walks = 0;
+  for (const ABuffer::Raw& r : all) {
+    auto& l = naive[r.pixel];
+    size_t j = 0;
+    while (j < l.size() && l[j].first > r.t) ++j;  // behind every entry farther than itself
+    heads += j == 0;
+    walks += int64_t(j);
+    l.insert(l.begin() + j, {r.t, r.item});
+  }
+  std::shuffle(all.begin(), all.end(), rng);  // recorded in any order
+  const std::vector<ABuffer::Raw> b1(all.begin(), all.begin() + all.size() / 3),
+      b2(all.begin() + all.size() / 3, all.end());
+  ABuffer a;
+  a.reset(pixels);
+  a.append(b2);
+  a.append(b1);
+  a.gather();  // as SXMPVO does: lists ordered a range of pixels at a time
+  a.order(0, 17);
+  a.order(17, pixels);
+  for (int64_t p = 0; p < pixels; ++p) {
+    std::vector<std::pair<double, int32_t>> got;
+    for (int32_t i = a.head(p); i >= 0; i = a.entry(i).next) got.emplace_back(a.entry(i).t, a.entry(i).item);
+    EXPECT_EQ(got, naive[p]) << "pixel " << p;
+  }
+  EXPECT_EQ(a.head_insertions(), heads);
+  EXPECT_EQ(a.walk_steps(), walks);
+  EXPECT_GT(walks, 1000);
+}
+
 TEST(PnLists, NoDuplicatesAndMoveToFront) {
   PnLists pn;
   pn.reset(4);
@@ -103,7 +149,9 @@ TEST(PnLists, NoDuplicatesAndMoveToFront) {
   EXPECT_EQ(relations(pn, 4), (std::vector<std::pair<int32_t, int32_t>>{{0, 1}, {0, 2}, {3, 1}}));
   vob::mpvo::ExtraRelations x;
   pn.to_relations(x);
-  EXPECT_EQ(x.not_sink, (std::vector<uint8_t>{0, 1, 1, 0}));
+  std::vector<int32_t> occluded = x.behind;  // the cells that are no sinks
+  std::sort(occluded.begin(), occluded.end());
+  EXPECT_EQ(occluded, (std::vector<int32_t>{1, 1, 2}));
   pn.reset(4);  // a new frame forgets the old lists
   EXPECT_EQ(pn.relations(), 0);
   EXPECT_TRUE(relations(pn, 4).empty());
