@@ -154,7 +154,41 @@ bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
   pre_mask_ = (uint32_t(1) << top) - 1;
   const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
   counts_.assign(2 * nchunks * (size_t(pre_mask_) + 1), 0);
+  if (nblocks_ == 1) room_.assign(size_t(pre_mask_) + 2, 0);  // the sample's counts
   return pre_ = true;
+}
+
+void RadixArgsort::plan_room() {
+  // A bucket's count is about kSample times its sample's; runs of neighbouring cells make
+  // the estimate err by a few runs, so a quarter more and kSlack more (too little: the key
+  // pass starts over, costing time, not order).
+  constexpr uint32_t kSlack = 16 * kSample;
+  const size_t radix = size_t(pre_mask_) + 1;
+  const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
+  slot_.resize(radix);
+  uint32_t sum = 0;
+  for (size_t d = 0; d < radix; ++d) {
+    const uint32_t c = room_[d];
+    room_[d] = slot_[d] = sum;
+    sum += c * kSample + c * kSample / 4 + kSlack;
+  }
+  room_[radix] = sum;
+  pairs_.reserve(sum);
+  ends_.resize(nchunks * radix);
+}
+
+void RadixArgsort::sort_rooms(int32_t* out) {
+  const size_t radix = size_t(pre_mask_) + 1;
+  const size_t nc = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
+  passes_ = 3;
+  used_pre_ = true;
+  thread_local std::vector<uint64_t> tmp;
+  size_t at = 0;
+  for (size_t d = 0; d < radix; ++d) {
+    const size_t m = slot_[d] - room_[d];
+    sort_bucket(pairs_.data(), room_[d], m, ends_.data() + d, radix, nc, pre_shift_, out + at, tmp);
+    at += m;
+  }
 }
 
 void RadixArgsort::sort_keys(int32_t* out) {
@@ -162,6 +196,10 @@ void RadixArgsort::sort_keys(int32_t* out) {
   passes_ = 0;
   used_pre_ = false;
   if (n == 0) return;
+  if (fused_) {
+    sort_rooms(out);
+    return;
+  }
   const uint32_t mn = *std::min_element(block_min_.begin(), block_min_.end());
   const uint32_t mx = *std::max_element(block_max_.begin(), block_max_.end());
   if (pre_ && mn >= pre_lo_ && mx <= pre_hi_) {  // every key inside the guess: its counts hold
