@@ -64,7 +64,11 @@ class RadixArgsort {
     if (pre && nblocks_ == 1) {
       for (size_t i = 0; i < n; i += kSample) ++room_[((key_of(i) - pre_lo_) >> pre_shift_) & pre_mask_];
       plan_room();
-      if ((fused_ = scatter_keys(n, key_of))) return;
+      // Keys a run at a time into L1 (a plain loop the compiler vectorises), then scattered.
+      const auto keys_of = [&](size_t i0, size_t i1, uint32_t* k) {
+        for (size_t i = i0; i < i1; ++i) k[i] = key_of(i);
+      };
+      if ((fused_ = scatter_keys(n, keys_of))) return;
     }
     const int shift = pre_shift_;
     const uint32_t mask = pre_mask_, base = pre_lo_;
@@ -126,6 +130,7 @@ class RadixArgsort {
   // From the guessed range [lo, hi]: whether the key pass counts the top digit (then
   // counts_ is zeroed and pre_* set).
   bool plan_counts(uint32_t lo, uint32_t hi);
+  static constexpr size_t kRun = 256;     // keys made at a time by the fused key pass
   static constexpr size_t kSample = 32;  // the fused key pass sizes its buckets from every 32nd key
   // From the sampled counts in room_: each bucket's room (room_[d], room_[d + 1]) in pairs_
   // (an estimate with slack) and slot_ = each room's start.
@@ -135,21 +140,26 @@ class RadixArgsort {
   // The fused key pass: each key's word (low bits << 16 | id within its chunk) into its
   // bucket's room; after each chunk its slots go to ends_ (each segment's end). False if a
   // room was full or a key outside [pre_lo_, pre_hi_].
-  template <class KeyOf>
-  bool scatter_keys(size_t n, KeyOf& key_of) {
+  template <class KeysOf>
+  bool scatter_keys(size_t n, KeysOf& keys_of) {
     const uint32_t base = pre_lo_, range = pre_hi_ - pre_lo_, low_mask = (uint32_t(1) << pre_shift_) - 1;
     const int shift = pre_shift_;
     const size_t radix = size_t(pre_mask_) + 1;
     uint32_t* w = pairs_.data();
     uint32_t* slot = slot_.data();
     const uint32_t* end = room_.data() + 1;
+    uint32_t run[kRun];
     for (size_t i0 = 0, j = 0; i0 < n; i0 += size_t(1) << kChunkBits, ++j) {
       const size_t i1 = std::min(n, i0 + (size_t(1) << kChunkBits));
-      for (size_t i = i0; i < i1; ++i) {
-        const uint32_t v = key_of(i) - base;
-        const uint32_t d = v >> shift;
-        if (v > range || slot[d] == end[d]) return false;
-        w[slot[d]++] = (v & low_mask) << 16 | static_cast<uint32_t>(i & 0xffffu);
+      for (size_t r0 = i0; r0 < i1; r0 += kRun) {
+        const size_t r1 = std::min(i1, r0 + kRun);
+        keys_of(r0, r1, run - r0);
+        for (size_t i = r0; i < r1; ++i) {
+          const uint32_t v = run[i - r0] - base;
+          const uint32_t d = v >> shift;
+          if (v > range || slot[d] == end[d]) return false;
+          w[slot[d]++] = (v & low_mask) << 16 | static_cast<uint32_t>(i & 0xffffu);
+        }
       }
       std::copy(slot, slot + radix, ends_.data() + j * radix);
     }
