@@ -160,17 +160,17 @@ bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
 
 void RadixArgsort::plan_room() {
   // A bucket's count is about kSample times its sample's; runs of neighbouring cells make
-  // the estimate err by a few runs, so a quarter more and kSlack more (too little: the key
-  // pass starts over, costing time, not order).
-  constexpr uint32_t kSlack = 16 * kSample;
+  // the estimate err by a few runs, so a quarter more, two samples' worth and a quarter of
+  // an average bucket more (too little: the key pass starts over, costing time, not order).
   const size_t radix = size_t(pre_mask_) + 1;
   const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
   slot_.resize(radix);
+  const uint32_t slack = static_cast<uint32_t>(2 * kSample + n_ / (4 * radix));
   uint32_t sum = 0;
   for (size_t d = 0; d < radix; ++d) {
     const uint32_t c = room_[d];
     room_[d] = slot_[d] = sum;
-    sum += c * kSample + c * kSample / 4 + kSlack;
+    sum += c * kSample + c * kSample / 4 + slack;
   }
   room_[radix] = sum;
   pairs_.reserve(sum);

@@ -149,6 +149,8 @@ class RadixArgsort {
     uint32_t* slot = slot_.data();
     const uint32_t* end = room_.data() + 1;
     uint32_t run[kRun];
+    // (The slot kept in a register along runs of one bucket loses: on view 1 of the 1M helix
+    // 60% of neighbouring cells change bucket, and the branch mispredicts.)
     for (size_t i0 = 0, j = 0; i0 < n; i0 += size_t(1) << kChunkBits, ++j) {
       const size_t i1 = std::min(n, i0 + (size_t(1) << kChunkBits));
       for (size_t r0 = i0; r0 < i1; r0 += kRun) {

@@ -52,8 +52,8 @@ TEST(RadixKeyRange, GuessUsedOnlyWhenEveryKeyFallsInside) {
 }
 
 TEST(RadixKeyRange, SampleThatMisjudgesTheBucketsStartsOver) {
-  // Every 32nd key (the sample) is the lowest; the rest fill the top bucket, which the
-  // sample gave no room: the scatter overflows and the key pass starts over, counting.
+  // Every 32nd key (so every key of the sample, one in 32 or fewer) is the lowest; the rest
+  // fill the top bucket, which the sample gave no room: the scatter overflows and the key pass starts over, counting.
   const uint32_t base = 0x40000000u, span = (1u << 23) - 1;
   std::vector<uint32_t> keys(200000);
   for (size_t i = 0; i < keys.size(); ++i) keys[i] = i % 32 == 0 ? base : base + span - uint32_t(i % 1000);
