@@ -189,7 +189,7 @@ class RadixArgsort {
   bool pre_ = false, used_pre_ = false, fused_ = false;  // the key pass counted the top digit of (key - pre_lo_) >> pre_shift_
   uint32_t pre_lo_ = 0, pre_hi_ = 0, pre_mask_ = 0;
   int pre_bits_ = 0, pre_shift_ = 0;
-  HugeWords keys_, pairs_, pairs2_;  // pairs: (key << 32 | id), two words each
+  HugeWords keys_, pairs_, pairs2_;  // LSD: (key << 32 | id) pairs; two-level: one word per key, or the rooms
   std::vector<uint32_t> block_min_, block_max_;
   std::vector<uint32_t> counts_;  // nblocks (two-level: chunks x 2) x radix: counts, then next slots
   std::vector<uint32_t> bucket_start_;  // sort_two_level: each top-digit bucket's first slot
