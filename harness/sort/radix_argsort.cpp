@@ -66,11 +66,47 @@ void scatter(const uint32_t* k, const uint64_t* sp, uint64_t* dp, int32_t* out, 
   }
 }
 
-// Sorts one bucket of the two-level path by the low `low` (<= 16) bits of (key - mn),
+// Sorts the m pairs of one bucket (key << 32 | id, in id order within equal keys) by their
+// low `low` bits (<= kLowBits) of (key - mn), stably, in two passes, and writes their ids.
+void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* out, std::vector<uint64_t>& tmp) {
+  if (m < kSmallBucket) {
+    uint64_t a[kSmallBucket];
+    for (size_t i = 0; i < m; ++i) {  // stable insertion by key (the high word)
+      const uint64_t p = src[i];
+      size_t j = i;
+      for (; j > 0 && (a[j - 1] >> 32) > (p >> 32); --j) a[j] = a[j - 1];
+      a[j] = p;
+    }
+    for (size_t i = 0; i < m; ++i) out[i] = static_cast<int32_t>(static_cast<uint32_t>(a[i]));
+    return;
+  }
+  const int w0 = (low + 1) / 2;
+  const uint32_t m0 = (1u << w0) - 1, m1 = (1u << (low - w0)) - 1;
+  uint32_t c0[256] = {}, c1[256] = {};
+  for (size_t i = 0; i < m; ++i) {
+    const uint32_t x = static_cast<uint32_t>(src[i] >> 32) - mn;
+    ++c0[x & m0];
+    ++c1[(x >> w0) & m1];
+  }
+  uint32_t s0 = 0, s1 = 0;
+  for (uint32_t d = 0; d <= m0; ++d) {
+    const uint32_t a = c0[d], b = c1[d];
+    c0[d] = s0, c1[d] = s1;
+    s0 += a, s1 += b;
+  }
+  if (tmp.size() < m) tmp.resize(m);
+  for (size_t i = 0; i < m; ++i) tmp[c0[(static_cast<uint32_t>(src[i] >> 32) - mn) & m0]++] = src[i];
+  for (size_t i = 0; i < m; ++i) {
+    const uint64_t p = tmp[i];
+    out[c1[((static_cast<uint32_t>(p >> 32) - mn) >> w0) & m1]++] = static_cast<int32_t>(static_cast<uint32_t>(p));
+  }
+}
+
+// Sorts one room of the fused key pass by the low `low` (<= 16) bits of (key - mn),
 // stably, in two passes, and writes its ids to out[0..m). Its words (low key bits << 16 |
 // id & 0xffff) lie in segments by chunk of ids: chunk j's end at ends[j * stride] (the
 // first begins at `begin`); within a segment they are in id order.
-void sort_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t* ends, size_t stride,
+void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t* ends, size_t stride,
                  size_t nchunks, int low, int32_t* out, std::vector<uint64_t>& tmp) {
   // Each segment's words as (key bits << 32 | id) pairs, in id order.
   const auto each = [&](auto&& f) {
@@ -152,8 +188,7 @@ bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
   pre_lo_ = lo, pre_hi_ = hi, pre_bits_ = bits;
   pre_shift_ = bits - top;
   pre_mask_ = (uint32_t(1) << top) - 1;
-  const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
-  counts_.assign(2 * nchunks * (size_t(pre_mask_) + 1), 0);
+  counts_.assign(2 * nblocks_ * (size_t(pre_mask_) + 1), 0);
   if (nblocks_ == 1) room_.assign(size_t(pre_mask_) + 2, 0);  // the sample's counts
   return pre_ = true;
 }
@@ -186,7 +221,7 @@ void RadixArgsort::sort_rooms(int32_t* out) {
   size_t at = 0;
   for (size_t d = 0; d < radix; ++d) {
     const size_t m = slot_[d] - room_[d];
-    sort_bucket(pairs_.data(), room_[d], m, ends_.data() + d, radix, nc, pre_shift_, out + at, tmp);
+    sort_room_bucket(pairs_.data(), room_[d], m, ends_.data() + d, radix, nc, pre_shift_, out + at, tmp);
     at += m;
   }
 }
@@ -275,66 +310,49 @@ void RadixArgsort::sort_keys(int32_t* out) {
 
 void RadixArgsort::sort_two_level(int32_t* out, uint32_t mn, int bits, int top, bool counted) {
   const size_t n = n_;
-  const int shift = bits - top;  // the low bits, 10 to 16
+  const int shift = bits - top;
   const size_t radix = size_t(1) << top;
-  const uint32_t mask = static_cast<uint32_t>(radix - 1), low_mask = (uint32_t(1) << shift) - 1;
+  const uint32_t mask = static_cast<uint32_t>(radix - 1);
   passes_ = 3;  // one scatter through memory, two in cache
-  pairs_.reserve(n);
-  const size_t nc = (n + (size_t(1) << kChunkBits) - 1) >> kChunkBits, stride = 2 * radix;
+  pairs_.reserve(2 * n);
+  const size_t nb = nblocks_;
   const uint32_t* k = keys_.data();
-  // Per chunk of ids (blocks hold whole chunks): counts, then next slots, at counts_ + j * stride.
-  const auto chunks = [&](size_t lo, size_t hi, auto&& f) {
-    for (size_t i0 = lo; i0 < hi;) {
-      const size_t j = i0 >> kChunkBits, i1 = std::min(hi, (j + 1) << kChunkBits);
-      f(j, i0, i1, counts_.data() + j * stride);
-      i0 = i1;
-    }
-  };
   if (!counted) {
-    counts_.assign(nc * stride, 0);
-    for_blocks([&](size_t, size_t lo, size_t hi) {
-      chunks(lo, hi, [&](size_t, size_t i0, size_t i1, uint32_t* c) {
-        // Two counter sets (even and odd elements): neighbouring cells share a bucket.
-        uint32_t* c2 = c + radix;
-        size_t i = i0;
-        for (; i + 1 < i1; i += 2) {
-          ++c[((k[i] - mn) >> shift) & mask];
-          ++c2[((k[i + 1] - mn) >> shift) & mask];
-        }
-        if (i < i1) ++c[((k[i] - mn) >> shift) & mask];
-        for (size_t d = 0; d < radix; ++d) c[d] += c2[d];
-      });
+    counts_.assign(2 * nb * radix, 0);
+    for_blocks([&](size_t b, size_t lo, size_t hi) {
+      // Two counter sets (even and odd elements): neighbouring cells share a bucket.
+      uint32_t *c = counts_.data() + b * radix, *c2 = counts_.data() + (nb + b) * radix;
+      size_t i = lo;
+      for (; i + 1 < hi; i += 2) {
+        ++c[((k[i] - mn) >> shift) & mask];
+        ++c2[((k[i + 1] - mn) >> shift) & mask];
+      }
+      if (i < hi) ++c[((k[i] - mn) >> shift) & mask];
+      for (size_t d = 0; d < radix; ++d) c[d] += c2[d];
     });
   }
-  // Exclusive prefix over (bucket, chunk); a bucket starts at its chunk 0 slot.
+  // Exclusive prefix over (bucket, block); a bucket starts at its block 0 slot.
   bucket_start_.resize(radix + 1);
   uint32_t sum = 0;
   for (size_t d = 0; d < radix; ++d) {
     bucket_start_[d] = sum;
-    for (size_t j = 0; j < nc; ++j) {
-      const uint32_t c = counts_[j * stride + d];
-      counts_[j * stride + d] = sum;
+    for (size_t b = 0; b < nb; ++b) {
+      const uint32_t c = counts_[b * radix + d];
+      counts_[b * radix + d] = sum;
       sum += c;
     }
   }
   bucket_start_[radix] = sum;
-  uint32_t* w = pairs_.data();
-  for_blocks([&](size_t, size_t lo, size_t hi) {
-    chunks(lo, hi, [&](size_t, size_t i0, size_t i1, uint32_t* off) {
-      for (size_t i = i0; i < i1; ++i) {
-        const uint32_t x = k[i] - mn;
-        w[off[(x >> shift) & mask]++] = (x & low_mask) << 16 | static_cast<uint32_t>(i & 0xffffu);
-      }
-    });
+  uint64_t* dp = pairs(pairs_);
+  for_blocks([&](size_t b, size_t lo, size_t hi) {
+    scatter<true, false>(k, nullptr, dp, out, lo, hi, mn, shift, mask, counts_.data() + b * radix);
   });
-  // counts_ now holds each (chunk, bucket) segment's end.
   const auto buckets = [&](size_t d0, size_t d1) {
     thread_local std::vector<uint64_t> tmp;
     for (size_t d = d0; d < d1; ++d)
-      sort_bucket(w, bucket_start_[d], bucket_start_[d + 1] - bucket_start_[d], counts_.data() + d, stride, nc,
-                  shift, out + bucket_start_[d], tmp);
+      sort_bucket(dp + bucket_start_[d], bucket_start_[d + 1] - bucket_start_[d], mn, shift, out + bucket_start_[d], tmp);
   };
-  if (nblocks_ == 1) {
+  if (nb == 1) {
     buckets(0, radix);
     return;
   }

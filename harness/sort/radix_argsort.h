@@ -72,7 +72,7 @@ class RadixArgsort {
     }
     const int shift = pre_shift_;
     const uint32_t mask = pre_mask_, base = pre_lo_;
-    const size_t radix = size_t(mask) + 1;
+    const size_t radix = size_t(mask) + 1, nb = nblocks_;
     for_blocks([&](size_t b, size_t lo_i, size_t hi_i) {
       uint32_t* k = keys_.data();
       // The range as signed ints (x with its top bit flipped): SSE2 vectorises signed
@@ -87,20 +87,15 @@ class RadixArgsort {
         return x;
       };
       if (pre) {
-        // Per chunk of ids (blocks hold whole chunks); two counter sets (even and odd
-        // elements): neighbouring cells share a bucket.
-        for (size_t i0 = lo_i; i0 < hi_i;) {
-          const size_t j = i0 >> kChunkBits, i1 = std::min(hi_i, (j + 1) << kChunkBits);
-          uint32_t *c = counts_.data() + 2 * j * radix, *c2 = c + radix;
-          size_t i = i0;
-          for (; i + 1 < i1; i += 2) {
-            ++c[((one(i) - base) >> shift) & mask];
-            ++c2[((one(i + 1) - base) >> shift) & mask];
-          }
-          if (i < i1) ++c[((one(i) - base) >> shift) & mask];
-          for (size_t d = 0; d < radix; ++d) c[d] += c2[d];
-          i0 = i1;
+        // Two counter sets (even and odd elements): neighbouring cells share a bucket.
+        uint32_t *c = counts_.data() + b * radix, *c2 = counts_.data() + (nb + b) * radix;
+        size_t i = lo_i;
+        for (; i + 1 < hi_i; i += 2) {
+          ++c[((one(i) - base) >> shift) & mask];
+          ++c2[((one(i + 1) - base) >> shift) & mask];
         }
+        if (i < hi_i) ++c[((one(i) - base) >> shift) & mask];
+        for (size_t d = 0; d < radix; ++d) c[d] += c2[d];
       } else {
         for (size_t i = lo_i; i < hi_i; ++i) one(i);
       }
@@ -120,7 +115,7 @@ class RadixArgsort {
   }
 
  private:
-  // The two-level path's ids travel as 16 bits within a chunk of 2^16 ids, beside the
+  // The fused key pass's ids travel as 16 bits within a chunk of 2^16 ids, beside the
   // key's low (<= 16) bits: one 32-bit word per key through memory, not a 64-bit pair.
   static constexpr int kChunkBits = 16;
   void plan(size_t n);         // sizes the buffers, picks the blocks from the thread limit
@@ -179,19 +174,16 @@ class RadixArgsort {
       for (size_t b = r.begin(); b != r.end(); ++b) run(b);
     });
   }
-  // Blocks start on a chunk boundary: the two-level path counts and scatters per chunk.
-  size_t block_begin(size_t b) const {
-    return b >= nblocks_ ? n_ : (n_ * b / nblocks_) >> kChunkBits << kChunkBits;
-  }
+  size_t block_begin(size_t b) const { return n_ * b / nblocks_; }
 
   size_t n_ = 0, nblocks_ = 1;
   int passes_ = 0;
   bool pre_ = false, used_pre_ = false, fused_ = false;  // the key pass counted the top digit of (key - pre_lo_) >> pre_shift_
   uint32_t pre_lo_ = 0, pre_hi_ = 0, pre_mask_ = 0;
   int pre_bits_ = 0, pre_shift_ = 0;
-  HugeWords keys_, pairs_, pairs2_;  // LSD: (key << 32 | id) pairs; two-level: one word per key, or the rooms
+  HugeWords keys_, pairs_, pairs2_;  // (key << 32 | id) pairs, two words each; or the fused pass's rooms
   std::vector<uint32_t> block_min_, block_max_;
-  std::vector<uint32_t> counts_;  // nblocks (two-level: chunks x 2) x radix: counts, then next slots
+  std::vector<uint32_t> counts_;  // nblocks x radix: counts, then each block's next slot
   std::vector<uint32_t> bucket_start_;  // sort_two_level: each top-digit bucket's first slot
   std::vector<uint32_t> room_, slot_, ends_;  // the fused key pass: rooms, next slots, segment ends
 };
