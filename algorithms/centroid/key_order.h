@@ -60,6 +60,7 @@ Ordering order_by_descending_key(size_t n, Key&& key, RadixArgsort& sort, PhaseC
   }
   out.counters["radix passes"] = sort.passes();
   out.counters["top digit counted in key pass"] = sort.counted_in_key_pass() ? 1 : 0;
+  out.counters["top digit scattered in key pass"] = sort.scattered_in_key_pass() ? 1 : 0;
   return out;
 }
 

@@ -102,6 +102,55 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* o
   }
 }
 
+// Sorts one room of the fused key pass by the low `low` (<= 16) bits of (key - mn),
+// stably, in two passes, and writes its ids to out[0..m). Its words (low key bits << 16 |
+// id & 0xffff) lie in segments by chunk of ids: chunk j's end at ends[j * stride] (the
+// first begins at `begin`); within a segment they are in id order.
+void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t* ends, size_t stride,
+                 size_t nchunks, int low, int32_t* out, std::vector<uint64_t>& tmp) {
+  // Each segment's words as (key bits << 32 | id) pairs, in id order.
+  const auto each = [&](auto&& f) {
+    size_t s = begin;
+    for (size_t j = 0; j < nchunks; ++j) {
+      const size_t e = ends[j * stride];
+      const uint32_t hi = static_cast<uint32_t>(j) << 16;
+      for (size_t i = s; i < e; ++i) f((uint64_t(w[i] >> 16) << 32) | (hi | (w[i] & 0xffffu)));
+      s = e;
+    }
+  };
+  if (m < kSmallBucket) {
+    uint64_t a[kSmallBucket];
+    size_t i = 0;
+    each([&](uint64_t p) {  // stable insertion by key (the high word)
+      size_t j = i++;
+      for (; j > 0 && (a[j - 1] >> 32) > (p >> 32); --j) a[j] = a[j - 1];
+      a[j] = p;
+    });
+    for (size_t i = 0; i < m; ++i) out[i] = static_cast<int32_t>(static_cast<uint32_t>(a[i]));
+    return;
+  }
+  const int w0 = (low + 1) / 2;
+  const uint32_t m0 = (1u << w0) - 1, m1 = (1u << (low - w0)) - 1;
+  uint32_t c0[256] = {}, c1[256] = {};
+  for (size_t i = begin; i < begin + m; ++i) {
+    const uint32_t x = w[i] >> 16;
+    ++c0[x & m0];
+    ++c1[(x >> w0) & m1];
+  }
+  uint32_t s0 = 0, s1 = 0;
+  for (uint32_t d = 0; d <= m0; ++d) {
+    const uint32_t a = c0[d], b = c1[d];
+    c0[d] = s0, c1[d] = s1;
+    s0 += a, s1 += b;
+  }
+  if (tmp.size() < m) tmp.resize(m);
+  each([&](uint64_t p) { tmp[c0[static_cast<uint32_t>(p >> 32) & m0]++] = p; });
+  for (size_t i = 0; i < m; ++i) {
+    const uint64_t p = tmp[i];
+    out[c1[(static_cast<uint32_t>(p >> 32) >> w0) & m1]++] = static_cast<int32_t>(static_cast<uint32_t>(p));
+  }
+}
+
 constexpr size_t kHugePage = size_t(2) << 20;
 
 }  // namespace
@@ -140,7 +189,41 @@ bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
   pre_shift_ = bits - top;
   pre_mask_ = (uint32_t(1) << top) - 1;
   counts_.assign(2 * nblocks_ * (size_t(pre_mask_) + 1), 0);
+  if (nblocks_ == 1) room_.assign(size_t(pre_mask_) + 2, 0);  // the sample's counts
   return pre_ = true;
+}
+
+void RadixArgsort::plan_room() {
+  // A bucket's count is about kSample times its sample's; runs of neighbouring cells make
+  // the estimate err by a few runs, so a quarter more, two samples' worth and a quarter of
+  // an average bucket more (too little: the key pass starts over, costing time, not order).
+  const size_t radix = size_t(pre_mask_) + 1;
+  const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
+  slot_.resize(radix);
+  const uint32_t slack = static_cast<uint32_t>(2 * kSample + n_ / (4 * radix));
+  uint32_t sum = 0;
+  for (size_t d = 0; d < radix; ++d) {
+    const uint32_t c = room_[d];
+    room_[d] = slot_[d] = sum;
+    sum += c * kSample + c * kSample / 4 + slack;
+  }
+  room_[radix] = sum;
+  pairs_.reserve(sum);
+  ends_.resize(nchunks * radix);
+}
+
+void RadixArgsort::sort_rooms(int32_t* out) {
+  const size_t radix = size_t(pre_mask_) + 1;
+  const size_t nc = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
+  passes_ = 3;
+  used_pre_ = true;
+  thread_local std::vector<uint64_t> tmp;
+  size_t at = 0;
+  for (size_t d = 0; d < radix; ++d) {
+    const size_t m = slot_[d] - room_[d];
+    sort_room_bucket(pairs_.data(), room_[d], m, ends_.data() + d, radix, nc, pre_shift_, out + at, tmp);
+    at += m;
+  }
 }
 
 void RadixArgsort::sort_keys(int32_t* out) {
@@ -148,6 +231,10 @@ void RadixArgsort::sort_keys(int32_t* out) {
   passes_ = 0;
   used_pre_ = false;
   if (n == 0) return;
+  if (fused_) {
+    sort_rooms(out);
+    return;
+  }
   const uint32_t mn = *std::min_element(block_min_.begin(), block_min_.end());
   const uint32_t mx = *std::max_element(block_max_.begin(), block_max_.end());
   if (pre_ && mn >= pre_lo_ && mx <= pre_hi_) {  // every key inside the guess: its counts hold

@@ -1,7 +1,8 @@
 // RadixArgsort's range guess (make_keys' lo, hi: the key pass counts the top digit): a
 // guess wider than the keys is used and sorts like std::stable_sort; a guess that some key
 // falls outside of (below, above) or that does not ask for the two-level path is ignored
-// and the sort is still right; at 1 and 2 threads.
+// and the sort is still right; at 1 and 2 threads. With one thread the key pass scatters
+// into buckets sized from a sample; a sample that misjudges them makes it start over.
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
@@ -45,8 +46,25 @@ TEST(RadixKeyRange, GuessUsedOnlyWhenEveryKeyFallsInside) {
                           Case{1, 0, false}}) {
       EXPECT_EQ(sorted_with_guess(sort, keys, c.lo, c.hi), want) << c.lo << " " << c.hi << " t" << threads;
       EXPECT_EQ(sort.counted_in_key_pass(), c.used) << c.lo << " " << c.hi;
+      EXPECT_EQ(sort.scattered_in_key_pass(), c.used && threads == 1) << c.lo << " " << c.hi;
     }
   }
+}
+
+TEST(RadixKeyRange, SampleThatMisjudgesTheBucketsStartsOver) {
+  // Every 32nd key (so every key of the sample, one in 32 or fewer) is the lowest; the rest
+  // fill the top bucket, which the sample gave no room: the scatter overflows and the key pass starts over, counting.
+  const uint32_t base = 0x40000000u, span = (1u << 23) - 1;
+  std::vector<uint32_t> keys(200000);
+  for (size_t i = 0; i < keys.size(); ++i) keys[i] = i % 32 == 0 ? base : base + span - uint32_t(i % 1000);
+  std::vector<int32_t> want(keys.size());
+  std::iota(want.begin(), want.end(), 0);
+  std::stable_sort(want.begin(), want.end(), [&](int32_t a, int32_t b) { return keys[a] < keys[b]; });
+  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+  RadixArgsort sort;
+  EXPECT_EQ(sorted_with_guess(sort, keys, base, base + span), want);
+  EXPECT_TRUE(sort.counted_in_key_pass());
+  EXPECT_FALSE(sort.scattered_in_key_pass());
 }
 
 }  // namespace
