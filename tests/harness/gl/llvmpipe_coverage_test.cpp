@@ -16,6 +16,7 @@
 #include "harness/gl/shader_program.h"
 #include "harness/gl/window_vertices.h"
 #include "harness/raster/polygon_raster.h"
+#include "tests/harness/gl/id_framebuffer.h"
 
 using namespace vob;
 
@@ -45,11 +46,6 @@ void draw_gl(const std::vector<Tri>& tris, std::vector<uint32_t>& colour, std::v
   static gl::Functions f(ctx);
   static GLuint program = gl::link_program(f, {gl::shader_stage(GL_VERTEX_SHADER, {kVert}),
                                                gl::shader_stage(GL_FRAGMENT_SHADER, {kFrag})});
-  GLuint vao, vbo, fbo, rb[2];
-  f.glGenVertexArrays(1, &vao);
-  f.glBindVertexArray(vao);
-  f.glGenBuffers(1, &vbo);
-  f.glBindBuffer(GL_ARRAY_BUFFER, vbo);
   const gl::Pow2Viewport vp(W, H);
   std::vector<Vertex> v;
   for (size_t t = 0; t < tris.size(); ++t)
@@ -57,46 +53,16 @@ void draw_gl(const std::vector<Tri>& tris, std::vector<uint32_t>& colour, std::v
       const auto n = vp.ndc(tris[t].x[k], tris[t].y[k]);
       v.push_back({n[0], n[1], uint32_t(t)});
     }
-  f.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(Vertex)), v.data(), GL_STREAM_DRAW);
-  f.glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-  f.glVertexAttribIPointer(1, 1, GL_UNSIGNED_INT, sizeof(Vertex), reinterpret_cast<const void*>(8));
-  f.glEnableVertexAttribArray(0);
-  f.glEnableVertexAttribArray(1);
-  f.glGenFramebuffers(1, &fbo);
-  f.glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  f.glGenRenderbuffers(2, rb);
-  f.glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-  f.glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, W, H);
-  f.glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-  f.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, W, H);
-  f.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-  f.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
-  ASSERT_EQ(f.glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-  const GLenum buf = GL_COLOR_ATTACHMENT0;
-  f.glDrawBuffers(1, &buf);
-  f.glReadBuffer(GL_COLOR_ATTACHMENT0);
-  f.glViewport(0, 0, vp.w, vp.h);
-  f.glDisable(GL_CULL_FACE);
+  test::IdFramebuffer fb(f, program, W, H, vp.w, vp.h, v, 2);
+  ASSERT_TRUE(fb.complete());
   f.glDisable(GL_DEPTH_TEST);
   f.glEnable(GL_STENCIL_TEST);
-  f.glStencilMask(~0u);
   f.glStencilFunc(GL_ALWAYS, 0, ~0u);
   f.glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
-  const GLuint zero[4] = {0, 0, 0, 0};
-  f.glClearBufferuiv(GL_COLOR, 0, zero);
-  f.glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  f.glUseProgram(program);
-  f.glDrawArrays(GL_TRIANGLES, 0, GLsizei(v.size()));
-  colour.assign(size_t(W) * H, 0);
-  count.assign(size_t(W) * H, 0);
-  f.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  f.glReadPixels(0, 0, W, H, GL_RED_INTEGER, GL_UNSIGNED_INT, colour.data());
-  f.glReadPixels(0, 0, W, H, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, count.data());
+  fb.draw();
+  colour = fb.read_items();
+  count = fb.read_stencil();
   ASSERT_EQ(f.glGetError(), GLenum(GL_NO_ERROR));
-  f.glDeleteRenderbuffers(2, rb);
-  f.glDeleteFramebuffers(1, &fbo);
-  f.glDeleteBuffers(1, &vbo);
-  f.glDeleteVertexArrays(1, &vao);
 }
 
 // The same under the rule: the window positions go to the rasterizer as projected

@@ -19,6 +19,7 @@
 #include "harness/gl/window_vertices.h"
 #include "harness/raster/llvmpipe_depth.h"
 #include "harness/raster/raster_rule.h"
+#include "tests/harness/gl/id_framebuffer.h"
 
 using namespace vob;
 
@@ -48,11 +49,6 @@ void draw_gl(const std::vector<Tri>& tris, std::vector<uint32_t>& item, std::vec
   static gl::Functions f(ctx);
   static GLuint program = gl::link_program(f, {gl::shader_stage(GL_VERTEX_SHADER, {kVert}),
                                                gl::shader_stage(GL_FRAGMENT_SHADER, {kFrag})});
-  GLuint vao, vbo, fbo, rb[2];
-  f.glGenVertexArrays(1, &vao);
-  f.glBindVertexArray(vao);
-  f.glGenBuffers(1, &vbo);
-  f.glBindBuffer(GL_ARRAY_BUFFER, vbo);
   const gl::Pow2Viewport vp(W, H);
   std::vector<Vertex> v;
   for (size_t t = 0; t < tris.size(); ++t)
@@ -60,45 +56,14 @@ void draw_gl(const std::vector<Tri>& tris, std::vector<uint32_t>& item, std::vec
       const auto n = vp.ndc(tris[t].x[k], tris[t].y[k]);
       v.push_back({n[0], n[1], float(2 * tris[t].depth[k] - 1), uint32_t(t)});
     }
-  f.glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(v.size() * sizeof(Vertex)), v.data(), GL_STREAM_DRAW);
-  f.glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), nullptr);
-  f.glVertexAttribIPointer(1, 1, GL_UNSIGNED_INT, sizeof(Vertex), reinterpret_cast<const void*>(12));
-  f.glEnableVertexAttribArray(0);
-  f.glEnableVertexAttribArray(1);
-  f.glGenFramebuffers(1, &fbo);
-  f.glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-  f.glGenRenderbuffers(2, rb);
-  f.glBindRenderbuffer(GL_RENDERBUFFER, rb[0]);
-  f.glRenderbufferStorage(GL_RENDERBUFFER, GL_R32UI, W, H);
-  f.glBindRenderbuffer(GL_RENDERBUFFER, rb[1]);
-  f.glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, W, H);
-  f.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb[0]);
-  f.glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, rb[1]);
-  ASSERT_EQ(f.glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-  const GLenum buf = GL_COLOR_ATTACHMENT0;
-  f.glDrawBuffers(1, &buf);
-  f.glReadBuffer(GL_COLOR_ATTACHMENT0);
-  f.glViewport(0, 0, vp.w, vp.h);
-  f.glDisable(GL_CULL_FACE);
+  test::IdFramebuffer fb(f, program, W, H, vp.w, vp.h, v, 3);
+  ASSERT_TRUE(fb.complete());
   f.glEnable(GL_DEPTH_TEST);
   f.glDepthFunc(GL_ALWAYS);
-  f.glDepthMask(GL_TRUE);
-  const GLuint zero[4] = {0, 0, 0, 0};
-  f.glClearBufferuiv(GL_COLOR, 0, zero);
-  f.glClearBufferfi(GL_DEPTH_STENCIL, 0, 1.0f, 0);
-  f.glUseProgram(program);
-  f.glDrawArrays(GL_TRIANGLES, 0, GLsizei(v.size()));
-  item.assign(size_t(W) * H, 0);
-  depth.assign(size_t(W) * H, 0);
-  f.glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  f.glReadPixels(0, 0, W, H, GL_RED_INTEGER, GL_UNSIGNED_INT, item.data());
-  f.glReadPixels(0, 0, W, H, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, depth.data());
-  for (uint32_t& d : depth) d >>= 8;  // depth in the top 24 bits
+  fb.draw();
+  item = fb.read_items();
+  depth = fb.read_depth24();
   ASSERT_EQ(f.glGetError(), GLenum(GL_NO_ERROR));
-  f.glDeleteRenderbuffers(2, rb);
-  f.glDeleteFramebuffers(1, &fbo);
-  f.glDeleteBuffers(1, &vbo);
-  f.glDeleteVertexArrays(1, &vao);
 }
 
 // The triangle's float window positions in the order llvmpipe's setup receives them.
