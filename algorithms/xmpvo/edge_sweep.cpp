@@ -242,13 +242,8 @@ int32_t Worker::track(int32_t f, int m, int32_t j) {
 
 // Where face f of e' goes in list_ (front to back) at the current crossing.
 size_t Worker::insert_at_crossing(int32_t f) {
-  size_t lo = 0, hi = list_.size();
-  while (lo < hi) {
-    const size_t mid = (lo + hi) / 2;
-    if (depth_x(f, list_[mid]) < 0) hi = mid;
-    else lo = mid + 1;
-  }
-  return lo;
+  return size_t(std::partition_point(list_.begin(), list_.end(), [&](int32_t h) { return depth_x(f, h) >= 0; }) -
+                list_.begin());
 }
 
 // Depth order of face g of e' and face h covering the crossing, on the crossing's ray:
@@ -317,13 +312,8 @@ int Worker::point_side(int32_t x, int32_t p, int32_t q) {
 
 // Where face f goes in list_ (front to back) at the current vertex's ray.
 size_t Worker::insert_at(int32_t f) {
-  size_t lo = 0, hi = list_.size();
-  while (lo < hi) {
-    const size_t mid = (lo + hi) / 2;
-    if (depth(f, list_[mid]) < 0) hi = mid;
-    else lo = mid + 1;
-  }
-  return lo;
+  return size_t(std::partition_point(list_.begin(), list_.end(), [&](int32_t h) { return depth(f, h) >= 0; }) -
+                list_.begin());
 }
 
 }  // namespace vob::xmpvo::detail
