@@ -58,16 +58,26 @@ class RadixArgsort {
   // or a key falls outside the guess, it starts over as above (same order either way).
   template <class KeyOf>
   void make_keys(size_t n, KeyOf&& key_of, uint32_t lo = 1, uint32_t hi = 0) {
+    // Keys a run at a time into L1 (a plain loop the compiler vectorises), then scattered.
+    const auto keys_of = [&](size_t i0, size_t i1, uint32_t* k) {
+      for (size_t i = i0; i < i1; ++i) k[i - i0] = key_of(i);
+    };
+    make_keys_by_runs(n, key_of, keys_of, [&](size_t j) { return key_of(j * kSample); }, lo, hi);
+  }
+
+  // make_keys, with the fused key pass's keys made by keys_of(i0, i1, k) (k[i - i0] =
+  // key_of(i), up to kRun at a time) and its sample by sample_of(j) = key_of(j * kSample),
+  // e.g. from a compact copy of every kSample-th item (a strided read of the items costs a
+  // cache miss a sample when they are not in cache).
+  static constexpr size_t kSample = 32;  // the fused key pass sizes its buckets from every 32nd key
+  template <class KeyOf, class KeysOf, class SampleOf>
+  void make_keys_by_runs(size_t n, KeyOf&& key_of, KeysOf&& keys_of, SampleOf&& sample_of, uint32_t lo, uint32_t hi) {
     plan(n);
     const bool pre = plan_counts(lo, hi);
     fused_ = false;
     if (pre && nblocks_ == 1) {
-      for (size_t i = 0; i < n; i += kSample) ++room_[((key_of(i) - pre_lo_) >> pre_shift_) & pre_mask_];
+      for (size_t j = 0; j * kSample < n; ++j) ++room_[((sample_of(j) - pre_lo_) >> pre_shift_) & pre_mask_];
       plan_room();
-      // Keys a run at a time into L1 (a plain loop the compiler vectorises), then scattered.
-      const auto keys_of = [&](size_t i0, size_t i1, uint32_t* k) {
-        for (size_t i = i0; i < i1; ++i) k[i] = key_of(i);
-      };
       if ((fused_ = scatter_keys(n, keys_of))) return;
     }
     const int shift = pre_shift_;
@@ -126,7 +136,6 @@ class RadixArgsort {
   // counts_ is zeroed and pre_* set).
   bool plan_counts(uint32_t lo, uint32_t hi);
   static constexpr size_t kRun = 256;     // keys made at a time by the fused key pass
-  static constexpr size_t kSample = 32;  // the fused key pass sizes its buckets from every 32nd key
   // From the sampled counts in room_: each bucket's room (room_[d], room_[d + 1]) in pairs_
   // (an estimate with slack) and slot_ = each room's start.
   void plan_room();
@@ -150,7 +159,7 @@ class RadixArgsort {
       const size_t i1 = std::min(n, i0 + (size_t(1) << kChunkBits));
       for (size_t r0 = i0; r0 < i1; r0 += kRun) {
         const size_t r1 = std::min(i1, r0 + kRun);
-        keys_of(r0, r1, run - r0);
+        keys_of(r0, r1, run);
         for (size_t i = r0; i < r1; ++i) {
           const uint32_t v = run[i - r0] - base;
           const uint32_t d = v >> shift;
