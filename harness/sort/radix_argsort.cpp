@@ -199,13 +199,14 @@ void RadixArgsort::plan_room() {
   // an average bucket more (too little: the key pass starts over, costing time, not order).
   const size_t radix = size_t(pre_mask_) + 1;
   const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
-  slot_.resize(radix);
+  next_.resize(radix);
   const uint32_t slack = static_cast<uint32_t>(2 * kSample + n_ / (4 * radix));
   uint32_t sum = 0;
   for (size_t d = 0; d < radix; ++d) {
-    const uint32_t c = room_[d];
-    room_[d] = slot_[d] = sum;
-    sum += c * kSample + c * kSample / 4 + slack;
+    const uint32_t c = room_[d], size = c * kSample + c * kSample / 4 + slack;
+    room_[d] = sum;
+    next_[d] = uint64_t(size) << 32 | sum;
+    sum += size;
   }
   room_[radix] = sum;
   pairs_.reserve(sum);
@@ -220,7 +221,7 @@ void RadixArgsort::sort_rooms(int32_t* out) {
   thread_local std::vector<uint64_t> tmp;
   size_t at = 0;
   for (size_t d = 0; d < radix; ++d) {
-    const size_t m = slot_[d] - room_[d];
+    const size_t m = static_cast<uint32_t>(next_[d]) - room_[d];
     sort_room_bucket(pairs_.data(), room_[d], m, ends_.data() + d, radix, nc, pre_shift_, out + at, tmp);
     at += m;
   }

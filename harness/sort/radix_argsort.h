@@ -121,7 +121,7 @@ class RadixArgsort {
   int blocks() const { return static_cast<int>(nblocks_); }
   size_t bytes() const {
     return (keys_.capacity() + pairs_.capacity() + pairs2_.capacity()) * 4 +
-           (counts_.capacity() + room_.capacity() + slot_.capacity() + ends_.capacity()) * 4;
+           (counts_.capacity() + room_.capacity() + ends_.capacity()) * 4 + next_.capacity() * 8;
   }
 
  private:
@@ -137,7 +137,7 @@ class RadixArgsort {
   bool plan_counts(uint32_t lo, uint32_t hi);
   static constexpr size_t kRun = 256;     // keys made at a time by the fused key pass
   // From the sampled counts in room_: each bucket's room (room_[d], room_[d + 1]) in pairs_
-  // (an estimate with slack) and slot_ = each room's start.
+  // (an estimate with slack) and next_ = each room's size << 32 | its start.
   void plan_room();
   void sort_rooms(int32_t* out);  // sort_keys after a fused key pass
 
@@ -150,8 +150,9 @@ class RadixArgsort {
     const int shift = pre_shift_;
     const size_t radix = size_t(pre_mask_) + 1;
     uint32_t* w = pairs_.data();
-    uint32_t* slot = slot_.data();
-    const uint32_t* end = room_.data() + 1;
+    // Per bucket one word, (room left << 32 | next slot): one load tells both where the key
+    // goes and whether its room is full (< 2^32), not a second load of the room's end.
+    uint64_t* next = next_.data();
     uint32_t run[kRun];
     // (The slot kept in a register along runs of one bucket loses: on view 1 of the 1M helix
     // 60% of neighbouring cells change bucket, and the branch mispredicts.)
@@ -163,11 +164,14 @@ class RadixArgsort {
         for (size_t i = r0; i < r1; ++i) {
           const uint32_t v = run[i - r0] - base;
           const uint32_t d = v >> shift;
-          if (v > range || slot[d] == end[d]) return false;
-          w[slot[d]++] = (v & low_mask) << 16 | static_cast<uint32_t>(i & 0xffffu);
+          if (v > range) return false;  // (before d indexes next: d may be past the rooms)
+          const uint64_t p = next[d];
+          if (p < (uint64_t(1) << 32)) return false;
+          w[static_cast<uint32_t>(p)] = (v & low_mask) << 16 | static_cast<uint32_t>(i & 0xffffu);
+          next[d] = p + 1 - (uint64_t(1) << 32);
         }
       }
-      std::copy(slot, slot + radix, ends_.data() + j * radix);
+      for (size_t d = 0; d < radix; ++d) ends_[j * radix + d] = static_cast<uint32_t>(next[d]);
     }
     return true;
   }
@@ -194,7 +198,8 @@ class RadixArgsort {
   std::vector<uint32_t> block_min_, block_max_;
   std::vector<uint32_t> counts_;  // nblocks x radix: counts, then each block's next slot
   std::vector<uint32_t> bucket_start_;  // sort_two_level: each top-digit bucket's first slot
-  std::vector<uint32_t> room_, slot_, ends_;  // the fused key pass: rooms, next slots, segment ends
+  std::vector<uint32_t> room_, ends_;  // the fused key pass: rooms, segment ends
+  std::vector<uint64_t> next_;         // ... and per room (room left << 32 | next slot)
 };
 
 }  // namespace vob
