@@ -22,6 +22,12 @@ constexpr size_t kMinBlock = size_t(1) << 15;  // below this a block is not wort
 // cross memory twice instead of three times (profile of 1M view depths, 24 bits: the three
 // scatters were 2/3 of the centroid frame). Kept while the top digit has <= kMaxDigitBits.
 constexpr int kLowBits = 16;
+// One thread's fused key pass (rooms): 17 low bits, so a 24-bit range of 1M view depths
+// scatters into 128 rooms, not 256 (the scatter's write streams cost more than the rooms'
+// larger in-cache sorts: 512 rooms were 6-25% slower a frame, 256 against 128 measured in
+// design-notes).
+constexpr int kRoomLowBits = 17;
+static_assert(kRoomLowBits + RadixArgsort::kChunkBits == 32, "a room word: low key bits and id in chunk");
 constexpr size_t kSmallBucket = 48;  // below this a bucket is insertion sorted
 // Ranges of 17 to 22 bits (two 11-bit digits) take the two-level path too from this many
 // keys on: their two scatters of 2^11 write streams each through memory cost more than one
@@ -67,7 +73,7 @@ void scatter(const uint32_t* k, const uint64_t* sp, uint64_t* dp, int32_t* out, 
 }
 
 // Sorts the m pairs of one bucket (key << 32 | id, in id order within equal keys) by their
-// low `low` bits (<= kLowBits) of (key - mn), stably, in two passes, and writes their ids.
+// low `low` bits (<= kRoomLowBits) of (key - mn), stably, in two passes, and writes their ids.
 void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* out, std::vector<uint64_t>& tmp) {
   if (m < kSmallBucket) {
     uint64_t a[kSmallBucket];
@@ -82,7 +88,7 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* o
   }
   const int w0 = (low + 1) / 2;
   const uint32_t m0 = (1u << w0) - 1, m1 = (1u << (low - w0)) - 1;
-  uint32_t c0[256] = {}, c1[256] = {};
+  uint32_t c0[512] = {}, c1[512] = {};  // up to 9 + 8 bits (kRoomLowBits)
   for (size_t i = 0; i < m; ++i) {
     const uint32_t x = static_cast<uint32_t>(src[i] >> 32) - mn;
     ++c0[x & m0];
@@ -102,19 +108,21 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* o
   }
 }
 
-// Sorts one room of the fused key pass by the low `low` (<= 16) bits of (key - mn),
-// stably, in two passes, and writes its ids to out[0..m). Its words (low key bits << 16 |
-// id & 0xffff) lie in segments by chunk of ids: chunk j's end at ends[j * stride] (the
+// Sorts one room of the fused key pass by the low `low` (<= 17) bits of (key - mn),
+// stably, in two passes, and writes its ids to out[0..m). Its words (low key bits <<
+// kChunkBits | id within its chunk) lie in segments by chunk of ids: chunk j's end at ends[j * stride] (the
 // first begins at `begin`); within a segment they are in id order.
 void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t* ends, size_t stride,
                  size_t nchunks, int low, int32_t* out, std::vector<uint64_t>& tmp) {
+  constexpr int kBits = RadixArgsort::kChunkBits;
+  constexpr uint32_t kMask = (uint32_t(1) << kBits) - 1;
   // Each segment's words as (key bits << 32 | id) pairs, in id order.
   const auto each = [&](auto&& f) {
     size_t s = begin;
     for (size_t j = 0; j < nchunks; ++j) {
       const size_t e = ends[j * stride];
-      const uint32_t hi = static_cast<uint32_t>(j) << 16;
-      for (size_t i = s; i < e; ++i) f((uint64_t(w[i] >> 16) << 32) | (hi | (w[i] & 0xffffu)));
+      const uint32_t hi = static_cast<uint32_t>(j) << kBits;
+      for (size_t i = s; i < e; ++i) f((uint64_t(w[i] >> kBits) << 32) | (hi | (w[i] & kMask)));
       s = e;
     }
   };
@@ -133,17 +141,17 @@ void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t*
   const uint32_t m0 = (1u << w0) - 1, m1 = (1u << (low - w0)) - 1;
   // The high digit in two counter sets (even and odd words): neighbouring cells in a room
   // often share it, and one set would chain each increment on the last one's store.
-  uint32_t c0[256] = {}, c1[256] = {}, c2[256] = {};
+  uint32_t c0[512] = {}, c1[512] = {}, c2[512] = {};  // up to 9 + 8 bits (kRoomLowBits)
   size_t i = begin;
   for (; i + 1 < begin + m; i += 2) {
-    const uint32_t x = w[i] >> 16, y = w[i + 1] >> 16;
+    const uint32_t x = w[i] >> kBits, y = w[i + 1] >> kBits;
     ++c0[x & m0];
     ++c1[(x >> w0) & m1];
     ++c0[y & m0];
     ++c2[(y >> w0) & m1];
   }
   if (i < begin + m) {
-    const uint32_t x = w[i] >> 16;
+    const uint32_t x = w[i] >> kBits;
     ++c0[x & m0];
     ++c1[(x >> w0) & m1];
   }
@@ -195,7 +203,7 @@ bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
   const uint32_t range = hi - lo;
   const int bits = range == 0 ? 0 : 32 - __builtin_clz(range);
   if (bits <= kLowBits || bits - kLowBits > kMaxDigitBits) return false;
-  const int top = std::max(bits - kLowBits, kTopBits);
+  const int top = std::max(bits - (nblocks_ == 1 ? kRoomLowBits : kLowBits), kTopBits);
   pre_lo_ = lo, pre_hi_ = hi, pre_bits_ = bits;
   pre_shift_ = bits - top;
   pre_mask_ = (uint32_t(1) << top) - 1;

@@ -70,6 +70,9 @@ class RadixArgsort {
   // e.g. from a compact copy of every kSample-th item (a strided read of the items costs a
   // cache miss a sample when they are not in cache).
   static constexpr size_t kSample = 32;  // the fused key pass sizes its buckets from every 32nd key
+  // The fused key pass's ids travel as 15 bits within a chunk of 2^15 ids, beside the
+  // key's low (<= 17) bits: one 32-bit word per key through memory, not a 64-bit pair.
+  static constexpr int kChunkBits = 15;
   template <class KeyOf, class KeysOf, class SampleOf>
   void make_keys_by_runs(size_t n, KeyOf&& key_of, KeysOf&& keys_of, SampleOf&& sample_of, uint32_t lo, uint32_t hi) {
     plan(n);
@@ -125,9 +128,6 @@ class RadixArgsort {
   }
 
  private:
-  // The fused key pass's ids travel as 16 bits within a chunk of 2^16 ids, beside the
-  // key's low (<= 16) bits: one 32-bit word per key through memory, not a 64-bit pair.
-  static constexpr int kChunkBits = 16;
   void plan(size_t n);         // sizes the buffers, picks the blocks from the thread limit
   // Ranges of 17 to 27 bits: one scatter by the `top` bits, then each bucket in cache;
   // `counted`: counts_ already holds the top digit's counts (from the key pass).
@@ -141,12 +141,13 @@ class RadixArgsort {
   void plan_room();
   void sort_rooms(int32_t* out);  // sort_keys after a fused key pass
 
-  // The fused key pass: each key's word (low bits << 16 | id within its chunk) into its
+  // The fused key pass: each key's word (low bits << kChunkBits | id within its chunk) into its
   // bucket's room; after each chunk its slots go to ends_ (each segment's end). False if a
   // room was full or a key outside [pre_lo_, pre_hi_].
   template <class KeysOf>
   bool scatter_keys(size_t n, KeysOf& keys_of) {
     const uint32_t base = pre_lo_, range = pre_hi_ - pre_lo_, low_mask = (uint32_t(1) << pre_shift_) - 1;
+    constexpr uint32_t kChunkMask = (uint32_t(1) << kChunkBits) - 1;
     const int shift = pre_shift_;
     const size_t radix = size_t(pre_mask_) + 1;
     uint32_t* w = pairs_.data();
@@ -167,7 +168,7 @@ class RadixArgsort {
           if (v > range) return false;  // (before d indexes next: d may be past the rooms)
           const uint64_t p = next[d];
           if (p < (uint64_t(1) << 32)) return false;
-          w[static_cast<uint32_t>(p)] = (v & low_mask) << 16 | static_cast<uint32_t>(i & 0xffffu);
+          w[static_cast<uint32_t>(p)] = (v & low_mask) << kChunkBits | static_cast<uint32_t>(i & kChunkMask);
           next[d] = p + 1 - (uint64_t(1) << 32);
         }
       }
