@@ -163,6 +163,23 @@ void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t*
     s0 += a, s1 += b;
   }
   if (tmp.size() < m) tmp.resize(m);
+  if ((nchunks << kBits) <= (size_t(1) << 24) && low - w0 <= 8) {
+    // Ids below 2^24: between the passes the high digit and the id share a 32-bit word,
+    // so the room's in-cache buffer is half the size.
+    uint32_t* t = reinterpret_cast<uint32_t*>(tmp.data());
+    size_t s = begin;
+    for (size_t j = 0; j < nchunks; ++j) {
+      const size_t e = ends[j * stride];
+      const uint32_t hi = static_cast<uint32_t>(j) << kBits;
+      for (size_t i = s; i < e; ++i) {
+        const uint32_t x = w[i] >> kBits;
+        t[c0[x & m0]++] = (x >> w0) << 24 | hi | (w[i] & kMask);
+      }
+      s = e;
+    }
+    for (size_t i = 0; i < m; ++i) out[c1[t[i] >> 24]++] = static_cast<int32_t>(t[i] & 0xffffffu);
+    return;
+  }
   each([&](uint64_t p) { tmp[c0[static_cast<uint32_t>(p >> 32) & m0]++] = p; });
   for (size_t i = 0; i < m; ++i) {
     const uint64_t p = tmp[i];
