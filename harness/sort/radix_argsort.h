@@ -4,7 +4,8 @@
 // 0..n-1 made in the first scatter and the last pass writing the caller's output (no key
 // transform pass, no keys written back, no copy). Ranges of 23 to 27 bits (1M view depths
 // of a mesh span ~24) take one scatter by their top bits (at least 7) and then sort each
-// bucket by its low (at most 16) bits in cache: two trips through memory instead of three;
+// bucket by its low (at most 16; one thread's fused key pass 17) bits in cache: two trips
+// through memory instead of three;
 // so do ranges of 17 to 22 bits from 2^17 keys on, instead of two 11-bit scatters.
 // Blocks run in parallel with TBB when the global thread limit allows; per-block counts keep
 // it stable, so the order never depends on the thread count.
