@@ -38,19 +38,13 @@ inline KeyRange key_range_from_box(Vec3 lo, Vec3 hi, Vec3 eye, Vec3 f, bool by_v
   return {};
 }
 
-// `key(i)` is primitive i's distance (larger = farther); the farthest comes first, ties in
-// id order: ascending float(-key) by its sortable bits, stably. Each key is made, rounded
-// and turned into its sortable bits in one streamed pass (in parallel when threads allow).
-// [kmin, kmax] (optional, kmin > kmax: none) bounds key(i) a little loosely: the key pass
-// then counts the sort's top digit too (RadixArgsort checks that every key fell inside).
-template <class Key>
-Ordering order_by_descending_key(size_t n, Key&& key, RadixArgsort& sort, PhaseClock& clock,
-                                 double kmin = 1, double kmax = 0) {
+// The phases of a back-to-front order by key bits: "keys" runs `key_pass()`, which fills
+// `sort` (RadixArgsort::make_keys or make_keys_by_runs), "radix sort" sorts them into ids.
+template <class KeyPass>
+Ordering order_from_key_pass(size_t n, KeyPass&& key_pass, RadixArgsort& sort, PhaseClock& clock) {
   {
     auto p = clock.phase("keys");
-    const auto sk = [](double d) { return float_sort_key(static_cast<float>(-d)); };
-    const bool guess = kmin <= kmax;  // -key ascending: kmax gives the least sortable bits
-    sort.make_keys(n, [&](size_t i) { return sk(key(i)); }, guess ? sk(kmax) : 1u, guess ? sk(kmin) : 0u);
+    key_pass();
   }
   Ordering out;
   {
@@ -62,6 +56,25 @@ Ordering order_by_descending_key(size_t n, Key&& key, RadixArgsort& sort, PhaseC
   out.counters["top digit counted in key pass"] = sort.counted_in_key_pass() ? 1 : 0;
   out.counters["top digit scattered in key pass"] = sort.scattered_in_key_pass() ? 1 : 0;
   return out;
+}
+
+// The sort key of a distance: ascending float(-d) by its sortable bits puts the farthest first.
+inline uint32_t descending_key_bits(double d) { return float_sort_key(static_cast<float>(-d)); }
+
+// `key(i)` is primitive i's distance (larger = farther); the farthest comes first, ties in
+// id order: ascending float(-key) by its sortable bits, stably. Each key is made, rounded
+// and turned into its sortable bits in one streamed pass (in parallel when threads allow).
+// [kmin, kmax] (optional, kmin > kmax: none) bounds key(i) a little loosely: the key pass
+// then counts the sort's top digit too (RadixArgsort checks that every key fell inside).
+template <class Key>
+Ordering order_by_descending_key(size_t n, Key&& key, RadixArgsort& sort, PhaseClock& clock,
+                                 double kmin = 1, double kmax = 0) {
+  const bool guess = kmin <= kmax;  // -key ascending: kmax gives the least sortable bits
+  const auto pass = [&] {
+    sort.make_keys(n, [&](size_t i) { return descending_key_bits(key(i)); },
+                   guess ? descending_key_bits(kmax) : 1u, guess ? descending_key_bits(kmin) : 0u);
+  };
+  return order_from_key_pass(n, pass, sort, clock);
 }
 
 }  // namespace vob

@@ -22,6 +22,11 @@ constexpr size_t kMinBlock = size_t(1) << 15;  // below this a block is not wort
 // cross memory twice instead of three times (profile of 1M view depths, 24 bits: the three
 // scatters were 2/3 of the centroid frame). Kept while the top digit has <= kMaxDigitBits.
 constexpr int kLowBits = 16;
+// One thread's fused key pass (rooms): 17 low bits, so a 24-bit range of 1M view depths
+// scatters into 128 rooms, not 256: the scatter's write streams cost more than the rooms'
+// larger in-cache sorts (512 rooms: 6-25% slower a frame; 128: 1-7% faster than 256).
+constexpr int kRoomLowBits = 17;
+static_assert(kRoomLowBits + RadixArgsort::kChunkBits == 32, "a room word: low key bits and id in chunk");
 constexpr size_t kSmallBucket = 48;  // below this a bucket is insertion sorted
 // Ranges of 17 to 22 bits (two 11-bit digits) take the two-level path too from this many
 // keys on: their two scatters of 2^11 write streams each through memory cost more than one
@@ -67,7 +72,7 @@ void scatter(const uint32_t* k, const uint64_t* sp, uint64_t* dp, int32_t* out, 
 }
 
 // Sorts the m pairs of one bucket (key << 32 | id, in id order within equal keys) by their
-// low `low` bits (<= kLowBits) of (key - mn), stably, in two passes, and writes their ids.
+// low `low` bits (<= kRoomLowBits) of (key - mn), stably, in two passes, and writes their ids.
 void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* out, std::vector<uint64_t>& tmp) {
   if (m < kSmallBucket) {
     uint64_t a[kSmallBucket];
@@ -82,7 +87,7 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* o
   }
   const int w0 = (low + 1) / 2;
   const uint32_t m0 = (1u << w0) - 1, m1 = (1u << (low - w0)) - 1;
-  uint32_t c0[256] = {}, c1[256] = {};
+  uint32_t c0[512] = {}, c1[512] = {};  // up to 9 + 8 bits (kRoomLowBits)
   for (size_t i = 0; i < m; ++i) {
     const uint32_t x = static_cast<uint32_t>(src[i] >> 32) - mn;
     ++c0[x & m0];
@@ -102,19 +107,21 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* o
   }
 }
 
-// Sorts one room of the fused key pass by the low `low` (<= 16) bits of (key - mn),
-// stably, in two passes, and writes its ids to out[0..m). Its words (low key bits << 16 |
-// id & 0xffff) lie in segments by chunk of ids: chunk j's end at ends[j * stride] (the
+// Sorts one room of the fused key pass by the low `low` (<= 17) bits of (key - mn),
+// stably, in two passes, and writes its ids to out[0..m). Its words (low key bits <<
+// kChunkBits | id within its chunk) lie in segments by chunk of ids: chunk j's end at ends[j * stride] (the
 // first begins at `begin`); within a segment they are in id order.
 void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t* ends, size_t stride,
                  size_t nchunks, int low, int32_t* out, std::vector<uint64_t>& tmp) {
+  constexpr int kBits = RadixArgsort::kChunkBits;
+  constexpr uint32_t kMask = (uint32_t(1) << kBits) - 1;
   // Each segment's words as (key bits << 32 | id) pairs, in id order.
   const auto each = [&](auto&& f) {
     size_t s = begin;
     for (size_t j = 0; j < nchunks; ++j) {
       const size_t e = ends[j * stride];
-      const uint32_t hi = static_cast<uint32_t>(j) << 16;
-      for (size_t i = s; i < e; ++i) f((uint64_t(w[i] >> 16) << 32) | (hi | (w[i] & 0xffffu)));
+      const uint32_t hi = static_cast<uint32_t>(j) << kBits;
+      for (size_t i = s; i < e; ++i) f((uint64_t(w[i] >> kBits) << 32) | (hi | (w[i] & kMask)));
       s = e;
     }
   };
@@ -131,12 +138,23 @@ void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t*
   }
   const int w0 = (low + 1) / 2;
   const uint32_t m0 = (1u << w0) - 1, m1 = (1u << (low - w0)) - 1;
-  uint32_t c0[256] = {}, c1[256] = {};
-  for (size_t i = begin; i < begin + m; ++i) {
-    const uint32_t x = w[i] >> 16;
+  // The high digit in two counter sets (even and odd words): neighbouring cells in a room
+  // often share it, and one set would chain each increment on the last one's store.
+  uint32_t c0[512] = {}, c1[512] = {}, c2[512] = {};  // up to 9 + 8 bits (kRoomLowBits)
+  size_t i = begin;
+  for (; i + 1 < begin + m; i += 2) {
+    const uint32_t x = w[i] >> kBits, y = w[i + 1] >> kBits;
+    ++c0[x & m0];
+    ++c1[(x >> w0) & m1];
+    ++c0[y & m0];
+    ++c2[(y >> w0) & m1];
+  }
+  if (i < begin + m) {
+    const uint32_t x = w[i] >> kBits;
     ++c0[x & m0];
     ++c1[(x >> w0) & m1];
   }
+  for (uint32_t d = 0; d <= m1; ++d) c1[d] += c2[d];
   uint32_t s0 = 0, s1 = 0;
   for (uint32_t d = 0; d <= m0; ++d) {
     const uint32_t a = c0[d], b = c1[d];
@@ -144,6 +162,23 @@ void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t*
     s0 += a, s1 += b;
   }
   if (tmp.size() < m) tmp.resize(m);
+  if ((nchunks << kBits) <= (size_t(1) << 24) && low - w0 <= 8) {
+    // Ids below 2^24: between the passes the high digit and the id share a 32-bit word,
+    // so the room's in-cache buffer is half the size.
+    uint32_t* t = reinterpret_cast<uint32_t*>(tmp.data());
+    size_t s = begin;
+    for (size_t j = 0; j < nchunks; ++j) {
+      const size_t e = ends[j * stride];
+      const uint32_t hi = static_cast<uint32_t>(j) << kBits;
+      for (size_t i = s; i < e; ++i) {
+        const uint32_t x = w[i] >> kBits;
+        t[c0[x & m0]++] = (x >> w0) << 24 | hi | (w[i] & kMask);
+      }
+      s = e;
+    }
+    for (size_t i = 0; i < m; ++i) out[c1[t[i] >> 24]++] = static_cast<int32_t>(t[i] & 0xffffffu);
+    return;
+  }
   each([&](uint64_t p) { tmp[c0[static_cast<uint32_t>(p >> 32) & m0]++] = p; });
   for (size_t i = 0; i < m; ++i) {
     const uint64_t p = tmp[i];
@@ -184,7 +219,7 @@ bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
   const uint32_t range = hi - lo;
   const int bits = range == 0 ? 0 : 32 - __builtin_clz(range);
   if (bits <= kLowBits || bits - kLowBits > kMaxDigitBits) return false;
-  const int top = std::max(bits - kLowBits, kTopBits);
+  const int top = std::max(bits - (nblocks_ == 1 ? kRoomLowBits : kLowBits), kTopBits);
   pre_lo_ = lo, pre_hi_ = hi, pre_bits_ = bits;
   pre_shift_ = bits - top;
   pre_mask_ = (uint32_t(1) << top) - 1;
@@ -199,13 +234,14 @@ void RadixArgsort::plan_room() {
   // an average bucket more (too little: the key pass starts over, costing time, not order).
   const size_t radix = size_t(pre_mask_) + 1;
   const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
-  slot_.resize(radix);
+  next_.resize(radix);
   const uint32_t slack = static_cast<uint32_t>(2 * kSample + n_ / (4 * radix));
   uint32_t sum = 0;
   for (size_t d = 0; d < radix; ++d) {
-    const uint32_t c = room_[d];
-    room_[d] = slot_[d] = sum;
-    sum += c * kSample + c * kSample / 4 + slack;
+    const uint32_t c = room_[d], size = c * kSample + c * kSample / 4 + slack;
+    room_[d] = sum;
+    next_[d] = uint64_t(size) << 32 | sum;
+    sum += size;
   }
   room_[radix] = sum;
   pairs_.reserve(sum);
@@ -220,7 +256,7 @@ void RadixArgsort::sort_rooms(int32_t* out) {
   thread_local std::vector<uint64_t> tmp;
   size_t at = 0;
   for (size_t d = 0; d < radix; ++d) {
-    const size_t m = slot_[d] - room_[d];
+    const size_t m = static_cast<uint32_t>(next_[d]) - room_[d];
     sort_room_bucket(pairs_.data(), room_[d], m, ends_.data() + d, radix, nc, pre_shift_, out + at, tmp);
     at += m;
   }

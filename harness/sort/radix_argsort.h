@@ -4,7 +4,8 @@
 // 0..n-1 made in the first scatter and the last pass writing the caller's output (no key
 // transform pass, no keys written back, no copy). Ranges of 23 to 27 bits (1M view depths
 // of a mesh span ~24) take one scatter by their top bits (at least 7) and then sort each
-// bucket by its low (at most 16) bits in cache: two trips through memory instead of three;
+// bucket by its low (at most 16; one thread's fused key pass 17) bits in cache: two trips
+// through memory instead of three;
 // so do ranges of 17 to 22 bits from 2^17 keys on, instead of two 11-bit scatters.
 // Blocks run in parallel with TBB when the global thread limit allows; per-block counts keep
 // it stable, so the order never depends on the thread count.
@@ -58,16 +59,29 @@ class RadixArgsort {
   // or a key falls outside the guess, it starts over as above (same order either way).
   template <class KeyOf>
   void make_keys(size_t n, KeyOf&& key_of, uint32_t lo = 1, uint32_t hi = 0) {
+    // Keys a run at a time into L1 (a plain loop the compiler vectorises), then scattered.
+    const auto keys_of = [&](size_t i0, size_t i1, uint32_t* k) {
+      for (size_t i = i0; i < i1; ++i) k[i - i0] = key_of(i);
+    };
+    make_keys_by_runs(n, key_of, keys_of, [&](size_t j) { return key_of(j * kSample); }, lo, hi);
+  }
+
+  // make_keys, with the fused key pass's keys made by keys_of(i0, i1, k) (k[i - i0] =
+  // key_of(i), up to kRun at a time) and its sample by sample_of(j) = key_of(j * kSample),
+  // e.g. from a compact copy of every kSample-th item (a strided read of the items costs a
+  // cache miss a sample when they are not in cache).
+  static constexpr size_t kSample = 32;  // the fused key pass sizes its buckets from every 32nd key
+  // The fused key pass's ids travel as 15 bits within a chunk of 2^15 ids, beside the
+  // key's low (<= 17) bits: one 32-bit word per key through memory, not a 64-bit pair.
+  static constexpr int kChunkBits = 15;
+  template <class KeyOf, class KeysOf, class SampleOf>
+  void make_keys_by_runs(size_t n, KeyOf&& key_of, KeysOf&& keys_of, SampleOf&& sample_of, uint32_t lo, uint32_t hi) {
     plan(n);
     const bool pre = plan_counts(lo, hi);
     fused_ = false;
     if (pre && nblocks_ == 1) {
-      for (size_t i = 0; i < n; i += kSample) ++room_[((key_of(i) - pre_lo_) >> pre_shift_) & pre_mask_];
+      for (size_t j = 0; j * kSample < n; ++j) ++room_[((sample_of(j) - pre_lo_) >> pre_shift_) & pre_mask_];
       plan_room();
-      // Keys a run at a time into L1 (a plain loop the compiler vectorises), then scattered.
-      const auto keys_of = [&](size_t i0, size_t i1, uint32_t* k) {
-        for (size_t i = i0; i < i1; ++i) k[i] = key_of(i);
-      };
       if ((fused_ = scatter_keys(n, keys_of))) return;
     }
     const int shift = pre_shift_;
@@ -111,13 +125,10 @@ class RadixArgsort {
   int blocks() const { return static_cast<int>(nblocks_); }
   size_t bytes() const {
     return (keys_.capacity() + pairs_.capacity() + pairs2_.capacity()) * 4 +
-           (counts_.capacity() + room_.capacity() + slot_.capacity() + ends_.capacity()) * 4;
+           (counts_.capacity() + room_.capacity() + ends_.capacity()) * 4 + next_.capacity() * 8;
   }
 
  private:
-  // The fused key pass's ids travel as 16 bits within a chunk of 2^16 ids, beside the
-  // key's low (<= 16) bits: one 32-bit word per key through memory, not a 64-bit pair.
-  static constexpr int kChunkBits = 16;
   void plan(size_t n);         // sizes the buffers, picks the blocks from the thread limit
   // Ranges of 17 to 27 bits: one scatter by the `top` bits, then each bucket in cache;
   // `counted`: counts_ already holds the top digit's counts (from the key pass).
@@ -126,23 +137,24 @@ class RadixArgsort {
   // counts_ is zeroed and pre_* set).
   bool plan_counts(uint32_t lo, uint32_t hi);
   static constexpr size_t kRun = 256;     // keys made at a time by the fused key pass
-  static constexpr size_t kSample = 32;  // the fused key pass sizes its buckets from every 32nd key
   // From the sampled counts in room_: each bucket's room (room_[d], room_[d + 1]) in pairs_
-  // (an estimate with slack) and slot_ = each room's start.
+  // (an estimate with slack) and next_ = each room's size << 32 | its start.
   void plan_room();
   void sort_rooms(int32_t* out);  // sort_keys after a fused key pass
 
-  // The fused key pass: each key's word (low bits << 16 | id within its chunk) into its
+  // The fused key pass: each key's word (low bits << kChunkBits | id within its chunk) into its
   // bucket's room; after each chunk its slots go to ends_ (each segment's end). False if a
   // room was full or a key outside [pre_lo_, pre_hi_].
   template <class KeysOf>
   bool scatter_keys(size_t n, KeysOf& keys_of) {
     const uint32_t base = pre_lo_, range = pre_hi_ - pre_lo_, low_mask = (uint32_t(1) << pre_shift_) - 1;
+    constexpr uint32_t kChunkMask = (uint32_t(1) << kChunkBits) - 1;
     const int shift = pre_shift_;
     const size_t radix = size_t(pre_mask_) + 1;
     uint32_t* w = pairs_.data();
-    uint32_t* slot = slot_.data();
-    const uint32_t* end = room_.data() + 1;
+    // Per bucket one word, (room left << 32 | next slot): one load tells both where the key
+    // goes and whether its room is full (< 2^32), not a second load of the room's end.
+    uint64_t* next = next_.data();
     uint32_t run[kRun];
     // (The slot kept in a register along runs of one bucket loses: on view 1 of the 1M helix
     // 60% of neighbouring cells change bucket, and the branch mispredicts.)
@@ -150,15 +162,18 @@ class RadixArgsort {
       const size_t i1 = std::min(n, i0 + (size_t(1) << kChunkBits));
       for (size_t r0 = i0; r0 < i1; r0 += kRun) {
         const size_t r1 = std::min(i1, r0 + kRun);
-        keys_of(r0, r1, run - r0);
+        keys_of(r0, r1, run);
         for (size_t i = r0; i < r1; ++i) {
           const uint32_t v = run[i - r0] - base;
           const uint32_t d = v >> shift;
-          if (v > range || slot[d] == end[d]) return false;
-          w[slot[d]++] = (v & low_mask) << 16 | static_cast<uint32_t>(i & 0xffffu);
+          if (v > range) return false;  // (before d indexes next: d may be past the rooms)
+          const uint64_t p = next[d];
+          if (p < (uint64_t(1) << 32)) return false;
+          w[static_cast<uint32_t>(p)] = (v & low_mask) << kChunkBits | static_cast<uint32_t>(i & kChunkMask);
+          next[d] = p + 1 - (uint64_t(1) << 32);
         }
       }
-      std::copy(slot, slot + radix, ends_.data() + j * radix);
+      for (size_t d = 0; d < radix; ++d) ends_[j * radix + d] = static_cast<uint32_t>(next[d]);
     }
     return true;
   }
@@ -185,7 +200,8 @@ class RadixArgsort {
   std::vector<uint32_t> block_min_, block_max_;
   std::vector<uint32_t> counts_;  // nblocks x radix: counts, then each block's next slot
   std::vector<uint32_t> bucket_start_;  // sort_two_level: each top-digit bucket's first slot
-  std::vector<uint32_t> room_, slot_, ends_;  // the fused key pass: rooms, next slots, segment ends
+  std::vector<uint32_t> room_, ends_;  // the fused key pass: rooms, segment ends
+  std::vector<uint64_t> next_;         // ... and per room (room left << 32 | next slot)
 };
 
 }  // namespace vob

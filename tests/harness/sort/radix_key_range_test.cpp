@@ -54,17 +54,21 @@ TEST(RadixKeyRange, GuessUsedOnlyWhenEveryKeyFallsInside) {
 TEST(RadixKeyRange, SampleThatMisjudgesTheBucketsStartsOver) {
   // Every 32nd key (so every key of the sample, one in 32 or fewer) is the lowest; the rest
   // fill the top bucket, which the sample gave no room: the scatter overflows and the key pass starts over, counting.
-  const uint32_t base = 0x40000000u, span = (1u << 23) - 1;
-  std::vector<uint32_t> keys(200000);
-  for (size_t i = 0; i < keys.size(); ++i) keys[i] = i % 32 == 0 ? base : base + span - uint32_t(i % 1000);
-  std::vector<int32_t> want(keys.size());
-  std::iota(want.begin(), want.end(), 0);
-  std::stable_sort(want.begin(), want.end(), [&](int32_t a, int32_t b) { return keys[a] < keys[b]; });
-  tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
-  RadixArgsort sort;
-  EXPECT_EQ(sorted_with_guess(sort, keys, base, base + span), want);
-  EXPECT_TRUE(sort.counted_in_key_pass());
-  EXPECT_FALSE(sort.scattered_in_key_pass());
+  // 23 bits: rooms by the low 16 bits; 24: by the low 17 (the fallback's buckets too).
+  for (const uint32_t span : {(1u << 23) - 1, (1u << 24) - 1}) {
+    const uint32_t base = 0x40000000u;
+    std::vector<uint32_t> keys(200000);
+    for (size_t i = 0; i < keys.size(); ++i)
+      keys[i] = i % 32 == 0 ? base : base + span - uint32_t(i % 1000) * 37;
+    std::vector<int32_t> want(keys.size());
+    std::iota(want.begin(), want.end(), 0);
+    std::stable_sort(want.begin(), want.end(), [&](int32_t a, int32_t b) { return keys[a] < keys[b]; });
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+    RadixArgsort sort;
+    EXPECT_EQ(sorted_with_guess(sort, keys, base, base + span), want) << span;
+    EXPECT_TRUE(sort.counted_in_key_pass());
+    EXPECT_FALSE(sort.scattered_in_key_pass());
+  }
 }
 
 }  // namespace
