@@ -56,6 +56,18 @@ void count(const uint32_t* k, size_t n, uint32_t mn, int width, uint32_t mask, s
 
 uint64_t* pairs(const HugeWords& w) { return reinterpret_cast<uint64_t*>(w.data()); }
 
+// Inserts pair p (key << 32 | id) into the sorted a[0..i), after the pairs of equal key
+// (stable): the small buckets' sort.
+inline void insert_by_key(uint64_t* a, size_t i, uint64_t p) {
+  for (; i > 0 && (a[i - 1] >> 32) > (p >> 32); --i) a[i] = a[i - 1];
+  a[i] = p;
+}
+
+// The ids (low words) of the first m pairs of a.
+inline void write_ids(const uint64_t* a, size_t m, int32_t* out) {
+  for (size_t i = 0; i < m; ++i) out[i] = static_cast<int32_t>(static_cast<uint32_t>(a[i]));
+}
+
 // One scatter pass over [lo, hi): `off` holds the block's next slot per digit. Between
 // passes a key and its id travel as one 64-bit word (key high): one write stream per digit,
 // not two. The first pass reads the bare keys (the id is the index), the last writes ids.
@@ -76,13 +88,8 @@ void scatter(const uint32_t* k, const uint64_t* sp, uint64_t* dp, int32_t* out, 
 void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* out, std::vector<uint64_t>& tmp) {
   if (m < kSmallBucket) {
     uint64_t a[kSmallBucket];
-    for (size_t i = 0; i < m; ++i) {  // stable insertion by key (the high word)
-      const uint64_t p = src[i];
-      size_t j = i;
-      for (; j > 0 && (a[j - 1] >> 32) > (p >> 32); --j) a[j] = a[j - 1];
-      a[j] = p;
-    }
-    for (size_t i = 0; i < m; ++i) out[i] = static_cast<int32_t>(static_cast<uint32_t>(a[i]));
+    for (size_t i = 0; i < m; ++i) insert_by_key(a, i, src[i]);
+    write_ids(a, m, out);
     return;
   }
   const int w0 = (low + 1) / 2;
@@ -128,12 +135,8 @@ void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t*
   if (m < kSmallBucket) {
     uint64_t a[kSmallBucket];
     size_t i = 0;
-    each([&](uint64_t p) {  // stable insertion by key (the high word)
-      size_t j = i++;
-      for (; j > 0 && (a[j - 1] >> 32) > (p >> 32); --j) a[j] = a[j - 1];
-      a[j] = p;
-    });
-    for (size_t i = 0; i < m; ++i) out[i] = static_cast<int32_t>(static_cast<uint32_t>(a[i]));
+    each([&](uint64_t p) { insert_by_key(a, i++, p); });
+    write_ids(a, m, out);
     return;
   }
   const int w0 = (low + 1) / 2;

@@ -4,14 +4,23 @@
 // needs between construction and draw().
 #pragma once
 
-#include <gtest/gtest.h>
-
 #include <cstdint>
 #include <vector>
 
+#include "harness/gl/osmesa_context.h"
 #include "harness/gl/shader_program.h"
 
 namespace vob::test {
+
+// The llvmpipe context (OSMesa, GL 3.3 core, 24-bit depth, 8-bit stencil) these tests draw
+// with, made on first use and shared by them; made current again on every call, since
+// other tests in the binary make contexts of their own. Throws without OSMesa.
+inline gl::Functions& llvmpipe() {
+  static gl::OsmesaContext ctx(gl::ContextRequest{16, 16, 3, 3, true, 24, 8});
+  static gl::Functions f(ctx);
+  ctx.make_current();
+  return f;
+}
 
 class IdFramebuffer {
  public:

@@ -42,8 +42,7 @@ struct Vertex {
 
 // Item buffer and coverage count of `tris` drawn in order by llvmpipe.
 void draw_gl(const std::vector<Tri>& tris, std::vector<uint32_t>& colour, std::vector<uint8_t>& count) {
-  static gl::OsmesaContext ctx(gl::ContextRequest{16, 16, 3, 3, true, 24, 8});
-  static gl::Functions f(ctx);
+  gl::Functions& f = test::llvmpipe();
   static GLuint program = gl::link_program(f, {gl::shader_stage(GL_VERTEX_SHADER, {kVert}),
                                                gl::shader_stage(GL_FRAGMENT_SHADER, {kFrag})});
   const gl::Pow2Viewport vp(W, H);
@@ -136,7 +135,7 @@ std::vector<Tri> triangles(int kind, uint64_t seed, int n) {
 
 TEST(LlvmpipeCoverage, GlRuleMatchesEveryPixel) {
   try {
-    gl::OsmesaContext probe(gl::ContextRequest{16, 16, 3, 3, true, 24, 8});
+    test::llvmpipe();
   } catch (const std::runtime_error& e) {
     GTEST_SKIP() << "no OSMesa context: " << e.what();
   }
