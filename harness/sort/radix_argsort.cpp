@@ -63,6 +63,17 @@ inline void insert_by_key(uint64_t* a, size_t i, uint64_t p) {
   a[i] = p;
 }
 
+// Both digit counts turned into starting slots, over digits 0..last (the low digit's
+// range, which holds the high digit's).
+inline void exclusive_prefix(uint32_t* c0, uint32_t* c1, uint32_t last) {
+  uint32_t s0 = 0, s1 = 0;
+  for (uint32_t d = 0; d <= last; ++d) {
+    const uint32_t a = c0[d], b = c1[d];
+    c0[d] = s0, c1[d] = s1;
+    s0 += a, s1 += b;
+  }
+}
+
 // The ids (low words) of the first m pairs of a.
 inline void write_ids(const uint64_t* a, size_t m, int32_t* out) {
   for (size_t i = 0; i < m; ++i) out[i] = static_cast<int32_t>(static_cast<uint32_t>(a[i]));
@@ -100,12 +111,7 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* o
     ++c0[x & m0];
     ++c1[(x >> w0) & m1];
   }
-  uint32_t s0 = 0, s1 = 0;
-  for (uint32_t d = 0; d <= m0; ++d) {
-    const uint32_t a = c0[d], b = c1[d];
-    c0[d] = s0, c1[d] = s1;
-    s0 += a, s1 += b;
-  }
+  exclusive_prefix(c0, c1, m0);
   if (tmp.size() < m) tmp.resize(m);
   for (size_t i = 0; i < m; ++i) tmp[c0[(static_cast<uint32_t>(src[i] >> 32) - mn) & m0]++] = src[i];
   for (size_t i = 0; i < m; ++i) {
@@ -158,12 +164,7 @@ void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t*
     ++c1[(x >> w0) & m1];
   }
   for (uint32_t d = 0; d <= m1; ++d) c1[d] += c2[d];
-  uint32_t s0 = 0, s1 = 0;
-  for (uint32_t d = 0; d <= m0; ++d) {
-    const uint32_t a = c0[d], b = c1[d];
-    c0[d] = s0, c1[d] = s1;
-    s0 += a, s1 += b;
-  }
+  exclusive_prefix(c0, c1, m0);
   if (tmp.size() < m) tmp.resize(m);
   if ((nchunks << kBits) <= (size_t(1) << 24) && low - w0 <= 8) {
     // Ids below 2^24: between the passes the high digit and the id share a 32-bit word,
