@@ -39,53 +39,10 @@ SampleRect reach(const SampleFrame& frame, const ProjectedVertex* q, int n) {
                     int(std::min(x1, frame.cols() - 1.0)), int(std::min(y1, frame.rows() - 1.0))};
 }
 
-// A triangle with every point in front of the eye covers exactly the sample centres inside
-// its projection. Its rectangle is shrunk to the bounding box of the centres not clearly
-// outside (by 1e-3 pixel, far above the projection's and this test's rounding and the exact
-// test's eta), row by row: faces lying between sample centres (a tenth of the helix's items)
-// then cost no setup, fewer faces cross into a second band, and the scan still decides every
-// sample it is given.
-SampleRect shrink(const ProjectedVertex* q, const SampleRect& r) {
-  if (r.empty() || r.y1 - r.y0 >= 32) return r;
-  const double a2 = (q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x);
-  if (!(std::fabs(a2) > 1e-6)) return r;  // nearly degenerate: left to the scan
-  const double sg = a2 > 0 ? 1 : -1;
-  double ex[3], ey[3], ec[3], inv[3];
-  for (int i = 0; i < 3; ++i) {  // ex x + ey y + ec >= 0 inside: sg * cross(b - a, c - a) + margin
-    const ProjectedVertex &a = q[i], &b = q[(i + 1) % 3];
-    ex[i] = -(b.y - a.y) * sg, ey[i] = (b.x - a.x) * sg;
-    if (ex[i] == 0) return r;  // a horizontal edge: left to the scan
-    ec[i] = -(ex[i] * a.x + ey[i] * a.y) + 1e-3 * (std::fabs(ex[i]) + std::fabs(ey[i]));  // L1 >= |b - a|
-    inv[i] = 1 / ex[i];
-  }
-  // Row by row with selects (branches on the edges' signs were mispredicted): sample centres
-  // cx in [lo, hi], an edge with ex > 0 bounding from below, ex < 0 from above. Clamped to
-  // the rectangle first, so the truncations below (floor of a shifted positive value) are
-  // within int range.
-  constexpr double kOff = 1 << 20;  // > any image side
-  int x0 = r.x1 + 1, x1 = r.x0 - 1, y0 = r.y1 + 1, y1 = r.y0 - 1;
-  for (int y = r.y0; y <= r.y1; ++y) {
-    const double cy = y + 0.5;
-    double lo = r.x0 + 0.5, hi = r.x1 + 0.5;
-    for (int i = 0; i < 3; ++i) {
-      const double v = -(ey[i] * cy + ec[i]) * inv[i];  // inside: ex * cx >= -(ey cy + ec)
-      lo = ex[i] > 0 && v > lo ? v : lo;
-      hi = ex[i] < 0 && v < hi ? v : hi;
-    }
-    lo = std::min(lo, r.x1 + 1.5), hi = std::max(hi, r.x0 - 0.5);
-    const int a = int(kOff) - int(kOff - (lo - 0.5));  // ceil(lo - 0.5), lo - 0.5 >= 0
-    const int b = int((hi - 0.5) + kOff) - int(kOff);  // floor(hi - 0.5), hi - 0.5 >= -1
-    const bool row = a <= b;
-    x0 = row && a < x0 ? a : x0, x1 = row && b > x1 ? b : x1;
-    y0 = row && y < y0 ? y : y0, y1 = row ? y : y1;
-  }
-  return x0 <= x1 ? SampleRect{x0, y0, x1, y1} : SampleRect{};
-}
-
 }  // namespace
 
 void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b,
-               int rows_per_band, bool cull) {
+               int rows_per_band) {
   b.rows_per_band = rows_per_band;
   b.bands = (frame.rows() + b.rows_per_band - 1) / b.rows_per_band;
   const std::vector<Vec3>& pts = fd.scene.mesh().points;
@@ -128,7 +85,6 @@ void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<i
       for (int j = 0; j < 4; ++j) item.ids[j] = ids.id[j];
       if (m == 3) item.ids[3] = q[0].in_front && q[1].in_front && q[2].in_front ? kFrontTriangle : kTriangle;
       item.rect = reach(frame, q, m);
-      if (cull && item.ids[3] == kFrontTriangle && frame.rule() == RasterRule::exact) item.rect = shrink(q, item.rect);
       const SampleRect& r = item.rect;
       if (!r.empty())
         for (int band = r.y0 / b.rows_per_band; band <= r.y1 / b.rows_per_band; ++band) ++cnt[band];

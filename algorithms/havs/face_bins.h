@@ -53,11 +53,9 @@ struct FaceBins {
 constexpr int kBandRows = 16, kBandRowsK2 = 32;
 
 // Bins the faces of `order` (drawing order) for `frame` into `b` (its buffers reused);
-// parallel under the TBB limit, the result independent of the thread count. `cull`: the
-// rectangles of small triangles shrunk to the sample centres they may contain (face_bins.cpp;
-// the same fragments, checked against cull = false in havs_triangle_scan_test).
+// parallel under the TBB limit, the result independent of the thread count.
 void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b,
-               int rows_per_band = kBandRows, bool cull = true);
+               int rows_per_band = kBandRows);
 
 // Calls visit(local pixel index, entry) for every fragment of band q, in drawing order.
 // Triangles with every point in front of the eye take TriangleScan (the same fragments as
