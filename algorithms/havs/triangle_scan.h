@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
@@ -45,8 +46,9 @@ class TriangleScan {
       r.finite = std::isfinite(r.slope) && std::isfinite(r.lo0) && std::isfinite(r.hi0);
       const double slack = 1e-12 * (std::fabs(e.b) * ymax + std::fabs(e.k) + e.eta) * std::fabs(inv_a) + 1e-9;
       r.slack = e.a > 0 ? slack : -slack;
-      r.neg = e.a < 0;
       r.sign = e.a > 0 ? 1.0 : -1.0;
+      r.off_pos = e.a > 0 ? 0.0 : std::numeric_limits<double>::infinity();
+      r.off_neg = e.a > 0 ? std::numeric_limits<double>::infinity() : 0.0;
       special_ |= !r.finite;
     }
     return true;
@@ -92,24 +94,27 @@ class TriangleScan {
   void row_ranges(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const {
     if (special_) return row_ranges_any(ya, ny, clip, p0, p1, c0, c1);
     // Every edge slanted and finite (nearly all faces): the same bounds as row_ranges_any,
-    // row by row without branches. An edge with a < 0 bounds x from above; it is applied
-    // as a lower bound of -x, so both kinds are one max with the sign folded in (negation
-    // is exact, so every bound is row_ranges_any's, floor_near for floor_near).
+    // row by row without branches. An edge with a < 0 bounds x from above; it is applied as
+    // a lower bound of -x, so both kinds are one max with the sign folded in (negation is
+    // exact). floor_near is monotonic, so the max of the edges' floors is the floor of their
+    // max: per row the arguments are combined first (an edge of the other kind adds +-inf),
+    // then rounded once per bound.
     const int lim = frame_->cols();
+    constexpr double inf = std::numeric_limits<double>::infinity();
     for (int r = 0; r < ny; ++r) {
       const double y = ya + r + 0.5;
-      int lo_pos = clip.x0, lo_neg = -clip.x1, in_pos = clip.x0, in_neg = -clip.x1;
+      double u_pos = inf, u_neg = inf, w_pos = -inf, w_neg = -inf;
       for (int i = 0; i < 3; ++i) {
-        const Row& w = row_[i];
-        const double lo = w.lo0 - w.slope * y, hi = w.hi0 - w.slope * y;
-        const int p = -floor_near(-w.sign * (lo - w.slack - 0.5), lim);
-        const int c = floor_near(w.sign * (hi + w.slack - 0.5), lim) + 1;
-        lo_pos = w.neg ? lo_pos : std::max(lo_pos, p);
-        lo_neg = w.neg ? std::max(lo_neg, p) : lo_neg;
-        in_pos = w.neg ? in_pos : std::max(in_pos, c);
-        in_neg = w.neg ? std::max(in_neg, c) : in_neg;
+        const Row& e = row_[i];
+        const double lo = e.lo0 - e.slope * y, hi = e.hi0 - e.slope * y;
+        const double u = -e.sign * (lo - e.slack - 0.5), w = e.sign * (hi + e.slack - 0.5);
+        u_pos = std::min(u_pos, u + e.off_pos), u_neg = std::min(u_neg, u + e.off_neg);
+        w_pos = std::max(w_pos, w - e.off_pos), w_neg = std::max(w_neg, w - e.off_neg);
       }
-      p0[r] = lo_pos, p1[r] = -lo_neg, c0[r] = in_pos, c1[r] = -in_neg;
+      p0[r] = std::max(clip.x0, -floor_near(u_pos, lim));
+      p1[r] = std::min(clip.x1, floor_near(u_neg, lim));
+      c0[r] = std::max(clip.x0, floor_near(w_pos, lim) + 1);
+      c1[r] = std::min(clip.x1, -(floor_near(w_neg, lim) + 1));
     }
   }
   // Any edges, flat (a = 0) or with non-finite forms among them.
@@ -164,8 +169,9 @@ class TriangleScan {
   PolygonRaster::Edge e_[3];
   struct Row {
     double lo0 = 0, hi0 = 0, slope = 0, slack = 0;  // slack signed as a
-    double sign = 1;                                // of a
-    bool flat = false, finite = true, neg = false;  // neg: a < 0
+    double sign = 1;                     // of a
+    double off_pos = 0, off_neg = 0;     // 0 for the edge's own kind (a > 0: pos), inf else
+    bool flat = false, finite = true;
   };
   Row row_[3];
   bool special_ = false;  // some edge flat or not finite: row_ranges_any
