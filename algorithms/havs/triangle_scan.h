@@ -56,8 +56,8 @@ class TriangleScan {
 
   // emit(sx, sy, t, X) for every covered sample of `clip` (within the frame), row by row
   // bottom up, left to right, as PolygonRaster::scan. len: |X| per sample (perspective).
-  // The ranges of up to kRows rows are made edge by edge (each edge's kind decided once,
-  // not per row: faces are a few rows tall, and the per-row branches mispredicted).
+  // The ranges of up to kRows rows are made first (row_ranges: without branches on the
+  // edges' kinds, which mispredicted; faces are a few rows tall).
   template <class Emit>
   void scan(const SampleRect& clip, const double* len, Emit&& emit) const {
     const SampleFrame& fr = *frame_;
