@@ -10,22 +10,23 @@ namespace vob::havs {
 
 namespace {
 
-// Rows per band: 16 rows of 512 pixels with k = 8 entries is 1 MB of k-buffer, cache sized.
-constexpr int kBandRows = 16;
 constexpr size_t kChunk = 8192;  // faces per binning task; chunks keep the drawing order
 
 // The sample centres a face with projected points q[0..n) may cover: the range that
 // PolygonRaster::setup's rejection test (may_cover_a_sample) uses, with its margin; the whole
 // frame when a point is not in front of the eye (the projection then says nothing).
 SampleRect reach(const SampleFrame& frame, const ProjectedVertex* q, int n) {
-  double lx = 0, hx = 0, ly = 0, hy = 0;
-  for (int i = 0; i < n; ++i) {
-    if (!q[i].in_front) return frame.bounds();
-    if (i == 0 || q[i].x < lx) lx = q[i].x;
-    if (i == 0 || q[i].x > hx) hx = q[i].x;
-    if (i == 0 || q[i].y < ly) ly = q[i].y;
-    if (i == 0 || q[i].y > hy) hy = q[i].y;
+  // min / max as selects (the compares of points at random were mispredicted branches).
+  double lx = q[0].x, hx = q[0].x, ly = q[0].y, hy = q[0].y;
+  bool front = q[0].in_front;
+  for (int i = 1; i < n; ++i) {
+    front &= q[i].in_front;
+    lx = q[i].x < lx ? q[i].x : lx;
+    hx = q[i].x > hx ? q[i].x : hx;
+    ly = q[i].y < ly ? q[i].y : ly;
+    hy = q[i].y > hy ? q[i].y : hy;
   }
+  if (!front) return frame.bounds();
   double m = 1e-6 * (1.0 + std::max({std::fabs(lx), std::fabs(hx), std::fabs(ly), std::fabs(hy)}));
   // gl rule: snapping moves a vertex by up to 1/512 pixel, so the covered centres reach that
   // far beyond the exact projection.
@@ -40,8 +41,9 @@ SampleRect reach(const SampleFrame& frame, const ProjectedVertex* q, int n) {
 
 }  // namespace
 
-void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b) {
-  b.rows_per_band = kBandRows;
+void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b,
+               int rows_per_band) {
+  b.rows_per_band = rows_per_band;
   b.bands = (frame.rows() + b.rows_per_band - 1) / b.rows_per_band;
   const std::vector<Vec3>& pts = fd.scene.mesh().points;
   b.projected.resize(pts.size());

@@ -46,9 +46,16 @@ struct FaceBins {
   }
 };
 
+// Rows per band: 16 rows of 512 pixels with k = 8 entries is 1 MB of k-buffer, cache sized.
+// At k = 2, 32 rows are 768 KB of pixel records, still within L2, and a face crossing a band
+// edge is set up once per band: at 16 rows that was a fifth of the items on the 200k helix
+// (528k items for 422k faces).
+constexpr int kBandRows = 16, kBandRowsK2 = 32;
+
 // Bins the faces of `order` (drawing order) for `frame` into `b` (its buffers reused);
 // parallel under the TBB limit, the result independent of the thread count.
-void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b);
+void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<int32_t>& order, FaceBins& b,
+               int rows_per_band = kBandRows);
 
 // Calls visit(local pixel index, entry) for every fragment of band q, in drawing order.
 // Triangles with every point in front of the eye take TriangleScan (the same fragments as

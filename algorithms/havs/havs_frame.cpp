@@ -184,6 +184,10 @@ RenderStats render_band2(const FaceData& fd, const SampleFrame& frame, const Fac
                          const Shading& shade, Image& image) {
   const int row0 = q * b.rows_per_band, row1 = std::min(frame.rows(), row0 + b.rows_per_band);
   const int64_t np = int64_t(row1 - row0) * frame.cols();
+  if (b.start[q] == b.start[q + 1]) {  // no face reaches the band (a third on the helix)
+    std::fill_n(image.rgb.begin() + 3 * int64_t(row0) * frame.cols(), 3 * np, 0.f);
+    return {};
+  }
   // Per-thread buffer kept from band to band and frame to frame (fresh ones cost page
   // faults every frame).
   thread_local std::vector<Pair2> buffer;
@@ -259,7 +263,7 @@ RenderStats render_kbuffer(const FaceData& fd, const Camera& view,
   const SampleFrame frame(view, 1, rule);
   FaceBins local;
   FaceBins& b = scratch ? *scratch : local;
-  bin_faces(fd, frame, face_order, b);
+  bin_faces(fd, frame, face_order, b, k == 2 ? kBandRowsK2 : kBandRows);
   image.width = frame.cols();
   image.height = frame.rows();
   image.rgb.resize(size_t(3) * frame.num_samples());  // every pixel is stored below

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
@@ -29,10 +30,12 @@ class TriangleScan {
     if (!PolygonRaster::depth_plane(frame, v, 3, plane_)) return false;
     if (!PolygonRaster::triangle_edges(frame, v[0], v[1], v[2], e_)) return false;
     const double ymax = frame.rows() + 1.0;
+    special_ = false;
     for (int i = 0; i < 3; ++i) {
       const PolygonRaster::Edge& e = e_[i];
       Row& r = row_[i];
       r.flat = e.a == 0;
+      special_ |= r.flat;
       if (r.flat) continue;
       // lo(y) = (-eta - b y - k) / a and hi(y) = (eta - b y - k) / a as linear forms in y;
       // the slack bounds their rounding (relative to the terms' magnitudes) many times over.
@@ -43,14 +46,18 @@ class TriangleScan {
       r.finite = std::isfinite(r.slope) && std::isfinite(r.lo0) && std::isfinite(r.hi0);
       const double slack = 1e-12 * (std::fabs(e.b) * ymax + std::fabs(e.k) + e.eta) * std::fabs(inv_a) + 1e-9;
       r.slack = e.a > 0 ? slack : -slack;
+      r.sign = e.a > 0 ? 1.0 : -1.0;
+      r.off_pos = e.a > 0 ? 0.0 : std::numeric_limits<double>::infinity();
+      r.off_neg = e.a > 0 ? std::numeric_limits<double>::infinity() : 0.0;
+      special_ |= !r.finite;
     }
     return true;
   }
 
   // emit(sx, sy, t, X) for every covered sample of `clip` (within the frame), row by row
   // bottom up, left to right, as PolygonRaster::scan. len: |X| per sample (perspective).
-  // The ranges of up to kRows rows are made edge by edge (each edge's kind decided once,
-  // not per row: faces are a few rows tall, and the per-row branches mispredicted).
+  // The ranges of up to kRows rows are made first (row_ranges: without branches on the
+  // edges' kinds, which mispredicted; faces are a few rows tall).
   template <class Emit>
   void scan(const SampleRect& clip, const double* len, Emit&& emit) const {
     const SampleFrame& fr = *frame_;
@@ -85,6 +92,33 @@ class TriangleScan {
   // (within clip's columns); p0 > p1 where none is possible. Order-independent over edges:
   // bounds only tighten, and an emptied range stays empty.
   void row_ranges(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const {
+    if (special_) return row_ranges_any(ya, ny, clip, p0, p1, c0, c1);
+    // Every edge slanted and finite (nearly all faces): the same bounds as row_ranges_any,
+    // row by row without branches. An edge with a < 0 bounds x from above; it is applied as
+    // a lower bound of -x, so both kinds are one max with the sign folded in (negation is
+    // exact). floor_near is monotonic, so the max of the edges' floors is the floor of their
+    // max: per row the arguments are combined first (an edge of the other kind adds +-inf),
+    // then rounded once per bound.
+    const int lim = frame_->cols();
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    for (int r = 0; r < ny; ++r) {
+      const double y = ya + r + 0.5;
+      double u_pos = inf, u_neg = inf, w_pos = -inf, w_neg = -inf;
+      for (int i = 0; i < 3; ++i) {
+        const Row& e = row_[i];
+        const double lo = e.lo0 - e.slope * y, hi = e.hi0 - e.slope * y;
+        const double u = -e.sign * (lo - e.slack - 0.5), w = e.sign * (hi + e.slack - 0.5);
+        u_pos = std::min(u_pos, u + e.off_pos), u_neg = std::min(u_neg, u + e.off_neg);
+        w_pos = std::max(w_pos, w - e.off_pos), w_neg = std::max(w_neg, w - e.off_neg);
+      }
+      p0[r] = std::max(clip.x0, -floor_near(u_pos, lim));
+      p1[r] = std::min(clip.x1, floor_near(u_neg, lim));
+      c0[r] = std::max(clip.x0, floor_near(w_pos, lim) + 1);
+      c1[r] = std::min(clip.x1, -(floor_near(w_neg, lim) + 1));
+    }
+  }
+  // Any edges, flat (a = 0) or with non-finite forms among them.
+  void row_ranges_any(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const {
     for (int r = 0; r < ny; ++r) p0[r] = c0[r] = clip.x0, p1[r] = c1[r] = clip.x1;
     const int lim = frame_->cols();
     for (int i = 0; i < 3; ++i) {
@@ -135,9 +169,12 @@ class TriangleScan {
   PolygonRaster::Edge e_[3];
   struct Row {
     double lo0 = 0, hi0 = 0, slope = 0, slack = 0;  // slack signed as a
+    double sign = 1;                     // of a
+    double off_pos = 0, off_neg = 0;     // 0 for the edge's own kind (a > 0: pos), inf else
     bool flat = false, finite = true;
   };
   Row row_[3];
+  bool special_ = false;  // some edge flat or not finite: row_ranges_any
 };
 
 }  // namespace vob::havs
