@@ -1,6 +1,8 @@
 #include "algorithms/stencil/stencil_xmpvo.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 #include <memory>
 
 #include "algorithms/mpvo/mpvo_core.h"
@@ -31,7 +33,14 @@ class StencilXmpvo final : public Orderer {
     { auto p = clock.phase("exterior faces"); ext_ = &scene.exterior_faces(); }
     auto p = clock.phase("upload");
     x_.backend = make_layer_backend(x_.backend_name, "stencil-xmpvo");
-    x_.backend->set_primitives(ext_->corners, ext_->size);
+    find_coincident();
+    std::vector<Vec3> corners;
+    std::vector<int8_t> sizes;
+    for (int32_t i : prim_) {
+      corners.insert(corners.end(), &ext_->corners[4 * size_t(i)], &ext_->corners[4 * size_t(i) + 4]);
+      sizes.push_back(ext_->size[size_t(i)]);
+    }
+    x_.backend->set_primitives(corners, sizes);
     x_.backend->set_facing(&front_);  // touching volumes: coplanar ties by facing
     Aabb box;  // the GL backend's bounding sphere (gl_backend.cpp): the same 24-bit depths
     for (size_t i = 0; i < ext_->size.size(); ++i)
@@ -42,20 +51,28 @@ class StencilXmpvo final : public Orderer {
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
     Ordering out;
-    const size_t b = ext_->face.size();
+    const size_t b = prim_.size();
     {
       auto p = clock.phase("I create partial order");
       core_.create_partial_order(view);
       // GL: arrows and facing as llvmpipe's snapped faces wind (snapped_signs.h).
       if (x_.backend_name == "gl") snapped_flips_ = apply_snapped_signs(core_, view, snapped_);
       front_.resize(b);
-      for (size_t i = 0; i < b; ++i) front_[i] = core_.face_sign(ext_->face[i]) > 0;
+      for (size_t i = 0; i < b; ++i) front_[i] = core_.face_sign(ext_->face[size_t(prim_[i])]) > 0;
     }
     {
       auto p = clock.phase("render");
       x_.backend->begin_frame(view);
       last_.assign(size_t(view.width) * view.height, 0);
       pairs_.clear();
+      // Coincident faces (touching volumes with duplicated nodes): a shared face, crossed
+      // from the cell it faces away from (the ray leaves it there) into the other one, as
+      // MPVO's arrow; edge-on (no sign) they cover nothing and give nothing.
+      for (const auto& [i, j] : coincident_) {
+        const int si = core_.face_sign(ext_->face[size_t(i)]), sj = core_.face_sign(ext_->face[size_t(j)]);
+        if (si < 0 && sj > 0) pairs_.push_back((uint64_t(uint32_t(ext_->cell[size_t(i)])) << 32) | uint32_t(ext_->cell[size_t(j)]));
+        if (sj < 0 && si > 0) pairs_.push_back((uint64_t(uint32_t(ext_->cell[size_t(j)])) << 32) | uint32_t(ext_->cell[size_t(i)]));
+      }
     }
     int64_t pixel_pairs = 0, dropped_pairs = 0, swapped_pairs = 0;
     const bool gl = x_.backend_name == "gl";
@@ -63,17 +80,17 @@ class StencilXmpvo final : public Orderer {
       gl_frame_ = std::make_unique<SampleFrame>(view, 1, RasterRule::gl);
       gl_range_ = gl_depth_range(view, gl_centre_, gl_radius_);
     }
-    const PixelSink sink = [&](int64_t pixel, int32_t face, int) {
-      const int32_t prev = last_[size_t(pixel)];
+    const PixelSink sink = [&](int64_t pixel, int32_t prim, int) {
+      const int32_t prev = last_[size_t(pixel)], face = prim_[size_t(prim)];
       last_[size_t(pixel)] = face + 1;
-      if (gl && prev && front_[size_t(prev - 1)] && !front_[size_t(face)] && coplanar(prev - 1, face)) {
+      if (gl && prev && ext_front(prev - 1) && !ext_front(face) && coplanar(prev - 1, face)) {
         // Touching volumes: the depth test broke a tie between coplanar faces the other
         // way than the facing rule (the back face is nearer): the pair as it should be.
         ++swapped_pairs;
         pairs_.push_back((uint64_t(uint32_t(ext_->cell[size_t(face)])) << 32) | uint32_t(ext_->cell[size_t(prev - 1)]));
         return;
       }
-      if (prev && !front_[size_t(prev - 1)] && front_[size_t(face)]) {
+      if (prev && !ext_front(prev - 1) && ext_front(face)) {
         if (gl && !ordered_by_rule(prev - 1, face, pixel)) {
           ++dropped_pairs;
           return;
@@ -102,11 +119,12 @@ class StencilXmpvo final : public Orderer {
     }
     // Faces the layer extraction had to force out of a visibility cycle: a cycle it met and
     // broke, reported by the cells they bound (as stencil-layers reports its triangles).
-    for (int32_t f : result.forced) out.cycles.add({ext_->cell[size_t(f)]});
+    for (int32_t f : result.forced) out.cycles.add({ext_->cell[size_t(prim_[size_t(f)])]});
     core_.add_counters(out);
     add_layer_counters(result, out);
     auto& k = out.counters;
-    k["exterior_faces"] = double(b);
+    k["exterior_faces"] = double(ext_->face.size());
+    k["coincident_face_pairs"] = double(coincident_.size());
     if (x_.backend_name == "gl") k["snapped_sign_flips"] = double(snapped_flips_);
     k["pixel_pairs"] = double(pixel_pairs);
     if (gl) k["dropped_pairs"] = double(dropped_pairs);  // ordered otherwise by the gl rule
@@ -127,7 +145,52 @@ class StencilXmpvo final : public Orderer {
   Extraction x_;
   mpvo::MpvoCore core_;
   const ExteriorFaces* ext_ = nullptr;  // the scene's exterior faces
-  std::vector<uint8_t> front_;
+  std::vector<uint8_t> front_;  // per primitive (layered exterior face): facing the eye
+  std::vector<int32_t> prim_;   // primitive -> exterior face: all but coincident pairs
+  std::vector<std::pair<int32_t, int32_t>> coincident_;  // exterior faces with the same points
+  std::vector<int32_t> prim_of_;  // exterior face -> primitive, -1 for coincident ones
+  bool ext_front(int32_t f) const { return front_[size_t(prim_of_[size_t(f)])]; }
+  // Exterior faces with exactly the same points (two volumes meshed with duplicated nodes
+  // that touch face to face): a ray meets both at one depth, and their depth-buffer ties
+  // (llvmpipe's float planes differ with the vertex order: 1 step either way, or equal and
+  // then taken as an order by the layering's G != C test) made layering cycles that the
+  // gl rule does not have. They are a shared face: related as MPVO relates one, not layered.
+  void find_coincident() {
+    const size_t n = ext_->face.size();
+    std::vector<std::pair<std::array<Vec3, 4>, int32_t>> keys(n);
+    for (size_t i = 0; i < n; ++i) {
+      std::array<Vec3, 4> k{};
+      const int m = ext_->size[i];
+      const double inf = std::numeric_limits<double>::infinity();  // after any point
+      for (int j = 0; j < 4; ++j) k[size_t(j)] = j < m ? ext_->corners[4 * i + size_t(j)] : Vec3{inf, inf, inf};
+      std::sort(k.begin(), k.end(), [](const Vec3& a, const Vec3& b) { return lex_less(a, b); });
+      keys[i] = {k, int32_t(i)};
+    }
+    auto less = [](const std::array<Vec3, 4>& a, const std::array<Vec3, 4>& b) {
+      for (int j = 0; j < 4; ++j) {
+        if (lex_less(a[size_t(j)], b[size_t(j)])) return true;
+        if (lex_less(b[size_t(j)], a[size_t(j)])) return false;
+      }
+      return false;
+    };
+    std::sort(keys.begin(), keys.end(), [&](const auto& a, const auto& b) {
+      return less(a.first, b.first) || (!less(b.first, a.first) && a.second < b.second);
+    });
+    coincident_.clear();
+    prim_of_.assign(n, 0);
+    for (size_t i = 0; i + 1 < n; ++i) {
+      const int32_t a = keys[i].second, c = keys[i + 1].second;
+      if (ext_->size[size_t(a)] == ext_->size[size_t(c)] && !less(keys[i].first, keys[i + 1].first) &&
+          (i + 2 >= n || less(keys[i + 1].first, keys[i + 2].first)) && (i == 0 || less(keys[i - 1].first, keys[i].first))) {
+        coincident_.push_back({a, c});
+        prim_of_[size_t(a)] = prim_of_[size_t(c)] = -1;
+        ++i;
+      }
+    }
+    prim_.clear();
+    for (size_t i = 0; i < n; ++i)
+      if (prim_of_[i] == 0) prim_of_[i] = int32_t(prim_.size()), prim_.push_back(int32_t(i));
+  }
   std::vector<int64_t> snapped_;  // gl: snapped window positions of the mesh points
   int64_t snapped_flips_ = 0;
   // GL backend: llvmpipe interpolates depth in floats from the framebuffer origin, which
