@@ -16,7 +16,7 @@
 //   compares round-half-even(float(z * 16777215)), z clamped to [0, 1].
 // The plane's value at the origin is where the precision goes: on a steep triangle far
 // from it a0 is large and its rounding is tens of 24-bit steps at the pixel (the source's
-// own FIXME in calc_coef4), which a plane evaluated in doubles does not reproduce.
+// own note in calc_coef4 says as much), which a plane evaluated in doubles does not reproduce.
 #pragma once
 #include <cstdint>
 

@@ -9,6 +9,7 @@
 
 #include "harness/gl/osmesa_context.h"
 #include "harness/gl/shader_program.h"
+#include "harness/gl/window_vertices.h"
 
 namespace vob::test {
 
@@ -20,6 +21,17 @@ inline gl::Functions& llvmpipe() {
   static gl::Functions f(ctx);
   ctx.make_current();
   return f;
+}
+
+// The vertices of `tris` for IdFramebuffer: each corner's window position (t.x[k], t.y[k])
+// in the NDC of `vp`, made into a Vertex by make(ndc, triangle index, corner).
+template <class Vertex, class Tri, class Make>
+std::vector<Vertex> triangle_vertices(const std::vector<Tri>& tris, const gl::Pow2Viewport& vp, Make&& make) {
+  std::vector<Vertex> v;
+  v.reserve(tris.size() * 3);
+  for (size_t t = 0; t < tris.size(); ++t)
+    for (int k = 0; k < 3; ++k) v.push_back(make(vp.ndc(tris[t].x[k], tris[t].y[k]), t, k));
+  return v;
 }
 
 class IdFramebuffer {

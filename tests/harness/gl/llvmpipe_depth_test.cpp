@@ -49,12 +49,9 @@ void draw_gl(const std::vector<Tri>& tris, std::vector<uint32_t>& item, std::vec
   static GLuint program = gl::link_program(f, {gl::shader_stage(GL_VERTEX_SHADER, {kVert}),
                                                gl::shader_stage(GL_FRAGMENT_SHADER, {kFrag})});
   const gl::Pow2Viewport vp(W, H);
-  std::vector<Vertex> v;
-  for (size_t t = 0; t < tris.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const auto n = vp.ndc(tris[t].x[k], tris[t].y[k]);
-      v.push_back({n[0], n[1], float(2 * tris[t].depth[k] - 1), uint32_t(t)});
-    }
+  const auto v = test::triangle_vertices<Vertex>(tris, vp, [&](auto n, size_t t, int k) {
+    return Vertex{n[0], n[1], float(2 * tris[t].depth[k] - 1), uint32_t(t)};
+  });
   test::IdFramebuffer fb(f, program, W, H, vp.w, vp.h, v, 3);
   ASSERT_TRUE(fb.complete());
   f.glEnable(GL_DEPTH_TEST);
