@@ -20,12 +20,13 @@ class StencilXmpvo final : public Orderer {
  public:
   explicit StencilXmpvo(const ResolvedParams& p) : x_(p) {}
 
-  // gl: no claim, although `check --raster gl` finds no violation at 512x512 on helix, zoo,
-  // gap and the TetGen meshes, nor in any 48x48 conformance view whose snapped cells do not
-  // overlap: where snapping inverts cells thinner than its grid (small images, slivers,
-  // touching volumes) the snapped mesh has no visibility order (docs/design-notes.md,
-  // issue 18), and at 48x48 five conformance scenes have no view where it has one.
-  Claims claims() const override { return mpvo::core_claims(false, x_.backend_name == "software"); }
+  // Image-exact for the backend's own rule: the harness rasterizer's (software) or the gl
+  // sampling rule, what llvmpipe draws (gl; stencil_xmpvo.h says what the claim assumes).
+  Claims claims() const override {
+    Claims c = mpvo::core_claims(false, true);
+    if (x_.backend_name == "gl") c.image_exact_under = RasterRule::gl;
+    return c;
+  }
 
   void prepare(const Scene& scene, PhaseClock& clock) override {
     core_.prepare(scene, clock);

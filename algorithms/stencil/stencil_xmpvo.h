@@ -27,19 +27,19 @@
 //
 // Claims: software: image_exact when every visible exterior face gets a layer (an
 // exterior-face visibility cycle leaves faces unclassified, counted above), detects_cycles.
-// gl: detects_cycles, no exactness claim. It draws what the gl sampling rule describes
-// (harness/raster/raster_rule.h; cells: cell_raster_gl.h), MPVO's arrows and the exterior
-// faces' facing follow the winding of the snapped faces (snapped_signs.h), and a back/front
-// pixel pair is kept only where the rule orders the two faces the same way (llvmpipe's
-// float depth interpolation can order two faces that meet at a pixel centre; coplanar
-// faces of touching volumes are paired back face first). `vobench check --raster gl` finds
-// no violation on helix, zoo, gap, tet-knot, tet-femur, tet-hand at 512x512 x 14 views.
-// Exterior faces with the same points (touching volumes meshed with duplicated nodes) are
-// not layered: they are a shared face, related as MPVO relates one (counter
-// coincident_face_pairs); layered, their 24-bit ties made cycles the scene does not have.
-// Not claimed because it does not hold everywhere: at 48x48 snapping inverts cells of the
-// small helix, offset, slivers and the non-conforming touching-* cases (the snapped cells
-// overlap: no order is exact, and `check --raster gl` exits 2 naming the snapped mesh).
+// gl: image_exact under the gl sampling rule (claims.image_exact_under: what llvmpipe draws,
+// harness/raster/raster_rule.h; cells: cell_raster_gl.h), detects_cycles. MPVO's arrows and
+// the exterior faces' facing follow the winding of the snapped faces (snapped_signs.h), and
+// a back/front pixel pair is kept only where the rule orders the two faces the same way
+// (llvmpipe's float depth interpolation can order two faces that meet at a pixel centre;
+// coplanar faces of touching volumes are paired back face first). Exterior faces with the
+// same points (touching volumes meshed with duplicated nodes) are not layered: they are a
+// shared face, related as MPVO relates one (counter coincident_face_pairs); layered, their
+// 24-bit ties made cycles the scene does not have. The claim is for the snapped mesh: where
+// snapping inverts cells thinner than its 1/256-pixel grid (small images of slivers, of the
+// non-conforming touching-* cases) the snapped cells overlap, no order of them is exact,
+// and `check --raster gl` exits 2 naming the snapped mesh, as for any input without a
+// visibility order.
 // Counters (gl): snapped_sign_flips, dropped_pairs, swapped_pairs.
 #pragma once
 #include "harness/bench/registry.h"

@@ -128,6 +128,8 @@ def summarise(recs):
                               if any(isinstance(r.get("oracle_cell_order"), dict) for r in rs) else None),
             "cycles": max(r["cycles"]["count"] for r in rs),
             "exact": claim(rs[0]),
+            # The sampling rule an image claim holds under (gl: what llvmpipe draws), beside it in the table.
+            "exact_under": (rs[0].get("claims") or {}).get("image_exact_under"),
             "phases": {k: statistics.median(v) for k, v in phases.items()},
             "bytes": rs[0]["bytes"]["orderer"] + rs[0]["bytes"]["derived"],
             # The working set streamed once at the run's triad rate (limits.py).

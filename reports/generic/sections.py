@@ -47,7 +47,8 @@ def runs_header(page, recs):
                   "'revision'); nothing is averaged across revisions.")
 
 
-VERDICT_NOTE = ("claim: object = object-space exact, image = image-space exact, heuristic = no claim. "
+VERDICT_NOTE = ("claim: object = object-space exact, image = image-space exact (image (gl): under the gl "
+                "sampling rule, what llvmpipe draws; judged as such only in runs with raster gl), heuristic = no claim. "
                 "verdict: views with at least one violating pixel / views the oracle checked "
                 "(composited = judged on what the orderer composites); not checked = measured without "
                 "the oracle (no error is known, so none is plotted). Times are medians over views of each "
@@ -72,7 +73,8 @@ def scene_table(page, rows, revisions):
         # The count itself (summed over the checked views), so table, caption and `check` agree.
         err = ("not checked" if r["err"] is None and nc else
                "–" if r["err"] is None else f"{r['violating_pixels']:,} ({sig(100 * r['err'])}%)")
-        cells = ([r["algorithm"], r["exact"]] + ([r["revision"]] if multi else []) +
+        claimed = r["exact"] + (f" ({r['exact_under']})" if r["exact"] == "image" and r.get("exact_under") not in (None, "exact") else "")
+        cells = ([r["algorithm"], claimed] + ([r["revision"]] if multi else []) +
                  ([r["run"] or "all"] if by_run else []) +
                  [str(r["threads"]) if r["threads"] is not None else "?", views, human_seconds(r["seconds"]), sig(r["vs_mpvonc"]), sig(r["vs_vtk-centroid"]),
                   human_seconds(r["prepare_s"]), r["verdict"], err] +

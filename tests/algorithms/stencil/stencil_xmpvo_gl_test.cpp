@@ -19,6 +19,9 @@ using namespace vob;
 using namespace vob::test;
 
 TEST(StencilXmpvoGl, ExactUnderTheGlRuleWhereTheExactRuleFails) {
+  const Claims claims = make_orderer("stencil-xmpvo:backend=gl")->claims();
+  EXPECT_TRUE(claims.image_exact);  // what this test checks is what the backend claims
+  EXPECT_EQ(claims.image_exact_under, RasterRule::gl);
   const Scene helix = dataset("helix");
   int exact_failing = 0;
   int64_t flips = 0;
