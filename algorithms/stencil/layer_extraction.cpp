@@ -72,6 +72,7 @@ void LayerExtractor::run(LayerBackend& backend, int32_t n, const Camera& view,
   in_f_.assign(size_t(n), 0);
   front_pixels_.assign(size_t(n), 0);
   behind_pixels_.assign(size_t(n), 0);
+  blocker_.assign(size_t(n), -1);
   t_.resize(size_t(n));
   for (int32_t i = 0; i < n; ++i) t_[size_t(i)] = i;
   active_.clear();
@@ -157,6 +158,7 @@ void LayerExtractor::run(LayerBackend& backend, int32_t n, const Camera& view,
                 continue;
               }
               ++behind_pixels_[g - 1];
+              if (c && blocker_[g - 1] < 0) blocker_[g - 1] = int32_t(c - 1);
               if (in_f_[g - 1] == 1) {
                 in_f_[g - 1] = 2;  // removed in this pass
                 ++removed;
@@ -184,15 +186,11 @@ void LayerExtractor::run(LayerBackend& backend, int32_t n, const Camera& view,
 
     // Step 5: no layer this round -> stop (or break the cycle); else T_i = F.
     if (f_.empty() && opt.break_cycles) {
-      int32_t best = f0_.front();
-      for (int32_t id : f0_) {
-        const int32_t b = behind_pixels_[size_t(id)], bb = behind_pixels_[size_t(best)];
-        if (b < bb || (b == bb && front_pixels_[size_t(id)] > front_pixels_[size_t(best)])) best = id;
-      }
+      const int32_t best = forced_candidate();
       f_.assign(1, best);
       out.forced.push_back(best);
     }
-    for (int32_t id : f0_) front_pixels_[size_t(id)] = behind_pixels_[size_t(id)] = 0;
+    for (int32_t id : f0_) front_pixels_[size_t(id)] = behind_pixels_[size_t(id)] = 0, blocker_[size_t(id)] = -1;
     if (f_.empty()) break;
     const int L = out.layers++;
     {
@@ -231,11 +229,36 @@ void LayerExtractor::run(LayerBackend& backend, int32_t n, const Camera& view,
   }
 }
 
+int32_t LayerExtractor::forced_candidate() {
+  // Every candidate of a stuck round was found behind another (its blocker), so following
+  // blockers from any candidate ends on a cycle. Forcing one of the cycle breaks it at the
+  // cost of its own behind pixels; forcing a candidate that is only behind the cycle (not
+  // on it) would draw it in front of what covers it, a violation no order needs.
+  cycle_.clear();
+  int32_t x = f0_.front();
+  while (x >= 0 && in_f_[size_t(x)] != 3) in_f_[size_t(x)] = 3, x = blocker_[size_t(x)];
+  for (int32_t id : f0_) in_f_[size_t(id)] = 0;  // (all were back in T: f_ is empty)
+  if (x >= 0) {
+    int32_t y = x;
+    do cycle_.push_back(y), y = blocker_[size_t(y)];
+    while (y != x);
+  }
+  const std::vector<int32_t>& among = cycle_.empty() ? f0_ : cycle_;  // (no blocker recorded: all)
+  int32_t best = among.front();
+  for (int32_t id : among) {
+    const int32_t b = behind_pixels_[size_t(id)], bb = behind_pixels_[size_t(best)];
+    if (b < bb || (b == bb && (front_pixels_[size_t(id)] > front_pixels_[size_t(best)] ||
+                               (front_pixels_[size_t(id)] == front_pixels_[size_t(best)] && id < best))))
+      best = id;
+  }
+  return best;
+}
+
 size_t LayerExtractor::bytes() const {
   return cand_.capacity() * 4 + far_.capacity() * 4 + stencil_.capacity() +
          (t_.capacity() + f_.capacity() + draw_.capacity() + active_.capacity() +
           f_blocks_.capacity() + next_.capacity() + f0_.capacity() + front_pixels_.capacity() +
-          behind_pixels_.capacity()) * 4 +
+          behind_pixels_.capacity() + blocker_.capacity() + cycle_.capacity()) * 4 +
          in_f_.capacity();
 }
 

@@ -122,6 +122,9 @@ class LayerExtractor {
   std::vector<int32_t> t_, f_, f0_, draw_, active_, f_blocks_, next_;
   std::vector<int32_t> front_pixels_;   // per primitive: pixels where it is C(p) this round
   std::vector<int32_t> behind_pixels_;  // per primitive: pixels where it was G(p) != C(p)
+  std::vector<int32_t> blocker_;        // per primitive: a C(p) it was found behind, or -1
+  std::vector<int32_t> cycle_;          // scratch: a cycle of blockers in a stuck round
+  int32_t forced_candidate();          // the candidate a stuck round forces
   std::vector<uint8_t> in_f_;  // 1 in F, 2 removed in the current pass, 0 otherwise
 };
 

@@ -183,6 +183,25 @@ TEST(StencilLayers, AcyclicSurfacesAreOrderedExactlyOverAnOrbit) {
   }
 }
 
+// A round that layers nothing forces a triangle on a cycle of the round's "behind"
+// relations. Frame 19 of krishnan-table1's orbit of surface-hand at 512x512 under OpenGL:
+// llvmpipe's 24-bit depths make triangles 450 and 451 a cycle (the gl rule's own), and
+// triangle 1925 lies behind 451 elsewhere; forcing 1925 (fewest pixels behind, but not on
+// the cycle) drew it in front of 451, one violation no order needs.
+TEST(StencilLayers, AStuckRoundForcesATriangleOnItsCycle) {
+  const Scene s = dataset("surface-hand");
+  const Camera view = orbit_view(s.bounds(), 30, 19, ViewOptions{512, 512});
+  const Ordering o = run("stencil-layers:backend=gl", s, view);
+  EXPECT_GE(o.counters.at("forced"), 1);  // the case needs a stuck round
+  OracleOptions gl;
+  gl.raster = RasterRule::gl;
+  const OracleResult r = check_ordering(s, view, o.order, gl);
+  ASSERT_TRUE(r.rule_cycles.has_value());
+  EXPECT_GT(r.rule_cycles->cycle_pixels, 0);  // ... and a cycle of the rule's depths
+  EXPECT_TRUE(r.ok()) << r.to_json().dump();
+  EXPECT_EQ(r.rule_cycles->avoidable_fragments, 0);
+}
+
 // Three sticks each over the next (a cycle), a plate behind them, and free triangles.
 TEST(StencilLayers, CyclesAreReportedAndTheRestOrdered) {
   TriangleSoup s;
