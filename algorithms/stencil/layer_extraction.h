@@ -125,7 +125,7 @@ class LayerExtractor {
   std::vector<int32_t> blocker_;        // per primitive: a C(p) it was found behind, or -1
   std::vector<int32_t> cycle_;          // scratch: a cycle of blockers in a stuck round
   int32_t forced_candidate();          // the candidate a stuck round forces
-  std::vector<uint8_t> in_f_;  // 1 in F, 2 removed in the current pass, 0 otherwise
+  std::vector<uint8_t> in_f_;  // 1 in F, 2 removed in the current pass, 0 otherwise (3: met by forced_candidate's walk)
 };
 
 // What both stencil plugins hold: the backend they were asked for, the extraction options
