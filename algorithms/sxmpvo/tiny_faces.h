@@ -9,8 +9,8 @@
 // phase-I sign is the exact sign of orient3d of its three points, the same predicate the
 // rasterizer evaluates) and its projected points computed once per view. Each decision is
 // made by PolygonRaster's own expressions, evaluated in the same order: the edge functions
-// of the ray from the canonical edge direction, the top-left rule for exact zeros (taken only
-// when a value is exactly zero), and t = num / (n . X) * |X|. So a sample in the box is
+// of the ray from the canonical edge direction, the top-left rule for exact zeros, and the
+// same row kernel (harness/raster/row_coverage.h) for coverage and t = num / (n . X) * |X|. So a sample in the box is
 // covered here exactly when it is covered there, and t is the same double. Outside the box
 // the rasterizer (whose candidates reach one sample further) can only add rounding noise of
 // a triangle seen edge-on, rays that graze it; the oracle's cell clipping drops those too
@@ -20,6 +20,7 @@
 #include <cstdint>
 
 #include "harness/raster/polygon_raster.h"
+#include "harness/raster/row_coverage.h"
 #include "harness/raster/sample_frame.h"
 
 namespace vob::sxmpvo {
@@ -47,43 +48,14 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
 // ---- implementation ----
 
 namespace detail {
-struct TinyEdge {
-  Vec3 m;
-  double c;
-};
-// PolygonRaster::add_triangle's ownership of an exactly zero edge value (top-left rule).
-inline bool owns_zero(const SampleFrame& fr, const TinyEdge& e) {
-  const double a = dot(e.m, fr.affine_dx()), b = dot(e.m, fr.affine_dy());
-  return a > 0 || (a == 0 && (b < 0 || (b == 0 && dot(e.m, fr.forward()) > 0)));
+// PolygonRaster::triangle_edges's ownership of an exactly zero edge value (top-left rule).
+inline bool owns_zero(const SampleFrame& fr, const Vec3& m) {
+  const double a = dot(m, fr.affine_dx()), b = dot(m, fr.affine_dy());
+  return a > 0 || (a == 0 && (b < 0 || (b == 0 && dot(m, fr.forward()) > 0)));
 }
 // lex_less without branches: its outcome is a coin toss per edge, a mispredicted jump.
 inline bool lex_less_flat(const Vec3& a, const Vec3& b) {
   return (a.x < b.x) | ((a.x == b.x) & ((a.y < b.y) | ((a.y == b.y) & (a.z < b.z))));
-}
-
-// Which samples of `box` the edges e cover, written to hit as (row - y0) << 6 | (col - x0),
-// without a jump on the answer (about half the box is out, at random): each sample is
-// written and the count steps by the answer. A zero edge value (rare) takes the top-left
-// rule's slow test. In perspective c is a signed zero, and c + m . X decides as m . X does.
-template <bool kOrtho>
-int covered(const SampleFrame& fr, const TinyEdge* e, const SampleRect& box, int16_t* hit) {
-  int hits = 0;
-  for (int sy = box.y0; sy <= box.y1; ++sy) {
-    const Vec3 row = fr.row_term(sy);
-    for (int sx = box.x0; sx <= box.x1; ++sx) {
-      const Vec3 x = row + fr.col_term(sx);
-      double v[3];
-      for (int i = 0; i < 3; ++i) v[i] = kOrtho ? e[i].c + dot(e[i].m, x) : dot(e[i].m, x);
-      const bool out = (v[0] < 0) | (v[1] < 0) | (v[2] < 0);
-      bool in = !out;
-      if (((v[0] == 0) | (v[1] == 0) | (v[2] == 0)) & in) [[unlikely]]
-        in = (v[0] != 0 || owns_zero(fr, e[0])) && (v[1] != 0 || owns_zero(fr, e[1])) &&
-             (v[2] != 0 || owns_zero(fr, e[2]));
-      hit[hits] = static_cast<int16_t>((sy - box.y0) << 6 | (sx - box.x0));  // both < 64
-      hits += in;
-    }
-  }
-  return hits;
 }
 }  // namespace detail
 
@@ -91,21 +63,21 @@ template <class Emit>
 void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
                         Emit&& emit) {
   const bool ortho = fr.ortho();
-  const Vec3 n = cross(v[1] - v[0], v[2] - v[0]);
-  const double d = -dot(n, v[0]);
-  double num = 0, inv_nf = 0;
+  RowDepth depth;
+  depth.n = cross(v[1] - v[0], v[2] - v[0]);
+  depth.d = -dot(depth.n, v[0]);
   if (ortho) {
-    const double nf = dot(n, fr.forward());
+    const double nf = dot(depth.n, fr.forward());
     if (nf == 0) return;
-    inv_nf = 1.0 / nf;
+    depth.inv_nf = 1.0 / nf;
   } else {
-    num = -dot(n, fr.eye() - v[0]);
+    depth.num = -dot(depth.n, fr.eye() - v[0]);
   }
   // The rasterizer's facing is sigma (orthographic) or -sigma (perspective), sigma being
   // orient3d(v0, v1, v2, eye), resp. orient_direction(v0, v1, v2, f) = -(phase-I sign):
   // both are -(phase-I sign).
   const double facing = -phase1_sign;
-  detail::TinyEdge e[3];
+  RowEdges e;
   for (int i = 0; i < 3; ++i) {
     const Vec3* ends[2] = {&v[(i + 1) % 3], &v[i]};  // fwd: pa = v[i]
     const bool fwd = detail::lex_less_flat(v[i], v[(i + 1) % 3]);
@@ -120,16 +92,13 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
       m = cross(pa - fr.eye(), pb - pa);
     }
     const double s = fwd ? facing : -facing;
-    e[i] = {m * s, c * s};
+    m = m * s;
+    e.mx[i] = m.x, e.my[i] = m.y, e.mz[i] = m.z, e.c[i] = c * s;
+    e.own[i] = detail::owns_zero(fr, m);
   }
-  int16_t hit[kTinyMaxSamples];
-  const int hits = ortho ? detail::covered<true>(fr, e, box, hit) : detail::covered<false>(fr, e, box, hit);
-  for (int j = 0; j < hits; ++j) {
-    const int sy = box.y0 + (hit[j] >> 6), sx = box.x0 + (hit[j] & 63);
-    const Vec3 x = fr.row_term(sy) + fr.col_term(sx);
-    const double t = ortho ? -(dot(n, x) + d) * inv_nf : num / dot(n, x) * length(x);
-    if ((ortho ? t >= 0 : t > 0) && std::isfinite(t)) emit(sx, sy, t);
-  }
+  RowScanner rows(row_coverage(), fr, e, depth);
+  for (int sy = box.y0; sy <= box.y1; ++sy) rows.add(sy, box.x0, box.x1, emit);
+  rows.flush(emit);
 }
 
 }  // namespace vob::sxmpvo

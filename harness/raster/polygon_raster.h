@@ -38,6 +38,7 @@
 #include <type_traits>
 
 #include "harness/raster/llvmpipe_depth.h"
+#include "harness/raster/row_coverage.h"
 #include "harness/raster/sample_frame.h"
 
 namespace vob {
@@ -138,13 +139,13 @@ class PolygonRaster {
   bool add_gl_triangle(const int64_t* x, const int64_t* y, const double* q, const float* z);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
-  bool inside(int i, const Vec3& x) const {
-    const Triangle& t = tri_[i];
-    for (const Edge& e : t.e) {
-      const double v = e.c + dot(e.m, x);
-      if (v < 0 || (v == 0 && !e.own)) return false;
+  static RowEdges row_edges(const Triangle& t) {
+    RowEdges r;
+    for (int i = 0; i < 3; ++i) {
+      const Edge& e = t.e[i];
+      r.mx[i] = e.m.x, r.my[i] = e.m.y, r.mz[i] = e.m.z, r.c[i] = e.c, r.own[i] = e.own;
     }
-    return true;
+    return r;
   }
   // Ray parameter t at the sample (NaN when the ray misses the plane).
   double depth(const Vec3& x) const { return plane_.depth(x, frame_->ortho()); }
@@ -182,25 +183,25 @@ void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
     }
     return;
   }
+  // Perspective hits are at t > 0 by construction; the kernel's test drops rounding noise of
+  // rays that graze an edge-on polygon. Orthographic: only in front of the eye plane.
+  const RowCoverageFn row_fn = row_coverage();
+  const RowDepth depth{plane_.plane.n, plane_.plane.d, plane_.num, plane_.inv_nf};
+  const auto hit = [&](int sx, int sy, double t) {
+    if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
+      emit(sx, sy, t, int64_t(-1));
+    else
+      emit(sx, sy, t);
+  };
   for (int i = 0; i < count_; ++i) {
     const SampleRect r = tri_[i].box.intersect(clip);
+    const RowEdges edges = row_edges(tri_[i]);
+    RowScanner rows(row_fn, *frame_, edges, depth);
     for (int sy = r.y0; sy <= r.y1; ++sy) {
       int x0 = r.x0, x1 = r.x1;
-      if (!span(i, sy, x0, x1)) continue;
-      const Vec3 row = frame_->row_term(sy);
-      for (int sx = x0; sx <= x1; ++sx) {
-        const Vec3 x = row + frame_->col_term(sx);
-        if (!inside(i, x)) continue;
-        const double t = depth(x);
-        // Perspective hits are at t > 0 by construction; the test drops rounding noise of
-        // rays that graze an edge-on polygon. Orthographic: only in front of the eye plane.
-        if (!((ortho ? t >= 0 : t > 0) && std::isfinite(t))) continue;
-        if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
-          emit(sx, sy, t, int64_t(-1));
-        else
-          emit(sx, sy, t);
-      }
+      if (span(i, sy, x0, x1)) rows.add(sy, x0, x1, hit);
     }
+    rows.flush(hit);
   }
 }
 

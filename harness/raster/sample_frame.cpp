@@ -36,6 +36,10 @@ SampleFrame::SampleFrame(const Camera& camera, int supersample, RasterRule rule)
     const double nx = 2.0 * (sx + 0.5) / cols_ - 1.0;
     col_[sx] = r_ * (nx * sx_scale_);
   }
+  const size_t stride = static_cast<size_t>(cols_) + 3;
+  col_soa_.assign(3 * stride, 0.0);
+  for (int sx = 0; sx < cols_; ++sx)
+    for (int a = 0; a < 3; ++a) col_soa_[a * stride + sx] = col_[sx][a];
   for (int sy = 0; sy < rows_; ++sy) {
     const double ny = 2.0 * (sy + 0.5) / rows_ - 1.0;
     row_[sy] = base + u_ * (ny * sy_scale_);

@@ -66,6 +66,11 @@ class SampleFrame {
   Vec3 x(int sx, int sy) const { return row_[sy] + col_[sx]; }
   const Vec3& row_term(int sy) const { return row_[sy]; }
   const Vec3& col_term(int sx) const { return col_[sx]; }
+  // col_term's components as three arrays, each padded with 3 zeros past the last column
+  // (for kernels that load four columns at a time).
+  const double* col_x() const { return col_soa_.data(); }
+  const double* col_y() const { return col_soa_.data() + (cols_ + 3); }
+  const double* col_z() const { return col_soa_.data() + 2 * (cols_ + 3); }
   // The affine form of X in sample-centre coordinates (x, y) = (sx+0.5, sy+0.5):
   // X ~= x0 + x * dx + y * dy (for bounds and spans only; decisions use x(sx, sy)).
   Vec3 affine_origin() const { return x0_; }
@@ -94,6 +99,7 @@ class SampleFrame {
   Vec3 eye_, f_, r_, u_;
   double sx_scale_, sy_scale_;  // perspective: tan terms; ortho: half extents
   std::vector<Vec3> row_, col_;
+  std::vector<double> col_soa_;  // col_x, col_y, col_z
   Vec3 x0_, dx_, dy_;
   double xmag_ = 0;
   GlDepthRange gl_range_;
