@@ -48,10 +48,11 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
 // ---- implementation ----
 
 namespace detail {
-// PolygonRaster::triangle_edges's ownership of an exactly zero edge value (top-left rule).
+// PolygonRaster::triangle_edges's ownership of an exactly zero edge value (top-left rule),
+// without jumps: the sign of a is a coin toss per edge.
 inline bool owns_zero(const SampleFrame& fr, const Vec3& m) {
-  const double a = dot(m, fr.affine_dx()), b = dot(m, fr.affine_dy());
-  return a > 0 || (a == 0 && (b < 0 || (b == 0 && dot(m, fr.forward()) > 0)));
+  const double a = dot(m, fr.affine_dx()), b = dot(m, fr.affine_dy()), c = dot(m, fr.forward());
+  return (a > 0) | ((a == 0) & ((b < 0) | ((b == 0) & (c > 0))));
 }
 // lex_less without branches: its outcome is a coin toss per edge, a mispredicted jump.
 inline bool lex_less_flat(const Vec3& a, const Vec3& b) {
