@@ -1,5 +1,6 @@
 // The centroid key kernels (the AVX2 one where the CPU has it, and the baseline one) give
-// the bits of Vec3's dot and length rounded to float, cell for cell, on runs of every length
+// the bits of Vec3's dot and length of the stored (float) centroids rounded to float, cell
+// for cell, on runs of every length
 // and at unaligned starts (the vector loops' tails), ties and far-apart magnitudes included.
 // (A multiply-add would change a double key's last bit, which float rounding hides almost
 // always; the kernels exclude it by construction: AVX2 without FMA, -ffp-contract=off.)
@@ -18,10 +19,10 @@ TEST(CentroidKeys, KernelsGiveTheBitsOfDotAndLength) {
   std::mt19937 rng(17);
   std::uniform_real_distribution<double> u(-30, 30), e(-6, 6);
   const size_t n = 4099;
-  std::vector<double> x(n), y(n), z(n);
+  std::vector<float> x(n), y(n), z(n);
   for (size_t i = 0; i < n; ++i) {
     const double s = std::pow(10.0, e(rng));  // magnitudes 1e-6 .. 1e6
-    x[i] = u(rng) * s, y[i] = u(rng) * s, z[i] = u(rng) * s;
+    x[i] = float(u(rng) * s), y[i] = float(u(rng) * s), z[i] = float(u(rng) * s);
     if (i % 7 == 3) x[i] = x[i - 1], y[i] = y[i - 1], z[i] = z[i - 1];  // ties
   }
   const CentroidArrays c{x.data(), y.data(), z.data()};

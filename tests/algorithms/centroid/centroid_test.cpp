@@ -105,3 +105,33 @@ TEST(VtkCentroid, AgreesWithCentroidViewKeyUpToTies) {
     }
   }
 }
+
+// The centroids are stored as floats relative to their box centre: a small mesh far from
+// the world origin keeps the key precision of one at the origin (world-space floats would
+// round its centroids to ~0.06 at 1e6, coarser than its cells).
+TEST(Centroid, AFarOffMeshSortsAsPreciselyAsOneAtTheOrigin) {
+  const double h = 1e-3;
+  Scene s = Scene::from_mesh("far block", tet_block(12, 10, 8, Vec3{1e6, -2e6, 5e5}, h));
+  const size_t n = s.num_primitives();
+  std::vector<Vec3> centre(n);
+  for (size_t c = 0; c < n; ++c) centre[c] = s.mesh().cell_centroid(c);
+  for (const char* spec : {"centroid", "centroid:key=view"}) {
+    const bool by_view = std::string(spec).find("view") != std::string::npos;
+    auto ours = make_orderer(spec);
+    PhaseClock prep;
+    const Scene own = s.fresh();
+    ours->prepare(own, prep);
+    for (const Camera& view : fibonacci_views(s.bounds(), 14)) {
+      PhaseClock clock;
+      const auto order = ours->order(view, clock).order;
+      ASSERT_TRUE(is_permutation_of(order, n));
+      std::vector<double> key(n);
+      for (size_t c = 0; c < n; ++c)
+        key[c] = by_view ? dot(centre[c] - view.eye, view.forward()) : length(centre[c] - view.eye);
+      // Back to front up to the float key's own rounding (the eye is a few block sizes away).
+      const double tol = 1e-6 * s.bounds().radius();
+      for (size_t i = 1; i < n; ++i)
+        ASSERT_LE(key[order[i]], key[order[i - 1]] + tol) << spec << " at " << i;
+    }
+  }
+}
