@@ -10,8 +10,9 @@
 // rasterizer evaluates) and its projected points computed once per view. Each decision is
 // made by PolygonRaster's own expressions, evaluated in the same order: the edge functions
 // of the ray from the canonical edge direction, the top-left rule for exact zeros, and the
-// same row kernel (harness/raster/row_coverage.h) for coverage and t = num / (n . X) * |X|. So a sample in the box is
-// covered here exactly when it is covered there, and t is the same double. Outside the box
+// same row kernel (harness/raster/row_coverage.h) for coverage and t = num / (n . X) * |X|.
+// So a sample in the box is covered here exactly when it is covered there, and t is the
+// same double. Outside the box
 // the rasterizer (whose candidates reach one sample further) can only add rounding noise of
 // a triangle seen edge-on, rays that graze it; the oracle's cell clipping drops those too
 // (tests/algorithms/sxmpvo/tiny_faces_test.cpp).
