@@ -38,6 +38,8 @@ class ABuffer {
   struct Raw {
     double t;
     int32_t item, pixel, rank;
+    Raw() {}  // left unset: the scan grows its batches, then writes them
+    Raw(double t_, int32_t item_, int32_t pixel_, int32_t rank_) : t(t_), item(item_), pixel(pixel_), rank(rank_) {}
   };
   // Records an entry of pixel `pixel` that arrives after every entry recorded so far.
   void insert(int64_t pixel, double t, int32_t item) {

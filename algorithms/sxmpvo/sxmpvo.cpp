@@ -150,9 +150,15 @@ class SxmpvoOrderer final : public Orderer {
     const size_t runs = std::max<size_t>(1, std::min<size_t>(64, b / 2048));
     batches_.resize(runs);
     tiny_.assign(runs, 0);
+    const sxmpvo::TinyEntriesFn tiny_entries = sxmpvo::tiny_entries();
     tbb::parallel_for(size_t(0), runs, [&](size_t r) {
+      // The batch is grown (Raw's constructor leaves it unset) and written by index; the
+      // tiny path writes whole steps of four past its count, hence the room it asks for.
       std::vector<sxmpvo::ABuffer::Raw>& batch = batches_[r];
-      batch.clear();
+      size_t used = 0;
+      const auto room = [&](size_t k) {
+        if (batch.size() < used + k) batch.resize(std::max(2 * batch.size(), used + k + 4096));
+      };
       PolygonRaster raster;
       const ExteriorFaces& ext = *ext_;
       int64_t tiny = 0;
@@ -166,17 +172,19 @@ class SxmpvoOrderer final : public Orderer {
         const sxmpvo::BoxKind kind = sxmpvo::sample_box(frame, proj, n, box);
         if (kind == sxmpvo::BoxKind::None) continue;
         const int32_t item = ext.cell[i] * 2 + (s > 0 ? 1 : 0), rank = rank_[i];
-        auto emit = [&](int sx, int sy, double t) {
-          batch.push_back({t, item, static_cast<int32_t>(int64_t(sy) * cols + sx), rank});
-        };
         const Vec3* corners = &ext.corners[4 * i];
         if (kind == sxmpvo::BoxKind::Tiny && n == 3) {
-          sxmpvo::scan_tiny_triangle(frame, corners, s, box, emit);
+          room(sxmpvo::kTinyEntrySlots);
+          used += tiny_entries(frame, corners, s, box, item, rank, batch.data() + used);
           ++tiny;
         } else if (raster.setup(frame, corners, n, proj)) {
-          raster.scan(frame.bounds(), emit);
+          raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
+            room(1);
+            batch[used++] = {t, item, static_cast<int32_t>(int64_t(sy) * cols + sx), rank};
+          });
         }
       }
+      batch.resize(used);
       tiny_[r] = tiny;
     });
     for (const auto& batch : batches_) abuf_.append(batch);

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "algorithms/sxmpvo/abuffer.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/row_coverage.h"
 #include "harness/raster/sample_frame.h"
@@ -46,6 +47,23 @@ template <class Emit>
 void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
                         Emit&& emit);
 
+// scan_tiny_triangle's samples written straight as A-buffer entries {t, item, pixel, rank},
+// in the same order, to dst; returns their number. The AVX2 version writes four entries a
+// step whatever their coverage (no jump per sample or per hit): dst needs kTinyEntrySlots.
+constexpr int kTinyEntrySlots = kTinyMaxSamples + 4;
+using TinyEntriesFn = int (*)(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
+                              int32_t item, int32_t rank, ABuffer::Raw* dst);
+TinyEntriesFn tiny_entries();           // AVX2 when the CPU has it, else the scalar loop
+TinyEntriesFn tiny_entries_baseline();  // through scan_tiny_triangle (tests compare the two)
+
+// The triangle's edges and depth plane as the rasterizer would set them up (false: seen
+// edge-on in an orthographic view, it covers no sample).
+inline bool tiny_triangle_rows(const SampleFrame& fr, const Vec3* v, int phase1_sign, RowEdges& e,
+                               RowDepth& depth);
+// The same with the three edges in AVX2 lanes (call only when row_coverage_uses_avx2()):
+// the same bits in e[0..3) and depth (tests compare the two).
+bool tiny_triangle_rows_avx2(const SampleFrame& fr, const Vec3* v, int phase1_sign, RowEdges& e, RowDepth& depth);
+
 // ---- implementation ----
 
 namespace detail {
@@ -61,16 +79,13 @@ inline bool lex_less_flat(const Vec3& a, const Vec3& b) {
 }
 }  // namespace detail
 
-template <class Emit>
-void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
-                        Emit&& emit) {
+inline bool tiny_triangle_rows(const SampleFrame& fr, const Vec3* v, int phase1_sign, RowEdges& e, RowDepth& depth) {
   const bool ortho = fr.ortho();
-  RowDepth depth;
   depth.n = cross(v[1] - v[0], v[2] - v[0]);
   depth.d = -dot(depth.n, v[0]);
   if (ortho) {
     const double nf = dot(depth.n, fr.forward());
-    if (nf == 0) return;
+    if (nf == 0) return false;
     depth.inv_nf = 1.0 / nf;
   } else {
     depth.num = -dot(depth.n, fr.eye() - v[0]);
@@ -79,7 +94,6 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
   // orient3d(v0, v1, v2, eye), resp. orient_direction(v0, v1, v2, f) = -(phase-I sign):
   // both are -(phase-I sign).
   const double facing = -phase1_sign;
-  RowEdges e;
   for (int i = 0; i < 3; ++i) {
     const Vec3* ends[2] = {&v[(i + 1) % 3], &v[i]};  // fwd: pa = v[i]
     const bool fwd = detail::lex_less_flat(v[i], v[(i + 1) % 3]);
@@ -98,6 +112,15 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
     e.mx[i] = m.x, e.my[i] = m.y, e.mz[i] = m.z, e.c[i] = c * s;
     e.own[i] = detail::owns_zero(fr, m);
   }
+  return true;
+}
+
+template <class Emit>
+void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
+                        Emit&& emit) {
+  RowEdges e;
+  RowDepth depth;
+  if (!tiny_triangle_rows(fr, v, phase1_sign, e, depth)) return;
   RowScanner rows(row_coverage(), fr, e, depth);
   for (int sy = box.y0; sy <= box.y1; ++sy) rows.add(sy, box.x0, box.x1, emit);
   rows.flush(emit);

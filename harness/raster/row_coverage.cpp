@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "harness/raster/row_step_avx2.h"
+
 namespace vob {
 namespace {
 
@@ -37,77 +39,26 @@ int run_scalar(const SampleFrame& fr, const RowEdges& e, const RowDepth& p, cons
                     : spans_scalar<false>(fr, e, p, spans, count, hits);
 }
 
-// Lane orders that move the set lanes of a 4-bit mask to the front, in order: as column
-// offsets (for sx) and as pairs of 32-bit halves (for the doubles t).
-struct Compaction {
-  int32_t lanes[16][4];
-  int32_t halves[16][8];
-  Compaction() {
-    for (int m = 0; m < 16; ++m) {
-      int k = 0;
-      for (int j = 0; j < 4; ++j)
-        if (m & (1 << j)) lanes[m][k] = j, halves[m][2 * k] = 2 * j, halves[m][2 * k + 1] = 2 * j + 1, ++k;
-      for (; k < 4; ++k) lanes[m][k] = 0, halves[m][2 * k] = 0, halves[m][2 * k + 1] = 1;
-    }
-  }
-};
-const Compaction kCompaction;
-
-// Four columns a step, no jump on the answers: every lane's depth is computed, the covered
-// lanes are moved to the front and stored, and the count steps by their number. Lanes past
-// x1 read the zero padding of SampleFrame's column arrays and are masked off.
+// Four columns a step, no jump on the answers (row_step_avx2.h): every lane's depth is
+// computed, the covered lanes are moved to the front and stored, and the count steps by
+// their number. Lanes past x1 read the zero padding of SampleFrame's column arrays.
 template <bool kOrtho>
 __attribute__((target("avx2,popcnt"))) int spans_avx2(const SampleFrame& fr, const RowEdges& e, const RowDepth& p,
                                                const RowSpan* spans, int count, RowHits& hits) {
   const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
-  const __m256d zero = _mm256_setzero_pd(), sign = _mm256_set1_pd(-0.0);
-  const __m256d inf = _mm256_set1_pd(HUGE_VAL);
-  __m256d mx[3], my[3], mz[3], c[3], disown[3];
-  for (int i = 0; i < 3; ++i) {
-    mx[i] = _mm256_set1_pd(e.mx[i]), my[i] = _mm256_set1_pd(e.my[i]), mz[i] = _mm256_set1_pd(e.mz[i]);
-    c[i] = _mm256_set1_pd(e.c[i]);
-    disown[i] = _mm256_castsi256_pd(_mm256_set1_epi64x(e.own[i] ? 0 : -1));
-  }
-  const __m256d nx = _mm256_set1_pd(p.n.x), ny = _mm256_set1_pd(p.n.y), nz = _mm256_set1_pd(p.n.z);
-  const __m256d d = _mm256_set1_pd(p.d), num = _mm256_set1_pd(p.num), inv_nf = _mm256_set1_pd(p.inv_nf);
-  const __m256d lane = _mm256_set_pd(3, 2, 1, 0);
+  const RowStepAvx2 k(e, p);
   int n = 0;
-  for (int k = 0; k < count; ++k) {
-    const int sy = spans[k].sy, x1 = spans[k].x1;
+  for (int s = 0; s < count; ++s) {
+    const int sy = spans[s].sy, x1 = spans[s].x1;
     const Vec3 row = fr.row_term(sy);
     const __m256d rx = _mm256_set1_pd(row.x), ry = _mm256_set1_pd(row.y), rz = _mm256_set1_pd(row.z);
     const __m128i sy4 = _mm_set1_epi32(sy);
-    for (int sx = spans[k].x0; sx <= x1; sx += 4) {
-      const __m256d X = _mm256_add_pd(rx, _mm256_loadu_pd(cx + sx));
-      const __m256d Y = _mm256_add_pd(ry, _mm256_loadu_pd(cy + sx));
-      const __m256d Z = _mm256_add_pd(rz, _mm256_loadu_pd(cz + sx));
-      // Rejected: v < 0, or v == 0 on an edge the sample does not own (NaN rejects nothing).
-      __m256d out = _mm256_cmp_pd(lane, _mm256_set1_pd(double(x1 - sx)), _CMP_GT_OQ);
-      for (int i = 0; i < 3; ++i) {
-        const __m256d dotm = _mm256_add_pd(
-            _mm256_add_pd(_mm256_mul_pd(mx[i], X), _mm256_mul_pd(my[i], Y)), _mm256_mul_pd(mz[i], Z));
-        const __m256d v = _mm256_add_pd(c[i], dotm);
-        out = _mm256_or_pd(out, _mm256_cmp_pd(v, zero, _CMP_LT_OQ));
-        out = _mm256_or_pd(out, _mm256_and_pd(_mm256_cmp_pd(v, zero, _CMP_EQ_OQ), disown[i]));
-      }
-      const __m256d nX = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(nx, X), _mm256_mul_pd(ny, Y)),
-                                       _mm256_mul_pd(nz, Z));
-      __m256d t, ok;
-      if (kOrtho) {
-        t = _mm256_mul_pd(_mm256_xor_pd(_mm256_add_pd(nX, d), sign), inv_nf);
-        ok = _mm256_cmp_pd(t, zero, _CMP_GE_OQ);
-      } else {
-        const __m256d xx = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(X, X), _mm256_mul_pd(Y, Y)),
-                                         _mm256_mul_pd(Z, Z));
-        t = _mm256_mul_pd(_mm256_div_pd(num, nX), _mm256_sqrt_pd(xx));
-        ok = _mm256_cmp_pd(t, zero, _CMP_GT_OQ);
-      }
-      ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_andnot_pd(sign, t), inf, _CMP_LT_OQ));  // finite
-      const int mask = _mm256_movemask_pd(_mm256_andnot_pd(out, ok));
-      const __m256i halves = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(kCompaction.halves[mask]));
-      const __m128i lanes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(kCompaction.lanes[mask]));
-      _mm256_storeu_pd(hits.t + n, _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(t), halves)));
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(hits.sx + n), _mm_add_epi32(_mm_set1_epi32(sx), lanes));
+    for (int sx = spans[s].x0; sx <= x1; sx += 4) {
+      __m256d t;
+      const int mask = k.step<kOrtho>(rx, ry, rz, cx, cy, cz, sx, x1, t);
+      _mm256_storeu_pd(hits.t + n, RowStepAvx2::compact_t(t, mask));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(hits.sx + n),
+                       _mm_add_epi32(_mm_set1_epi32(sx), RowStepAvx2::compact_lanes(mask)));
       _mm_storeu_si128(reinterpret_cast<__m128i*>(hits.sy + n), sy4);
       n += __builtin_popcount(mask);
     }

@@ -17,7 +17,7 @@ namespace vob {
 // Edge i of a triangle: inside when c[i] + m[i] . X(sx, sy) > 0, or == 0 and own[i].
 // A NaN value rejects nothing (as PolygonRaster::inside).
 struct RowEdges {
-  double mx[3], my[3], mz[3], c[3];
+  double mx[4], my[4], mz[4], c[4];  // [3]: unused (room for a four-lane store)
   bool own[3];
 };
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <tuple>
 #include <vector>
@@ -40,8 +41,23 @@ Hits by_tiny_path(const SampleFrame& f, const Vec3* v, bool& taken, SampleRect& 
   const sxmpvo::BoxKind kind = sxmpvo::sample_box(f, q, 3, box);
   taken = kind == sxmpvo::BoxKind::Tiny;
   const int s = phase1_sign(f, v);
-  if (taken && s != 0)
+  if (taken && s != 0) {
     sxmpvo::scan_tiny_triangle(f, v, s, box, [&](int x, int y, double t) { h.emplace_back(x, y, t); });
+    // SXMPVO's entries (AVX2 where the CPU has it, and the scalar loop): the same samples,
+    // in scan order, with the same t bits, item, pixel and rank.
+    for (const sxmpvo::TinyEntriesFn fn : {sxmpvo::tiny_entries(), sxmpvo::tiny_entries_baseline()}) {
+      sxmpvo::ABuffer::Raw e[sxmpvo::kTinyEntrySlots];
+      const int n = fn(f, v, s, box, 17, 5, e);
+      EXPECT_EQ(n, static_cast<int>(h.size()));
+      for (int j = 0; j < n && j < static_cast<int>(h.size()); ++j) {
+        const auto [x, y, t] = h[j];
+        EXPECT_EQ(e[j].pixel, y * f.cols() + x);
+        EXPECT_EQ(std::memcmp(&e[j].t, &t, sizeof t), 0) << e[j].t << " " << t;
+        EXPECT_EQ(e[j].item, 17);
+        EXPECT_EQ(e[j].rank, 5);
+      }
+    }
+  }
   std::sort(h.begin(), h.end());
   return h;
 }
@@ -87,7 +103,9 @@ void compare_many(const Camera& cam, bool on_centres) {
   }
   EXPECT_GT(tiny, 3000);
   EXPECT_GT(covering, 1000);
-  if (!on_centres) EXPECT_EQ(degenerate, 0);
+  if (!on_centres) {
+    EXPECT_EQ(degenerate, 0);
+  }
 }
 
 // Triangles around a vertex on a sample ray, with spokes along sample rows and columns:
@@ -153,4 +171,48 @@ TEST(TinyFaces, LargeOrBehindTheEyeIsNotTiny) {
   ProjectedVertex q[3];
   for (int i = 0; i < 3; ++i) q[i] = ProjectedVertex::of(f, on_ray(f, cam, 10.1 + 0.2 * i, 10.1, 4));
   EXPECT_EQ(sxmpvo::sample_box(f, q, 3, box), sxmpvo::BoxKind::None);  // no centre inside
+}
+
+// The AVX2 setup against the scalar one, bit for bit: random triangles, and triangles with
+// edges along sample rows and columns seen along an axis, where an edge's ownership falls
+// to the second and third of its tests (m . dx == 0 exactly).
+TEST(TinyFaces, LaneSetupEqualsTheScalarSetup) {
+  if (!row_coverage_uses_avx2()) GTEST_SKIP() << "no AVX2 on this CPU";
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> grid(-3, 3);
+  int ties = 0, cases = 0;
+  for (bool ortho : {false, true}) {
+    for (bool axis : {false, true}) {
+      Camera c = camera(ortho);
+      if (axis) c.eye = {0, 0, 9}, c.target = {0, 0, 0}, c.up = {0, 1, 0};
+      const SampleFrame f(c, 1);
+      for (int k = 0; k < 20000; ++k) {
+        Vec3 v[3];
+        for (Vec3& p : v) p = axis ? Vec3{0.25 * grid(rng), 0.25 * grid(rng), 0.5 * grid(rng)} : Vec3{u(rng), u(rng), u(rng)};
+        const int s = k % 2 ? 1 : -1;
+        RowEdges a, b;
+        RowDepth da, db;
+        const bool ra = sxmpvo::tiny_triangle_rows(f, v, s, a, da), rb = sxmpvo::tiny_triangle_rows_avx2(f, v, s, b, db);
+        ASSERT_EQ(ra, rb) << k;
+        if (!ra) continue;
+        ++cases;
+        for (int i = 0; i < 3; ++i) {
+          ASSERT_EQ(std::memcmp(&a.mx[i], &b.mx[i], 8), 0) << k;
+          ASSERT_EQ(std::memcmp(&a.my[i], &b.my[i], 8), 0) << k;
+          ASSERT_EQ(std::memcmp(&a.mz[i], &b.mz[i], 8), 0) << k;
+          ASSERT_EQ(std::memcmp(&a.c[i], &b.c[i], 8), 0) << k;
+          ASSERT_EQ(a.own[i], b.own[i]) << k << " edge " << i;
+          const Vec3 m{a.mx[i], a.my[i], a.mz[i]};
+          ties += dot(m, f.affine_dx()) == 0;
+        }
+        ASSERT_EQ(std::memcmp(&da.n, &db.n, sizeof da.n), 0) << k;
+        ASSERT_EQ(std::memcmp(&da.d, &db.d, 8), 0) << k;
+        ASSERT_EQ(std::memcmp(&da.num, &db.num, 8), 0) << k;
+        ASSERT_EQ(std::memcmp(&da.inv_nf, &db.inv_nf, 8), 0) << k;
+      }
+    }
+  }
+  EXPECT_GT(cases, 50000);
+  EXPECT_GT(ties, 1000);  // the tie branches were reached
 }
