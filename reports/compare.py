@@ -28,7 +28,7 @@ import re
 import sys
 
 # Key parts that are settings, not identity (jobs.cpp); "s1" is the old supersample part.
-SETTING_PART = re.compile(r"^(r\d+w\d+|oracle|nooracle|ss\d+|s\d+|imgerr|t\d+|rgl)$")
+SETTING_PART = re.compile(r"^(r\d+w\d+|oracle|nooracle|ss\d+|s\d+|imgerr|t\d+|rgl|interleaved)$")
 
 
 class BadInput(Exception):
@@ -81,7 +81,8 @@ def settings(r):
             "oracle": "oracle" in r and r["oracle"] is not None,
             "supersample": next((p for p in parts if re.match(r"^s{1,2}\d+$", p)), None),
             "image_error": "image_error" in r, "parameters": r.get("parameters"),
-            "raster": r.get("raster") or "exact"}  # records before the gl rule sampled exactly
+            "raster": r.get("raster") or "exact",  # records before the gl rule sampled exactly
+            "interleaved": bool(r.get("interleaved"))}
 
 
 def samples(t):

@@ -126,7 +126,7 @@ std::vector<Job> dataset_jobs(const SuiteSpec& suite, const DatasetPlan& plan, c
   const std::string settings = "|r" + std::to_string(suite.repeats) + "w" + std::to_string(suite.warmup) +
                                (suite.oracle ? "|oracle" : "|nooracle") + "|ss" +
                                std::to_string(suite.supersample) + (suite.image_error ? "|imgerr" : "") +
-                               (suite.raster == RasterRule::gl ? "|rgl" : "");
+                               (suite.raster == RasterRule::gl ? "|rgl" : "") + (suite.interleave ? "|interleaved" : "");
   const auto counts = thread_counts(suite);
   // Per spec, its thread counts one after the other: their times are side by side in time too.
   if (plan.orderers)

@@ -103,7 +103,11 @@ FrameMeasurement measure_frame(PreparedOrderer& p, const Camera& view, int warmu
 Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene& scene,
                                 const SuiteSpec& suite, const Record& base) {
   set_external_view_index(*p.orderer, job.view_index);  // the sorter protocol sends it
-  FrameMeasurement m = measure_frame(p, job.camera, suite.warmup, suite.repeats);
+  return finish_orderer_job(job, p, scene, suite, base, measure_frame(p, job.camera, suite.warmup, suite.repeats));
+}
+
+Measurement finish_orderer_job(const Job& job, PreparedOrderer& p, const Scene& scene, const SuiteSpec& suite,
+                               const Record& base, FrameMeasurement m) {
   check_complete(scene, m.ordering, job.spec);
   Measurement out;
   Record& rec = out.record;
@@ -117,6 +121,7 @@ Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene&
   rec.camera = job.camera;
   rec.repeats = suite.repeats;
   rec.warmup = suite.warmup;
+  rec.interleaved = suite.interleave;
   rec.raster = raster_rule_name(suite.raster);
   rec.phases = m.phases_json();
   rec.total = m.total_json();

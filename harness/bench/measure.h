@@ -52,6 +52,10 @@ struct Measurement {
 // facts, threads, tags, context).
 Measurement measure_orderer_job(const Job& job, PreparedOrderer& p, const Scene& scene,
                                 const SuiteSpec& suite, const Record& base);
+// The rest of measure_orderer_job once the frames are measured (by measure_frame, or in
+// turns with other orderers): the record, and the verdict when the suite has the oracle on.
+Measurement finish_orderer_job(const Job& job, PreparedOrderer& p, const Scene& scene, const SuiteSpec& suite,
+                               const Record& base, FrameMeasurement m);
 
 // Runs one probe unit (scene null for a sceneless probe); the record's result is what the
 // probe returned, its images moved to the record.

@@ -11,6 +11,7 @@ nlohmann::json Record::to_json() const {
   j["parameters"] = parameters;
   j["repeats"] = repeats;
   j["warmup"] = warmup;
+  if (interleaved) j["interleaved"] = true;
   j["threads"] = threads;
   if (placement.is_object())
     for (const auto& [k, v] : placement.items()) j[k] = v;

@@ -20,6 +20,7 @@ struct Record {
   nlohmann::json dataset_spec;    // null for a sceneless probe
   nlohmann::json facts;           // scene_facts(): kind, n, points, b, cell_types | dims, voxels
   int repeats = 0, warmup = 0, threads = 0;
+  bool interleaved = false;       // its frames took turns with the dataset's other orderers
   std::string reproduction, paper, scale;  // when run by reproduce (paper empty: null)
   std::string run_id;             // names the run's context line (context.h)
   // Where it ran (runner.h RunOptions::placement): host, rank, ranks, ranks_on_host, and

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 
@@ -12,6 +13,7 @@
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
+#include "harness/bench/external_orderer.h"
 #include "harness/bench/job_partition.h"
 #include "harness/bench/reporters.h"
 #include "harness/scene/cell_overlap.h"
@@ -196,6 +198,111 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
         old_cost += j.done ? 0 : j.cost;
       }
     tracker.replace(old_jobs, old_cost, now.jobs.size(), now.cost_to_do());
+    // A finished measurement: its images, its record, the run's counts.
+    auto finished = [&](const Job& job, Measurement& m, double seconds) {
+      if (m.violated) ++summary.violations;
+      images.report(m, scene, job.camera);
+      m.record.job_seconds = seconds;
+      tracker.finished(job_cost(suite, job, primitives));
+      report(m.record);
+    };
+    auto probe = [&](const Job& job, const Record& job_base, std::chrono::steady_clock::time_point job_start) {
+      Record rec = run_probe_job(job, &scene, suite, &plan.dataset, job_base, image_dir, opt.progress);
+      rec.job_seconds = seconds_since(job_start);
+      tracker.finished(job_cost(suite, job, primitives));
+      report(rec);
+    };
+    // "interleave": each set of jobs that differ only in their orderer (one view, size and
+    // thread count) measured in turns, a frame of each orderer at a time, warm-up frames
+    // first; every orderer of the dataset is prepared once and kept until the dataset ends.
+    // False when a stop was asked for (the records of finished sets are written).
+    auto run_interleaved = [&]() -> bool {
+      std::map<std::string, std::unique_ptr<PreparedOrderer>> ready;  // by spec and threads
+      std::vector<std::string> set_order;
+      std::map<std::string, std::vector<const Job*>> sets;
+      for (const Job& job : jobs) {
+        const std::string k = std::to_string(job.threads) + "|" + std::to_string(job.w) + "x" + std::to_string(job.h) +
+                              "|" + std::to_string(job.view_index);
+        if (!sets.count(k)) set_order.push_back(k);
+        sets[k].push_back(&job);
+      }
+      struct Turn {
+        const Job* job;
+        std::string slot;          // its key in `ready`
+        PreparedOrderer* p;        // null once it failed
+        FrameMeasurement frames;
+        double seconds = 0;        // its own prepare, frames and verdict
+      };
+      for (const std::string& k : set_order) {
+        if (stop()) return false;
+        std::vector<Turn> turns;
+        for (const Job* job : sets[k]) {
+          if (results.done(job->key)) {
+            ++summary.skipped;
+            tracker.skipped(known.keys.count(job->key) ? 0 : job_cost(suite, *job, primitives));
+            continue;
+          }
+          limit.set(job->threads);
+          Record job_base = dataset_base;
+          job_base.threads = run_threads();
+          const auto t0 = std::chrono::steady_clock::now();
+          const std::string slot = job->spec + "|" + std::to_string(job->threads);
+          try {
+            if (job->kind == Job::Kind::Probe) {
+              probe(*job, job_base, t0);
+              continue;
+            }
+            std::unique_ptr<PreparedOrderer>& p = ready[slot];
+            if (!p) p = std::make_unique<PreparedOrderer>(prepare_orderer(job->spec, scene));
+            set_external_view_index(*p->orderer, job->view_index);
+            turns.push_back({job, slot, p.get(), {}, seconds_since(t0)});
+          } catch (const std::exception& e) {
+            ready.erase(slot);
+            failed(job->key, group_of(label, job_unit(*job)), e);
+            tracker.finished(job_cost(suite, *job, primitives));
+          }
+        }
+        const auto fail = [&](Turn& t, const std::exception& e) {
+          ready.erase(t.slot);  // an orderer that threw is not trusted with the next view
+          t.p = nullptr;
+          failed(t.job->key, group_of(label, job_unit(*t.job)), e);
+          tracker.finished(job_cost(suite, *t.job, primitives));
+        };
+        const auto frame = [&](Turn& t, bool timed) {
+          if (!t.p) return;
+          const auto t0 = std::chrono::steady_clock::now();
+          try {
+            PhaseClock clock;
+            Ordering o = t.p->orderer->order(t.job->camera, clock);
+            if (timed) t.frames.ordering = std::move(o), t.frames.repeats.push_back(clock.phases());
+          } catch (const std::exception& e) {
+            fail(t, e);
+          }
+          t.seconds += seconds_since(t0);
+        };
+        for (int w = 0; w < suite.warmup; ++w)
+          for (Turn& t : turns) frame(t, false);
+        for (int r = 0; r < suite.repeats; ++r)
+          for (Turn& t : turns) frame(t, true);
+        for (Turn& t : turns) {
+          if (!t.p) continue;
+          const auto t0 = std::chrono::steady_clock::now();
+          try {
+            Record job_base = dataset_base;
+            job_base.threads = run_threads();
+            Measurement m = finish_orderer_job(*t.job, *t.p, scene, suite, job_base, std::move(t.frames));
+            finished(*t.job, m, t.seconds + seconds_since(t0));
+          } catch (const std::exception& e) {
+            fail(t, e);
+          }
+        }
+      }
+      return true;
+    };
+    if (suite.interleave) {
+      if (!run_interleaved()) return summary;
+      continue;
+    }
     std::unique_ptr<PreparedOrderer> prepared;  // of the current spec, once a record is missing
     int prepared_threads = -1;                  // the thread count it was prepared under
     for (const Job& job : jobs) {
@@ -211,10 +318,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
       const auto job_start = std::chrono::steady_clock::now();
       try {
         if (job.kind == Job::Kind::Probe) {
-          Record rec = run_probe_job(job, &scene, suite, &plan.dataset, job_base, image_dir, opt.progress);
-          rec.job_seconds = seconds_since(job_start);
-          tracker.finished(job_cost(suite, job, primitives));
-          report(rec);
+          probe(job, job_base, job_start);
           continue;
         }
         // Prepared again per thread count: prepare is timed too, and may run in parallel.
@@ -224,11 +328,7 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
           prepared_threads = job.threads;
         }
         Measurement m = measure_orderer_job(job, *prepared, scene, suite, job_base);
-        if (m.violated) ++summary.violations;
-        images.report(m, scene, job.camera);
-        m.record.job_seconds = seconds_since(job_start);
-        tracker.finished(job_cost(suite, job, primitives));
-        report(m.record);
+        finished(job, m, seconds_since(job_start));
       } catch (const std::exception& e) {
         prepared.reset();  // an orderer that threw is not trusted with the next view
         failed(job.key, group_of(label, job_unit(job)), e);

@@ -372,7 +372,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   if (!input.is_object()) r.fail("suite", "must be a JSON object");
   const nlohmann::json j = apply_scale(input, "default", source);
   r.only_keys(j, "", {"name", "datasets", "algorithms", "probes", "views", "view_indices", "spread_views",
-                      "view_directions", "orbit", "ortho", "zoom", "fit", "sizes", "repeats", "warmup", "threads", "oracle",
+                      "view_directions", "orbit", "ortho", "zoom", "fit", "sizes", "repeats", "warmup", "interleave", "threads", "oracle",
                       "supersample", "raster", "image_error", "image_views", "images_of_violations", "exterior_area",
                       "vtk_render", "comment"});
   SuiteSpec s;
@@ -381,6 +381,7 @@ SuiteSpec SuiteSpec::from_json(const nlohmann::json& input, const std::string& s
   if (s.name.find_first_of("|/") != std::string::npos) r.fail("name", "must not contain '|' or '/'");
   if (j.contains("repeats")) s.repeats = r.integer(j["repeats"], "repeats", 1, kMaxRepeats);
   if (j.contains("warmup")) s.warmup = r.integer(j["warmup"], "warmup", 0, kMaxRepeats);
+  if (j.contains("interleave")) s.interleave = r.boolean(j["interleave"], "interleave");
   if (j.contains("datasets")) s.datasets = read_datasets(r, j["datasets"], "datasets");
   if (!j.contains("probes")) {
     if (!j.contains("datasets")) r.fail("datasets", "is missing");

@@ -70,6 +70,10 @@ struct SuiteSpec {
   bool fit = false;               // each view's window fitted to the box at W*H pixels (fit.h)
   std::vector<std::pair<int, int>> sizes{{512, 512}};
   int repeats = 3, warmup = 1;
+  // "interleave": the orderers of a dataset take turns frame by frame on each view (warm-up
+  // frames first, in turns too), all prepared at once, so a ratio of two of them is not
+  // swayed by the machine changing speed between their jobs (runner.cpp).
+  bool interleave = false;
   // TBB parallelism per measurement, each job run once per entry (0: all cores); keys and
   // records carry the count in effect. `--threads N` replaces the list with {N}.
   std::vector<int> threads{0};

@@ -150,3 +150,42 @@ TEST(CliThreads, BadThreadsIsOneLineAndExitTwo) {
       EXPECT_NE(r.out.find("--threads"), std::string::npos) << r.out;
     }
 }
+
+// "interleave": the orderers of a dataset take turns frame by frame on each view (warm-up
+// frames first), where a plain run measures one job after the other; the records say so and
+// have their own keys, and a second run finds them done.
+TEST(CliThreads, InterleaveTakesTurnsFrameByFrame) {
+  const auto run = [&](bool interleave, const std::string& name, std::string& log) {
+    const fs::path suite = scratch(name + ".json"), results = scratch(name + ".jsonl"), frames = scratch(name + ".log");
+    fs::remove(results), fs::remove(frames);
+    std::ofstream(suite) << R"({"name": "il", "datasets": [{"name": "gap", "set": {"nx": 3, "ny": 3, "nz": 4}}],
+        "algorithms": ["frames-logged:tag=1", "frames-logged:tag=2"], "views": 2, "sizes": ["16x16"],
+        "repeats": 2, "warmup": 1, "oracle": false, "threads": 1, "interleave": )"
+                         << (interleave ? "true" : "false") << "}";
+    const std::string env = "VOB_FRAME_LOG=" + frames.string() + " ";
+    const vob::test::CommandOutput r = vob::test::run_command(env + VOB_BINARY + " --plugin " + VOB_THREADS_PLUGIN +
+                                                              " run " + suite.string() + " -o " + results.string() + " 2>&1");
+    EXPECT_EQ(r.code, 0) << r.out;
+    std::ifstream in(frames);
+    std::getline(in, log);
+    const auto recs = records(results);
+    EXPECT_EQ(recs.size(), 4u);
+    for (const json& j : recs) {
+      EXPECT_EQ(j.value("interleaved", false), interleave) << j["key"];
+      EXPECT_EQ(j["key"].get<std::string>().find("|interleaved") != std::string::npos, interleave) << j["key"];
+      EXPECT_EQ(j["total"]["samples"].size(), 2u) << j["key"];
+    }
+    const vob::test::CommandOutput again = vob::test::run_command(
+        env + VOB_BINARY + " --plugin " + VOB_THREADS_PLUGIN + " run " + suite.string() + " -o " + results.string() + " 2>&1");
+    EXPECT_EQ(again.code, 0) << again.out;
+    EXPECT_NE(again.out.find("0 records written, 4 already present"), std::string::npos) << again.out;
+    return recs;
+  };
+  std::string turns, plain;
+  run(true, "interleaved", turns);
+  run(false, "plain", plain);
+  // Per view: a warm-up frame of each, then the two timed frames of each, in turns.
+  EXPECT_EQ(turns, "1 2 1 2 1 2 1 2 1 2 1 2 ");
+  // Per orderer: its views one after the other, warm-up and repeats together.
+  EXPECT_EQ(plain, "1 1 1 1 1 1 2 2 2 2 2 2 ");
+}
