@@ -80,16 +80,8 @@ VOB_AVX2 __m256d set(double a) { return _mm256_set1_pd(a); }
 // tests as lane masks instead of a chain of scalar compares.
 __attribute__((target("avx2"))) bool tiny_triangle_rows_avx2(const SampleFrame& fr, const Vec3* v,
                                                              int phase1_sign, RowEdges& e, RowDepth& depth) {
+  if (!detail::depth_plane(fr, v, depth)) return false;
   const bool ortho = fr.ortho();
-  depth.n = cross(v[1] - v[0], v[2] - v[0]);
-  depth.d = -dot(depth.n, v[0]);
-  if (ortho) {
-    const double nf = dot(depth.n, fr.forward());
-    if (nf == 0) return false;
-    depth.inv_nf = 1.0 / nf;
-  } else {
-    depth.num = -dot(depth.n, fr.eye() - v[0]);
-  }
   const __m256d vx = _mm256_set_pd(v[0].x, v[2].x, v[1].x, v[0].x), nx = _mm256_set_pd(v[1].x, v[0].x, v[2].x, v[1].x);
   const __m256d vy = _mm256_set_pd(v[0].y, v[2].y, v[1].y, v[0].y), ny = _mm256_set_pd(v[1].y, v[0].y, v[2].y, v[1].y);
   const __m256d vz = _mm256_set_pd(v[0].z, v[2].z, v[1].z, v[0].z), nz = _mm256_set_pd(v[1].z, v[0].z, v[2].z, v[1].z);

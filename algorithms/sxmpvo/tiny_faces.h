@@ -77,19 +77,25 @@ inline bool owns_zero(const SampleFrame& fr, const Vec3& m) {
 inline bool lex_less_flat(const Vec3& a, const Vec3& b) {
   return (a.x < b.x) | ((a.x == b.x) & ((a.y < b.y) | ((a.y == b.y) & (a.z < b.z))));
 }
-}  // namespace detail
-
-inline bool tiny_triangle_rows(const SampleFrame& fr, const Vec3* v, int phase1_sign, RowEdges& e, RowDepth& depth) {
-  const bool ortho = fr.ortho();
+// The triangle's depth plane as the rasterizer sets it up (false: seen edge-on in an
+// orthographic view).
+inline bool depth_plane(const SampleFrame& fr, const Vec3* v, RowDepth& depth) {
   depth.n = cross(v[1] - v[0], v[2] - v[0]);
   depth.d = -dot(depth.n, v[0]);
-  if (ortho) {
+  if (fr.ortho()) {
     const double nf = dot(depth.n, fr.forward());
     if (nf == 0) return false;
     depth.inv_nf = 1.0 / nf;
   } else {
     depth.num = -dot(depth.n, fr.eye() - v[0]);
   }
+  return true;
+}
+}  // namespace detail
+
+inline bool tiny_triangle_rows(const SampleFrame& fr, const Vec3* v, int phase1_sign, RowEdges& e, RowDepth& depth) {
+  if (!detail::depth_plane(fr, v, depth)) return false;
+  const bool ortho = fr.ortho();
   // The rasterizer's facing is sigma (orthographic) or -sigma (perspective), sigma being
   // orient3d(v0, v1, v2, eye), resp. orient_direction(v0, v1, v2, f) = -(phase-I sign):
   // both are -(phase-I sign).
