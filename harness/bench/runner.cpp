@@ -215,7 +215,8 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
     // "interleave": each set of jobs that differ only in their orderer (one view, size and
     // thread count) measured in turns, a frame of each orderer at a time, warm-up frames
     // first; every orderer of the dataset is prepared once and kept until the dataset ends.
-    // False when a stop was asked for (the records of finished sets are written).
+    // False when a stop was asked for: checked between sets, as a plain run checks between
+    // jobs, so the set in progress is finished and written first.
     auto run_interleaved = [&]() -> bool {
       std::map<std::string, std::unique_ptr<PreparedOrderer>> ready;  // by spec and threads
       std::vector<std::string> set_order;
