@@ -4,6 +4,8 @@
 #include "algorithms/sxmpvo/abuffer.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <random>
 
 using namespace vob::sxmpvo;
@@ -93,15 +95,16 @@ TEST(ABuffer, ReplaysArrivalsByRank) {
   EXPECT_EQ(shuffled.walk_steps(), by_rank.walk_steps());
 }
 
-// Lists of 0 to 45 entries, depths with ties, recorded in shuffled batches and ordered in
-// two pixel ranges: the same lists and counts as the paper's linked-list insertion, naively.
+// Lists of 0 to 79 entries, depths with ties and, in every 7th list, a NaN, recorded in
+// shuffled batches and ordered in two pixel ranges: the same lists and counts as the
+// paper's linked-list insertion, naively.
 TEST(ABuffer, ListsMatchLinkedListInsertion) {
   std::mt19937 rng(3);
-  const int64_t pixels = 46;
+  const int64_t pixels = 80;
   std::vector<ABuffer::Raw> all;
   for (int64_t p = 0; p < pixels; ++p)
     for (int64_t i = 0; i < p; ++i)
-      all.push_back({double(rng() % 12), back(int32_t(i)), int32_t(p), 0});
+      all.push_back({p % 7 == 3 && i == p / 2 ? std::nan("") : double(rng() % 12), back(int32_t(i)), int32_t(p), 0});
   std::shuffle(all.begin(), all.end(), rng);  // arrival order
   for (size_t r = 0; r < all.size(); ++r) all[r].rank = int32_t(r);
   std::vector<std::vector<std::pair<double, int32_t>>> naive(pixels);  // far to near
@@ -124,10 +127,15 @@ TEST(ABuffer, ListsMatchLinkedListInsertion) {
   a.gather();  // as SXMPVO does: lists ordered a range of pixels at a time
   a.order(0, 17);
   a.order(17, pixels);
+  const auto as_text = [](const std::vector<std::pair<double, int32_t>>& l) {  // NaN equals NaN
+    std::string s;
+    for (const auto& [t, item] : l) s += std::to_string(t) + ":" + std::to_string(item) + " ";
+    return s;
+  };
   for (int64_t p = 0; p < pixels; ++p) {
     std::vector<std::pair<double, int32_t>> got;
     for (int32_t i = a.head(p); i >= 0; i = a.entry(i).next) got.emplace_back(a.entry(i).t, a.entry(i).item);
-    EXPECT_EQ(got, naive[p]) << "pixel " << p;
+    EXPECT_EQ(as_text(got), as_text(naive[p])) << "pixel " << p;
   }
   EXPECT_EQ(a.head_insertions(), heads);
   EXPECT_EQ(a.walk_steps(), walks);
