@@ -168,6 +168,47 @@ TEST(PnLists, NoDuplicatesAndMoveToFront) {
 // Cook et al.'s Fig. 6, pixel D: far to near b1 a3 c2 c3 d1 d3 e2 e3 (back-facing faces at
 // odd positions from the far end). Pairs (a3, c2), (c3, d1), (d3, e2): c occludes a, d
 // occludes c, e occludes d.
+// Random queries, repeats among them, over two frames: the same lists and counts as naive
+// move-to-front lists.
+TEST(PnLists, MatchNaiveMoveToFrontLists) {
+  std::mt19937 rng(5);
+  const size_t cells = 3 * 4096;
+  PnLists pn;
+  for (int frame = 0; frame < 2; ++frame) {
+    pn.reset(cells);
+    std::vector<std::vector<int32_t>> naive(cells);  // head first
+    int64_t at_head = 0, moved = 0, steps = 0;
+    for (int q = 0; q < 20000; ++q) {
+      const int32_t occluding = int32_t(rng() % 3) * 4096 + int32_t(rng() % 8);
+      const int32_t occluded = int32_t(rng() % 5);
+      std::vector<int32_t>& l = naive[occluding];
+      const auto it = std::find(l.begin(), l.end(), occluded);
+      steps += it == l.end() ? int64_t(l.size()) : int64_t(it - l.begin()) + 1;
+      if (it == l.begin() && !l.empty()) {
+        ++at_head;
+      } else if (it != l.end()) {
+        l.erase(it);
+        l.insert(l.begin(), occluded);
+        ++moved;
+      } else {
+        l.insert(l.begin(), occluded);
+      }
+      if (q % 3 == 0) pn.add(occluding, occluded), pn.add(occluding, occluded);  // a repeat
+      else pn.add(occluding, occluded);
+      if (q % 3 == 0) ++at_head, ++steps;
+    }
+    EXPECT_EQ(pn.found_at_head(), at_head);
+    EXPECT_EQ(pn.moved_to_front(), moved);
+    EXPECT_EQ(pn.search_steps(), steps);
+    vob::mpvo::ExtraRelations x;
+    pn.to_relations(x);
+    for (size_t c = 0; c < cells; ++c) {
+      const std::vector<int32_t> got(x.behind.begin() + x.span[c].first, x.behind.begin() + x.span[c].second);
+      EXPECT_EQ(got, naive[c]) << "cell " << c;
+    }
+  }
+}
+
 TEST(PairPixList, Figure6PixelD) {
   enum { a, b, c, d, e };
   ABuffer buf;
