@@ -24,7 +24,19 @@ void ABuffer::gather() {
   std::vector<int32_t>& cursor = cursor_;
   cursor.assign(offsets_.begin(), offsets_.end() - 1);
   PixEntry* list = list_.data();
-  each_raw([&](const Raw& r) { list[cursor[r.pixel]++] = {r.t, r.item, r.rank}; });
+  // Pixels come at random: the place of the entry kDist ahead is asked for before its
+  // write (its cursor may still move before then; a stale guess only costs a prefetch).
+  constexpr size_t kDist = 32;
+  const auto scatter = [&](const std::vector<Raw>& raw) {
+    const size_t n = raw.size();
+    for (size_t i = 0; i < n; ++i) {
+      if (i + kDist < n) __builtin_prefetch(&list[cursor[raw[i + kDist].pixel]], 1);
+      const Raw& r = raw[i];
+      list[cursor[r.pixel]++] = {r.t, r.item, r.rank};
+    }
+  };
+  scatter(raw_);
+  for (const std::vector<Raw>* b : batches_) scatter(*b);
 }
 
 void ABuffer::order(int64_t p0, int64_t p1) {
