@@ -113,7 +113,13 @@ void PnLists::to_relations(mpvo::ExtraRelations& out) const {
   out.cells = touched_;
   out.behind.resize(pool_.size());
   int32_t k = 0;
-  for (int32_t c : touched_) {
+  constexpr size_t kDist = 16;  // cells come at random: their head and span asked for ahead
+  for (size_t j = 0, n = touched_.size(); j < n; ++j) {
+    if (j + kDist < n) {
+      __builtin_prefetch(&head_[touched_[j + kDist]]);
+      __builtin_prefetch(&out.span[touched_[j + kDist]], 1);
+    }
+    const int32_t c = touched_[j];
     const int32_t first = k;
     for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) out.behind[k++] = pool_[i].cell;
     out.span[c] = {first, k};
