@@ -126,23 +126,28 @@ void PnLists::to_relations(mpvo::ExtraRelations& out) const {
   }
 }
 
-void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& e,
+void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
                    PnLists& pn, PairStats& stats) {
   if (abuf.head(pixel) < 0) return;
-  e.assign(abuf.begin(pixel), abuf.end(pixel));
+  // Read in place; copied to `scratch` only when a tie is reordered (rare).
+  const PixEntry* e = abuf.begin(pixel);
+  const size_t k = static_cast<size_t>(abuf.end(pixel) - e);
   ++stats.lists;
-  stats.max_list = std::max<int64_t>(stats.max_list, static_cast<int64_t>(e.size()));
+  stats.max_list = std::max<int64_t>(stats.max_list, static_cast<int64_t>(k));
   // Far to near: beyond the farthest entry the ray is outside the mesh, so the first entry
   // expected is back-facing.
   bool want_front = false;
   int32_t occluded = -1;  // cell of the last front-facing entry, while in a ray gap
-  const size_t k = e.size();
   for (size_t i = 0; i < k; ++i) {
     if (e[i].front() != want_front) {
       size_t j = i + 1;
       while (j < k && e[j].t >= e[i].t - tie && e[j].front() != want_front) ++j;
       if (j < k && e[j].t >= e[i].t - tie) {
-        std::rotate(e.begin() + i, e.begin() + j, e.begin() + j + 1);
+        if (e != scratch.data()) {
+          scratch.assign(e, e + k);
+          e = scratch.data();
+        }
+        std::rotate(scratch.begin() + i, scratch.begin() + j, scratch.begin() + j + 1);
         ++stats.tie_reorders;
       } else {
         ++stats.unpaired;  // taken as it is: the state follows the entry's own kind

@@ -254,6 +254,29 @@ TEST(PairPixList, TiesAreReorderedToRestoreAlternation) {
   EXPECT_EQ(relations(p.pn, 4), (std::vector<std::pair<int32_t, int32_t>>{{1, 2}, {2, 3}}));
   EXPECT_EQ(p.st.tie_reorders, 2);
   EXPECT_EQ(p.st.unpaired, 0);
+  // Two reorders in one list, the second within the range the first rotated (so on the
+  // copy the first made), and the list itself left as it was. Far to near: back(0) 9,
+  // [back(1), back(2), front(0), front(1)] at 7, front(2) 1.
+  ABuffer two;
+  two.reset(1);
+  two.insert(0, 1, front(2));
+  two.insert(0, 7, front(1));  // equal depths: each later one goes farther
+  two.insert(0, 7, front(0));
+  two.insert(0, 7, back(2));
+  two.insert(0, 7, back(1));
+  two.insert(0, 9, back(0));
+  two.finish();
+  std::vector<int32_t> before;
+  for (int32_t i = two.head(0); i >= 0; i = two.entry(i).next) before.push_back(two.entry(i).item);
+  EXPECT_EQ(before, (std::vector<int32_t>{back(0), back(1), back(2), front(0), front(1), front(2)}));
+  Pairing q(3);
+  q.pair(two, 0);
+  EXPECT_EQ(relations(q.pn, 3), (std::vector<std::pair<int32_t, int32_t>>{{1, 0}, {2, 1}}));
+  EXPECT_EQ(q.st.tie_reorders, 2);
+  EXPECT_EQ(q.st.unpaired, 0);
+  std::vector<int32_t> after;
+  for (int32_t i = two.head(0); i >= 0; i = two.entry(i).next) after.push_back(two.entry(i).item);
+  EXPECT_EQ(after, before);
   // Without a tolerance the rounding case is no tie: alternation breaks and is counted.
   Pairing strict(4);
   strict.pair(buf, 1, 0.0);
