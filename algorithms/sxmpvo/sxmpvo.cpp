@@ -198,8 +198,8 @@ class SxmpvoOrderer final : public Orderer {
       abuf_.order(p0, p1);
       // The occluding cell of a pair is a back-facing entry's just behind a front-facing one
       // (far to near; across two lists the guess only costs a prefetch).
-      for (const sxmpvo::PixEntry *e = abuf_.begin(p0) + 1, *end = abuf_.begin(p1); e < end; ++e)
-        if (!e->front() && e[-1].front()) pn_.prefetch(e->cell());
+      for (const sxmpvo::PixEntry *e = abuf_.begin(p0), *end = abuf_.begin(p1); e + 1 < end; ++e)
+        if (e->front() && !e[1].front()) pn_.prefetch(e[1].cell());
       for (int64_t p = p0; p < p1; ++p)
         if (abuf_.head(p) >= 0) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
     }
