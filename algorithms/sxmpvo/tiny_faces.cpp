@@ -41,9 +41,6 @@ int entries_scalar(const SampleFrame& fr, const Vec3* v, int phase1_sign, const 
 
 // The row kernel's steps (row_step_avx2.h) over the box, each step's four entries written
 // whatever its mask (the count steps by the covered ones): no jump per sample or per hit.
-// Two passes: first every step's t and mask, then the writes. Where one pass did both, the
-// next write's place waited on the step's mask, so on its division and square root; apart,
-// the steps' divisions overlap and the writes' chain is a popcount.
 template <bool kOrtho>
 __attribute__((target("avx2,popcnt"))) int entries_avx2(const SampleFrame& fr, const RowEdges& e, const RowDepth& p,
                                                  const SampleRect& box, int32_t item, int32_t rank,
@@ -51,28 +48,21 @@ __attribute__((target("avx2,popcnt"))) int entries_avx2(const SampleFrame& fr, c
   const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
   const RowStepAvx2 k(e, p);
   const int cols = fr.cols();
-  // A tiny box holds at most kTinyMaxSamples samples, so at most that many steps.
-  __m256d ts[kTinyMaxSamples];
-  int masks[kTinyMaxSamples], first[kTinyMaxSamples];
-  int steps = 0;
+  int n = 0;
   for (int sy = box.y0; sy <= box.y1; ++sy) {
     const Vec3 row = fr.row_term(sy);
     const __m256d rx = _mm256_set1_pd(row.x), ry = _mm256_set1_pd(row.y), rz = _mm256_set1_pd(row.z);
-    for (int sx = box.x0; sx <= box.x1; sx += 4, ++steps) {
-      masks[steps] = k.step<kOrtho>(rx, ry, rz, cx, cy, cz, sx, box.x1, ts[steps]);
-      first[steps] = sy * cols + sx;
+    for (int sx = box.x0; sx <= box.x1; sx += 4) {
+      __m256d t;
+      const int mask = k.step<kOrtho>(rx, ry, rz, cx, cy, cz, sx, box.x1, t);
+      alignas(32) double ts[4];
+      alignas(16) int32_t px[4];
+      _mm256_store_pd(ts, RowStepAvx2::compact_t(t, mask));
+      _mm_store_si128(reinterpret_cast<__m128i*>(px),
+                      _mm_add_epi32(_mm_set1_epi32(sy * cols + sx), RowStepAvx2::compact_lanes(mask)));
+      for (int j = 0; j < 4; ++j) dst[n + j] = ABuffer::Raw(ts[j], item, px[j], rank);
+      n += __builtin_popcount(mask);
     }
-  }
-  int n = 0;
-  for (int s = 0; s < steps; ++s) {
-    const int mask = masks[s];
-    alignas(32) double t[4];
-    alignas(16) int32_t px[4];
-    _mm256_store_pd(t, RowStepAvx2::compact_t(ts[s], mask));
-    _mm_store_si128(reinterpret_cast<__m128i*>(px),
-                    _mm_add_epi32(_mm_set1_epi32(first[s]), RowStepAvx2::compact_lanes(mask)));
-    for (int j = 0; j < 4; ++j) dst[n + j] = ABuffer::Raw(t[j], item, px[j], rank);
-    n += __builtin_popcount(mask);
   }
   return n;
 }
