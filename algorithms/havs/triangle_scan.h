@@ -86,19 +86,22 @@ class TriangleScan {
     }
   }
 
- private:
+  // Rows ya .. ya + ny - 1 (ny <= kRows; each array holds kRows): possible samples [p0, p1]
+  // and certainly inside ones [c0, c1] (within clip's columns); p0 > p1 where none is
+  // possible. Public so that a test can compare the kernels: `scalar` forces the portable
+  // loop where the AVX2 one would run.
+  void row_ranges(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1,
+                  bool scalar = false) const;
   static constexpr int kRows = 16;
-  // Rows ya .. ya + ny - 1: possible samples [p0, p1] and certainly inside ones [c0, c1]
-  // (within clip's columns); p0 > p1 where none is possible. Order-independent over edges:
-  // bounds only tighten, and an emptied range stays empty.
-  void row_ranges(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const {
-    if (special_) return row_ranges_any(ya, ny, clip, p0, p1, c0, c1);
-    // Every edge slanted and finite (nearly all faces): the same bounds as row_ranges_any,
-    // row by row without branches. An edge with a < 0 bounds x from above; it is applied as
-    // a lower bound of -x, so both kinds are one max with the sign folded in (negation is
-    // exact). floor_near is monotonic, so the max of the edges' floors is the floor of their
-    // max: per row the arguments are combined first (an edge of the other kind adds +-inf),
-    // then rounded once per bound.
+
+ private:
+  // Every edge slanted and finite (nearly all faces): the same bounds as row_ranges_any,
+  // row by row without branches. An edge with a < 0 bounds x from above; it is applied as
+  // a lower bound of -x, so both kinds are one max with the sign folded in (negation is
+  // exact). floor_near is monotonic, so the max of the edges' floors is the floor of their
+  // max: per row the arguments are combined first (an edge of the other kind adds +-inf),
+  // then rounded once per bound. Order-independent over edges: bounds only tighten.
+  void row_ranges_slanted(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const {
     const int lim = frame_->cols();
     constexpr double inf = std::numeric_limits<double>::infinity();
     for (int r = 0; r < ny; ++r) {
@@ -117,6 +120,9 @@ class TriangleScan {
       c1[r] = std::min(clip.x1, -(floor_near(w_neg, lim) + 1));
     }
   }
+  // The same, four rows a step with the same operations lane by lane (no FMA), so the same
+  // bits (triangle_scan.cpp; havs_triangle_scan_test compares them).
+  void row_ranges_slanted_avx2(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const;
   // Any edges, flat (a = 0) or with non-finite forms among them.
   void row_ranges_any(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1) const {
     for (int r = 0; r < ny; ++r) p0[r] = c0[r] = clip.x0, p1[r] = c1[r] = clip.x1;
