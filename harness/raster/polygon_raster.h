@@ -96,8 +96,9 @@ class PolygonRaster {
   // The building blocks of setup(), public so that a caller scanning its own way (HAVS's
   // k-buffer) uses the very same edge functions and depth plane, not a copy of the rule.
   // Edge functions of triangle (p0, p1, p2) (box not set); false when seen edge-on.
+  // portable: the scalar loop even where the CPU has AVX2 (the same bits; tests compare).
   static bool triangle_edges(const SampleFrame& frame, const Vec3& p0, const Vec3& p1,
-                             const Vec3& p2, Edge e[3]);
+                             const Vec3& p2, Edge e[3], bool portable = false);
   struct DepthPlane {
     Plane plane;
     double num = 0, inv_nf = 0;

@@ -101,3 +101,50 @@ TEST(RowCoverage, Avx2KernelMatchesTheScalarLoopBitForBit) {
                 (long long)tally.rows, (long long)tally.hits, (long long)tally.zero_rows);
   }
 }
+
+// PolygonRaster::triangle_edges' AVX2 lanes against its scalar loop, every field bit for
+// bit: random triangles; corners on a lattice so that coordinates tie (the lexicographic
+// order decided by y or z), edges parallel to the rows or columns of an axis-aligned view
+// (a == 0 or b == 0: the top-left rule's later tests), signed zeros, repeated corners.
+TEST(RowCoverage, TriangleEdgesAvx2MatchTheScalarLoopBitForBit) {
+  if (!row_coverage_uses_avx2()) GTEST_SKIP() << "this CPU has no AVX2: only the scalar loop runs";
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  std::uniform_int_distribution<int> lattice(-2, 2);
+  int64_t compared = 0, a_zero = 0, ab_zero = 0, owned = 0;
+  for (const bool ortho : {false, true})
+    for (const bool aligned : {false, true}) {
+      const Camera cam = aligned ? test::test_camera({0, 0, 9}, {0, 0, 0}, 16, 16, ortho, 8.0)
+                                 : test::test_camera({1.3, -4.1, 3.7}, {0.1, 0.2, 0}, 24, 20, ortho, 3.0);
+      const SampleFrame f(cam, 1);
+      for (int k = 0; k < 4000; ++k) {
+        Vec3 v[3];
+        for (Vec3& p : v)
+          p = k % 2 ? Vec3{u(rng), u(rng), u(rng)} : Vec3{double(lattice(rng)), double(lattice(rng)), lattice(rng) * 0.5};
+        if (k % 4 == 0) v[1].z = -0.0, v[2].z = 0.0;
+        if (k % 13 == 0) v[2] = v[0];  // a repeated corner
+        // An edge in the eye's plane, seen along the view (perspective): a == b == 0 with
+        // m != 0, where the rule's last test decides.
+        if (!ortho && k % 5 == 1) v[0].z = v[1].z = cam.eye.z;
+        PolygonRaster::Edge s[3], a[3];
+        const bool rs = PolygonRaster::triangle_edges(f, v[0], v[1], v[2], s, true);
+        const bool ra = PolygonRaster::triangle_edges(f, v[0], v[1], v[2], a);
+        ASSERT_EQ(rs, ra) << "triangle " << k;
+        if (!rs) continue;
+        for (int i = 0; i < 3; ++i) {
+          const double fs[] = {s[i].m.x, s[i].m.y, s[i].m.z, s[i].c, s[i].a, s[i].b, s[i].k, s[i].eta};
+          const double fa[] = {a[i].m.x, a[i].m.y, a[i].m.z, a[i].c, a[i].a, a[i].b, a[i].k, a[i].eta};
+          ASSERT_EQ(std::memcmp(fs, fa, sizeof fs), 0) << "triangle " << k << " edge " << i;
+          ASSERT_EQ(s[i].own, a[i].own) << "triangle " << k << " edge " << i;
+          a_zero += s[i].a == 0;
+          ab_zero += s[i].a == 0 && s[i].b == 0 && s[i].own;
+          owned += s[i].own;
+        }
+        ++compared;
+      }
+    }
+  EXPECT_GT(compared, 10000);
+  EXPECT_GT(a_zero, 100);  // the top-left rule's tie-breaks were exercised, the last too
+  EXPECT_GT(ab_zero, 10);
+  EXPECT_GT(owned, 1000);
+}
