@@ -15,11 +15,6 @@
 namespace vob {
 
 namespace {
-bool display_opens() {
-  Display* d = XOpenDisplay(nullptr);
-  if (d) XCloseDisplay(d);
-  return d != nullptr;
-}
 
 std::string display_env() {
   const char* name = std::getenv("DISPLAY");
@@ -50,7 +45,8 @@ std::string read_display_number(int fd, int seconds) {
 }  // namespace
 
 XServer::XServer(bool start_xvfb) {
-  if (display_opens()) {
+  held_ = XOpenDisplay(nullptr);
+  if (held_) {
     description_ = "DISPLAY=" + std::string(std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "");
     return;
   }
@@ -92,7 +88,8 @@ XServer::XServer(bool start_xvfb) {
   pid_ = pid;
   setenv("DISPLAY", (":" + number).c_str(), 1);
   description_ = "Xvfb :" + number + " (started for this run)";
-  if (!display_opens()) {
+  held_ = XOpenDisplay(nullptr);
+  if (!held_) {
     stop();
     throw CannotDraw("Xvfb :" + number + " started but does not open");
   }
@@ -101,6 +98,8 @@ XServer::XServer(bool start_xvfb) {
 XServer::~XServer() { stop(); }
 
 void XServer::stop() {
+  if (held_) XCloseDisplay(held_);
+  held_ = nullptr;
   if (pid_ <= 0) return;
   kill(pid_, SIGTERM);
   int status = 0;

@@ -3,13 +3,17 @@
 // (Debian package xvfb): started with -displayfd (the server picks a free display, no
 // race between runs), in a process group of its own (a terminal's Ctrl-C reaches this
 // program, which then stops cleanly, not the server under it), ended with the run and
-// by the kernel should this program die (PR_SET_PDEATHSIG). Kept apart because Xlib's
-// macros (Bool, Status, ...) clash with vobench's names.
+// by the kernel should this program die (PR_SET_PDEATHSIG). Either way one connection is
+// held open for the run: a server started without -noreset (xvfb-run's) resets when its
+// last client leaves, and VTK's window, opened during that reset, aborts. Kept apart
+// because Xlib's macros (Bool, Status, ...) clash with vobench's names.
 #pragma once
 #include <stdexcept>
 #include <string>
 
 #include <sys/types.h>
+
+struct _XDisplay;
 
 namespace vob {
 
@@ -30,6 +34,7 @@ class XServer {
 
  private:
   void stop();
+  _XDisplay* held_ = nullptr;  // open from the constructor to stop(): no server reset
   pid_t pid_ = -1;
   std::string description_;
 };
