@@ -1,5 +1,7 @@
 #include "algorithms/centroid/centroid_keys.h"
 
+#include "harness/cpu_features.h"
+
 namespace vob {
 namespace {
 
@@ -23,17 +25,12 @@ __attribute__((target("avx2"))) void run_avx2(CentroidArrays c, Vec3 eye, Vec3 f
 
 }  // namespace
 
-bool centroid_keys_use_avx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-}
-
 CentroidKeyRun centroid_key_run_baseline(bool by_view) {
   return by_view ? &run_baseline<true> : &run_baseline<false>;
 }
 
 CentroidKeyRun centroid_key_run(bool by_view) {
-  if (!centroid_keys_use_avx2()) return centroid_key_run_baseline(by_view);
+  if (!cpu_has_avx2()) return centroid_key_run_baseline(by_view);
   return by_view ? &run_avx2<true> : &run_avx2<false>;
 }
 

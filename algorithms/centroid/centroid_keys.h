@@ -35,6 +35,5 @@ using CentroidKeyRun = void (*)(CentroidArrays c, Vec3 eye, Vec3 f, size_t i0, s
 // which would round differently) when the CPU has it, else the baseline build's SSE2 loop.
 CentroidKeyRun centroid_key_run(bool by_view);
 CentroidKeyRun centroid_key_run_baseline(bool by_view);  // for tests: the non-AVX2 path
-bool centroid_keys_use_avx2();
 
 }  // namespace vob

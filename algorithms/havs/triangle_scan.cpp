@@ -2,13 +2,14 @@
 
 #include <immintrin.h>
 
+#include "harness/cpu_features.h"
+
 namespace vob::havs {
 
 void TriangleScan::row_ranges(int ya, int ny, const SampleRect& clip, int* p0, int* p1, int* c0, int* c1,
                               bool scalar) const {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
   if (special_) return row_ranges_any(ya, ny, clip, p0, p1, c0, c1);
-  if (avx2 && !scalar) return row_ranges_slanted_avx2(ya, ny, clip, p0, p1, c0, c1);
+  if (cpu_has_avx2() && !scalar) return row_ranges_slanted_avx2(ya, ny, clip, p0, p1, c0, c1);
   row_ranges_slanted(ya, ny, clip, p0, p1, c0, c1);
 }
 

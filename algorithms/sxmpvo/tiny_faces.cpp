@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "harness/cpu_features.h"
 #include "harness/raster/edge_lanes_avx2.h"
 #include "harness/raster/row_step_avx2.h"
 #include "harness/raster/sample_centres.h"
@@ -96,7 +97,7 @@ int entries_avx2_any(const SampleFrame& fr, const Vec3* v, int phase1_sign, cons
 
 }  // namespace
 
-TinyEntriesFn tiny_entries() { return row_coverage_uses_avx2() ? &entries_avx2_any : &entries_scalar; }
+TinyEntriesFn tiny_entries() { return cpu_has_avx2() ? &entries_avx2_any : &entries_scalar; }
 TinyEntriesFn tiny_entries_baseline() { return &entries_scalar; }
 
 }  // namespace vob::sxmpvo

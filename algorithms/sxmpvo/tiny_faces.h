@@ -60,7 +60,7 @@ TinyEntriesFn tiny_entries_baseline();  // through scan_tiny_triangle (tests com
 // edge-on in an orthographic view, it covers no sample).
 inline bool tiny_triangle_rows(const SampleFrame& fr, const Vec3* v, int phase1_sign, RowEdges& e,
                                RowDepth& depth);
-// The same with the three edges in AVX2 lanes (call only when row_coverage_uses_avx2()):
+// The same with the three edges in AVX2 lanes (call only when cpu_has_avx2()):
 // the same bits in e[0..3) and depth (tests compare the two).
 bool tiny_triangle_rows_avx2(const SampleFrame& fr, const Vec3* v, int phase1_sign, RowEdges& e, RowDepth& depth);
 

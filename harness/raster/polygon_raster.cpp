@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "harness/cpu_features.h"
 #include "harness/geometry/polygon_plane.h"
 #include "harness/geometry/predicates.h"
 #include "harness/raster/edge_lanes_avx2.h"
@@ -156,7 +157,6 @@ bool PolygonRaster::depth_plane(const SampleFrame& frame, const Vec3* v, int n, 
 
 bool PolygonRaster::triangle_edges(const SampleFrame& fr, const Vec3& p0, const Vec3& p1,
                                    const Vec3& p2, Edge edges[3], bool portable) {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
   const bool ortho = fr.ortho();
   const int sigma = facing_sign(p0, p1, p2, fr.eye(), ortho, fr.forward());
   if (sigma == 0) return false;  // edge-on: covers no ray
@@ -164,7 +164,7 @@ bool PolygonRaster::triangle_edges(const SampleFrame& fr, const Vec3& p0, const 
   // for orthographic, ((Pj - Pi) x f) . (Pi - O) has the sign of ((P1-P0) x (P2-P0)) . f.
   const double facing = ortho ? sigma : -sigma;
   const Vec3 p[3] = {p0, p1, p2};
-  if (avx2 && !portable) {
+  if (cpu_has_avx2() && !portable) {
     triangle_edges_avx2(fr, p, facing, edges);
     return true;
   }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "harness/cpu_features.h"
 #include "harness/raster/row_step_avx2.h"
 
 namespace vob {
@@ -74,13 +75,8 @@ int run_avx2(const SampleFrame& fr, const RowEdges& e, const RowDepth& p, const 
 
 }  // namespace
 
-bool row_coverage_uses_avx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-}
-
 RowCoverageFn row_coverage_baseline() { return &run_scalar; }
 
-RowCoverageFn row_coverage() { return row_coverage_uses_avx2() ? &run_avx2 : &run_scalar; }
+RowCoverageFn row_coverage() { return cpu_has_avx2() ? &run_avx2 : &run_scalar; }
 
 }  // namespace vob

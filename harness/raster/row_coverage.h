@@ -49,7 +49,6 @@ using RowCoverageFn = int (*)(const SampleFrame& frame, const RowEdges& e, const
 
 RowCoverageFn row_coverage();           // AVX2 when the CPU has it, else the baseline loop
 RowCoverageFn row_coverage_baseline();  // the scalar loop (tests compare the two)
-bool row_coverage_uses_avx2();
 
 // Collects spans and calls emit(sx, sy, t) for every covered sample, a batch of spans at a
 // time (one kernel call, one setup, per batch rather than per row).

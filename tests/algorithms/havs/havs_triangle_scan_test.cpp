@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "algorithms/havs/face_bins.h"
+#include "harness/cpu_features.h"
 #include "tests/algorithms/havs/havs_views.h"
 #include "tests/support/test_util.h"
 
@@ -94,7 +95,7 @@ TEST(HavsTriangleScanExact, SamplesOnEdgesDecidedAsPolygonRaster) {
 // that a difference does not change coverage on these meshes; the ranges are the kernel's
 // whole output). Skipped where the CPU has no AVX2.
 TEST(HavsTriangleScanRanges, Avx2KernelMatchesTheScalarLoop) {
-  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2 on this CPU: only the scalar loop runs";
+  if (!vob::cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the scalar loop runs";
   constexpr int R = havs::TriangleScan::kRows;
   int64_t rows = 0, certain = 0;
   for (const char* mesh : {"helix", "zoo"}) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "algorithms/sxmpvo/tiny_faces.h"
+#include "harness/cpu_features.h"
 #include "harness/geometry/predicates.h"
 
 using namespace vob;
@@ -177,7 +178,7 @@ TEST(TinyFaces, LargeOrBehindTheEyeIsNotTiny) {
 // edges along sample rows and columns seen along an axis, where an edge's ownership falls
 // to the second and third of its tests (m . dx == 0 exactly).
 TEST(TinyFaces, LaneSetupEqualsTheScalarSetup) {
-  if (!row_coverage_uses_avx2()) GTEST_SKIP() << "no AVX2 on this CPU";
+  if (!cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU";
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::uniform_int_distribution<int> grid(-3, 3);

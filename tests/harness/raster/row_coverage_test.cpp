@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "harness/cpu_features.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/row_coverage.h"
 #include "tests/support/test_meshes.h"
@@ -89,7 +90,7 @@ void run(bool ortho, Tally& tally) {
 }  // namespace
 
 TEST(RowCoverage, Avx2KernelMatchesTheScalarLoopBitForBit) {
-  if (!row_coverage_uses_avx2()) GTEST_SKIP() << "this CPU has no AVX2: only the scalar loop runs";
+  if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2: only the scalar loop runs";
   for (bool ortho : {false, true}) {
     Tally tally;
     run(ortho, tally);
@@ -107,7 +108,7 @@ TEST(RowCoverage, Avx2KernelMatchesTheScalarLoopBitForBit) {
 // order decided by y or z), edges parallel to the rows or columns of an axis-aligned view
 // (a == 0 or b == 0: the top-left rule's later tests), signed zeros, repeated corners.
 TEST(RowCoverage, TriangleEdgesAvx2MatchTheScalarLoopBitForBit) {
-  if (!row_coverage_uses_avx2()) GTEST_SKIP() << "this CPU has no AVX2: only the scalar loop runs";
+  if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2: only the scalar loop runs";
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-2.0, 2.0);
   std::uniform_int_distribution<int> lattice(-2, 2);
