@@ -15,7 +15,6 @@
 namespace vob {
 
 namespace {
-
 std::string display_env() {
   const char* name = std::getenv("DISPLAY");
   return std::string("'") + (name ? name : "") + "'";
