@@ -107,6 +107,9 @@ void MpvoCore::bind(const Scene& scene) {
       face_slot_[2 * f + (faces_->cell0[f] == static_cast<int32_t>(c) ? 0 : 1)] = static_cast<uint8_t>(k);
     }
   }
+  // Every cell with four slots (a tetrahedral mesh): cell c's slots start at 4c.
+  tet_slots_ = true;
+  for (size_t c = 0; c <= nc && tet_slots_; ++c) tet_slots_ = faces_->cell_face_offsets[c] == int32_t(4 * c);
   sign_.assign(nf, 0);
   outbound_.assign(nc, 0);
   behind_mask_.assign(nc, 0);
@@ -241,6 +244,7 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
   const int32_t* cfo = faces_->cell_face_offsets.data();
   const int32_t* nbr = neighbour_.data();
   const uint8_t* behind = behind_mask_.data();
+  const bool tet = tet_slots_;
   const int32_t* xoff = kExtra ? extra_->offsets.data() : nullptr;
   const std::pair<int32_t, int32_t>* xspan = kExtra && !xoff ? extra_->span.data() : nullptr;
   const int32_t* xbehind = kExtra ? extra_->behind.data() : nullptr;
@@ -257,13 +261,24 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
     const int32_t c = stack_.back().cell;
     int32_t next = stack_.back().next;
     int32_t child = -1;
+    if (next == 0) {
+      // First look at c: ask for what the search reads at each behind neighbour (its state,
+      // mask and slots), so that the misses of the next levels overlap instead of queueing.
+      const int32_t* row = nbr + (tet ? 4 * c : cfo[c]);
+      for (unsigned bits = behind[c]; bits; bits &= bits - 1) {
+        const int32_t nb = row[__builtin_ctz(bits)];
+        __builtin_prefetch(&state_[nb], 1);
+        __builtin_prefetch(&behind[nb]);
+        __builtin_prefetch(tet ? &nbr[4 * nb] : &cfo[nb]);
+      }
+    }
     if (next < kExtraSlot) {
       // Behind neighbours across faces: the set bits of the mask from slot `next` on.
       unsigned bits = behind[c] & (0xffu << next);
       while (bits) {
         const int slot = __builtin_ctz(bits);
         bits &= bits - 1;
-        const int32_t nb = nbr[cfo[c] + slot];
+        const int32_t nb = nbr[(tet ? 4 * c : cfo[c]) + slot];
         const uint8_t st = state_[nb] & kStateMask;
         if (st == kNew) {
           child = nb;

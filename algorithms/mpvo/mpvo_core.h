@@ -199,6 +199,7 @@ class MpvoCore {
   // one place instead of chasing cell0/cell1 of every face.
   std::vector<int32_t> neighbour_;  // per slot: the cell across, or -1
   std::vector<uint8_t> face_slot_;  // per face: its slot in cell0, then in cell1
+  bool tet_slots_ = false;          // cell c's slots are 4c .. 4c+3 (spares the DFS a load)
 
   std::vector<int8_t> sign_;          // per face, per view
   std::vector<uint8_t> outbound_;     // per cell: arrows to neighbours in front
