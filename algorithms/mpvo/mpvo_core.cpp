@@ -147,36 +147,35 @@ void MpvoCore::create_partial_order(const Camera& view) {
   const double w0_scale = view.ortho ? 0.0 : 1.0;
   const double k = kRelativeBound * (view.ortho ? length(dir) : length(view.eye) + coord_bound_);
 
+  // Counters and the mode in locals: the byte stores below may alias any member. A face's
+  // sign is a coin toss on meshes numbered along a curve (which of its cells is cell0 is
+  // not coherent there), so the arrow's direction is chosen by selects, not a branch.
+  const bool plain = plain_double_;
+  int64_t exact_calls = 0, double_wrong = 0, arrows = 0;
   for (size_t f = 0; f < nf; ++f) {
     const Vec3 n = normal[f];
     const double value = n.x * w.x + n.y * w.y + n.z * w.z + w0_scale * offset[f];
     const double bound = (std::fabs(n.x) + std::fabs(n.y) + std::fabs(n.z)) * k;
-    int s;
-    if (plain_double_) {
-      s = (value > 0) - (value < 0);
-    } else if (std::fabs(value) > bound) {
-      s = value > 0 ? 1 : -1;
-    } else {
+    int s = (value > 0) - (value < 0);
+    if (!plain && !(std::fabs(value) > bound)) {
+      const int ds = s;
       s = exact_sign(static_cast<int32_t>(f), view, dir);
-      ++exact_calls_;
-      const int ds = (value > 0) - (value < 0);
-      double_wrong_ += (ds != s);
+      ++exact_calls;
+      double_wrong += (ds != s);
     }
     sign[f] = static_cast<int8_t>(s);
     const int32_t c1 = cell1[f];
     if (c1 >= 0 && s != 0) {
       // s > 0: eye on cell1's side, cell1 in front, the arrow leaves cell0.
       const int32_t c0 = cell0[f];
-      if (s > 0) {
-        ++outbound[c0];
-        behind[c1] |= static_cast<uint8_t>(1u << slot[2 * f + 1]);
-      } else {
-        ++outbound[c1];
-        behind[c0] |= static_cast<uint8_t>(1u << slot[2 * f]);
-      }
-      ++arrows_;
+      const int32_t front1 = s > 0, swap = (c0 ^ c1) & -(front1 ^ 1);  // by arithmetic: GCC branches on ?:
+      const int32_t from = c0 ^ swap, to = c1 ^ swap;
+      ++outbound[from];
+      behind[to] |= static_cast<uint8_t>(1u << slot[2 * f + front1]);
+      ++arrows;
     }
   }
+  exact_calls_ = exact_calls, double_wrong_ = double_wrong, arrows_ = arrows;
 }
 
 void MpvoCore::set_face_sign(int32_t f, int s) {
