@@ -130,7 +130,6 @@ void MpvoCore::create_partial_order(const Camera& view) {
   const size_t nf = faces_->num_faces();
   std::fill(outbound_.begin(), outbound_.end(), 0);
   std::fill(behind_mask_.begin(), behind_mask_.end(), 0);
-  exact_calls_ = double_wrong_ = arrows_ = 0;
   const Vec3* normal = planes_->normal.data();
   const double* offset = planes_->offset.data();
   const int32_t* cell0 = faces_->cell0.data();
@@ -260,10 +259,10 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
     const int32_t c = stack_.back().cell;
     int32_t next = stack_.back().next;
     int32_t child = -1;
+    const int32_t* row = nbr + (tet ? 4 * c : cfo[c]);  // c's neighbours, by slot
     if (next == 0) {
       // First look at c: ask for what the search reads at each behind neighbour (its state,
       // mask and slots), so that the misses of the next levels overlap instead of queueing.
-      const int32_t* row = nbr + (tet ? 4 * c : cfo[c]);
       for (unsigned bits = behind[c]; bits; bits &= bits - 1) {
         const int32_t nb = row[__builtin_ctz(bits)];
         __builtin_prefetch(&state_[nb], 1);
@@ -277,7 +276,7 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
       while (bits) {
         const int slot = __builtin_ctz(bits);
         bits &= bits - 1;
-        const int32_t nb = nbr[(tet ? 4 * c : cfo[c]) + slot];
+        const int32_t nb = row[slot];
         const uint8_t st = state_[nb] & kStateMask;
         if (st == kNew) {
           child = nb;
