@@ -95,16 +95,12 @@ TEST(ABuffer, ReplaysArrivalsByRank) {
   EXPECT_EQ(shuffled.walk_steps(), by_rank.walk_steps());
 }
 
-// Lists of 0 to 79 entries, depths with ties and, in every 7th list, a NaN, recorded in
-// shuffled batches and ordered in two pixel ranges: the same lists and counts as the
-// paper's linked-list insertion, naively.
-TEST(ABuffer, ListsMatchLinkedListInsertion) {
-  std::mt19937 rng(3);
-  const int64_t pixels = 80;
-  std::vector<ABuffer::Raw> all;
-  for (int64_t p = 0; p < pixels; ++p)
-    for (int64_t i = 0; i < p; ++i)
-      all.push_back({p % 7 == 3 && i == p / 2 ? std::nan("") : double(rng() % 12), back(int32_t(i)), int32_t(p), 0});
+namespace {
+
+// Entries (ranks unset) given ranks in a shuffled arrival order, recorded in two shuffled
+// batches and ordered in two pixel ranges, as SXMPVO does: the lists and counts must be
+// those of the paper's linked-list insertion, done naively. Returns the walk steps.
+int64_t expect_naive_lists(std::vector<ABuffer::Raw> all, int64_t pixels, std::mt19937& rng) {
   std::shuffle(all.begin(), all.end(), rng);  // arrival order
   for (size_t r = 0; r < all.size(); ++r) all[r].rank = int32_t(r);
   std::vector<std::vector<std::pair<double, int32_t>>> naive(pixels);  // far to near
@@ -124,9 +120,9 @@ TEST(ABuffer, ListsMatchLinkedListInsertion) {
   a.reset(pixels);
   a.append(b2);
   a.append(b1);
-  a.gather();  // as SXMPVO does: lists ordered a range of pixels at a time
-  a.order(0, 17);
-  a.order(17, pixels);
+  a.gather();
+  a.order(0, pixels / 4);
+  a.order(pixels / 4, pixels);
   const auto as_text = [](const std::vector<std::pair<double, int32_t>>& l) {  // NaN equals NaN
     std::string s;
     for (const auto& [t, item] : l) s += std::to_string(t) + ":" + std::to_string(item) + " ";
@@ -139,7 +135,33 @@ TEST(ABuffer, ListsMatchLinkedListInsertion) {
   }
   EXPECT_EQ(a.head_insertions(), heads);
   EXPECT_EQ(a.walk_steps(), walks);
-  EXPECT_GT(walks, 1000);
+  return walks;
+}
+
+}  // namespace
+
+// Lists of 0 to 79 entries, depths with ties and, in every 7th list, a NaN.
+TEST(ABuffer, ListsMatchLinkedListInsertion) {
+  std::mt19937 rng(3);
+  const int64_t pixels = 80;
+  std::vector<ABuffer::Raw> all;
+  for (int64_t p = 0; p < pixels; ++p)
+    for (int64_t i = 0; i < p; ++i)
+      all.push_back({p % 7 == 3 && i == p / 2 ? std::nan("") : double(rng() % 12), back(int32_t(i)), int32_t(p), 0});
+  EXPECT_GT(expect_naive_lists(all, pixels, rng), 1000);
+}
+
+// Many short lists (1 to 16 entries, as on a fine mesh's image) whose depths are drawn from
+// a few values, signed zeros and infinities among them, so that most entries tie.
+TEST(ABuffer, ShortListsWithTiesMatchLinkedListInsertion) {
+  std::mt19937 rng(11);
+  const double values[] = {0.0, -0.0, 1.0, 2.5, 2.5000000000000004, HUGE_VAL, -HUGE_VAL};
+  const int64_t pixels = 3000;
+  std::vector<ABuffer::Raw> all;
+  for (int64_t p = 0; p < pixels; ++p)
+    for (int64_t i = 0, k = 1 + p % 16; i < k; ++i)
+      all.push_back({values[rng() % 7], int32_t(rng() % 2 ? front(int32_t(i)) : back(int32_t(i))), int32_t(p), 0});
+  EXPECT_GT(expect_naive_lists(all, pixels, rng), 10000);
 }
 
 TEST(PnLists, NoDuplicatesAndMoveToFront) {
