@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <unordered_map>
 
 #include "harness/geometry/polygon_plane.h"
 #include "harness/scene/input_error.h"
@@ -19,13 +18,7 @@ namespace {
 struct FaceKey {
   std::array<int32_t, 4> v;  // sorted point ids, -1 padded for triangles
   bool operator==(const FaceKey& o) const { return v == o.v; }
-};
-struct FaceKeyHash {
-  size_t operator()(const FaceKey& k) const {
-    uint64_t h = 1469598103934665603ull;
-    for (int32_t x : k.v) h = (h ^ static_cast<uint32_t>(x)) * 1099511628211ull;
-    return static_cast<size_t>(h ^ (h >> 29));
-  }
+  bool operator<(const FaceKey& o) const { return v < o.v; }
 };
 // Cyclic orientation of a face's vertex loop relative to its sorted key: +1 or -1, so two
 // cells sharing a face see it with opposite parity exactly when they lie on opposite sides.
@@ -36,6 +29,23 @@ int loop_parity(const int32_t* loop, int n) {
     if (loop[i] < loop[m]) m = i;
   return loop[(m + 1) % n] < loop[(m + n - 1) % n] ? 1 : -1;
 }
+// Local face f of cell c as its vertex loop; returns its size.
+int face_loop(const CellMesh& mesh, size_t c, int f, int32_t* loop) {
+  const LocalFaces& lf = cell_local_faces(mesh.types[c]);
+  const int32_t* p = mesh.cell_points(c);
+  const int n = lf.size[f];
+  for (int i = 0; i < n; ++i) loop[i] = p[lf.v[f][i]];
+  return n;
+}
+FaceKey sorted_key(const int32_t* loop, int n) {
+  FaceKey key{{-1, -1, -1, -1}};
+  for (int i = 0; i < n; ++i) {  // insertion sort of 3 or 4 ids
+    int j = i;
+    for (; j > 0 && key.v[j - 1] > loop[i]; --j) key.v[j] = key.v[j - 1];
+    key.v[j] = loop[i];
+  }
+  return key;
+}
 }  // namespace
 
 MeshFaces build_mesh_faces(const CellMesh& mesh, const std::string& source) {
@@ -45,49 +55,73 @@ MeshFaces build_mesh_faces(const CellMesh& mesh, const std::string& source) {
   out.cell_face_offsets[0] = 0;
   for (size_t c = 0; c < nc; ++c)
     out.cell_face_offsets[c + 1] = out.cell_face_offsets[c] + cell_local_faces(mesh.types[c]).count;
-  out.cell_faces.resize(out.cell_face_offsets[nc]);
-  std::unordered_map<FaceKey, int32_t, FaceKeyHash> index;
-  index.reserve(out.cell_faces.size());
-  std::vector<int8_t> parity;
-  for (size_t c = 0; c < nc; ++c) {
-    const LocalFaces& lf = cell_local_faces(mesh.types[c]);
-    const int32_t* p = mesh.cell_points(c);
-    for (int f = 0; f < lf.count; ++f) {
+  const size_t slots = static_cast<size_t>(out.cell_face_offsets[nc]);
+  out.cell_faces.resize(slots);
+  // Every cell's local faces (slots) by their sorted point ids. Equal keys are found by
+  // grouping the slots by smallest point id (a counting sort) and sorting each small group,
+  // not by a hash map: its node per face cost 1.7 s of allocation and misses on 1M cells.
+  std::vector<FaceKey> key(slots);
+  int32_t max_id = -1;
+  for (size_t c = 0; c < nc; ++c)
+    for (int f = 0, count = cell_local_faces(mesh.types[c]).count; f < count; ++f) {
       int32_t loop[4];
-      const int n = lf.size[f];
-      for (int i = 0; i < n; ++i) loop[i] = p[lf.v[f][i]];
-      FaceKey key{{-1, -1, -1, -1}};
-      for (int i = 0; i < n; ++i) {  // insertion sort of 3 or 4 ids
-        int j = i;
-        for (; j > 0 && key.v[j - 1] > loop[i]; --j) key.v[j] = key.v[j - 1];
-        key.v[j] = loop[i];
-      }
+      const int n = face_loop(mesh, c, f, loop);
+      const FaceKey k = sorted_key(loop, n);
+      key[out.cell_face_offsets[c] + f] = k;
+      max_id = std::max(max_id, k.v[n - 1]);
+      if (k.v[0] < 0) throw InputError(source, "cell " + std::to_string(c), "negative point id");
+    }
+  std::vector<int32_t> group(static_cast<size_t>(max_id) + 2, 0);  // by smallest id
+  for (size_t s = 0; s < slots; ++s) ++group[key[s].v[0] + 1];
+  for (size_t i = 1; i < group.size(); ++i) group[i] += group[i - 1];
+  std::vector<int32_t> by_min(slots);
+  {
+    std::vector<int32_t> cursor(group.begin(), group.end() - 1);
+    for (size_t s = 0; s < slots; ++s) by_min[cursor[key[s].v[0]]++] = static_cast<int32_t>(s);
+  }
+  // first[s]: the lowest slot with s's key (s itself for a face's first appearance).
+  std::vector<int32_t> first(slots);
+  for (size_t g = 0; g + 1 < group.size(); ++g) {
+    int32_t* b = by_min.data() + group[g];
+    int32_t* e = by_min.data() + group[g + 1];
+    std::sort(b, e, [&](int32_t x, int32_t y) { return key[x] < key[y] || (key[x] == key[y] && x < y); });
+    for (int32_t* i = b; i < e; ++i) first[*i] = i > b && key[i[-1]] == key[*i] ? first[i[-1]] : *i;
+  }
+  // Faces numbered in order of first appearance (cell by cell, local faces in order); a
+  // later appearance is the face's second cell.
+  std::vector<int8_t> parity;
+  for (size_t c = 0; c < nc; ++c)
+    for (int f = 0, count = cell_local_faces(mesh.types[c]).count; f < count; ++f) {
+      const size_t s = static_cast<size_t>(out.cell_face_offsets[c] + f);
+      int32_t loop[4];
+      const int n = face_loop(mesh, c, f, loop);
       const int par = loop_parity(loop, n);
-      auto [it, fresh] = index.try_emplace(key, static_cast<int32_t>(out.cell0.size()));
-      const int32_t id = it->second;
-      if (fresh) {
+      if (first[s] == static_cast<int32_t>(s)) {
+        out.cell_faces[s] = static_cast<int32_t>(out.cell0.size());
         out.verts.insert(out.verts.end(), loop, loop + n);
         out.offsets.push_back(static_cast<int32_t>(out.verts.size()));
         out.cell0.push_back(static_cast<int32_t>(c));
         out.cell1.push_back(-1);
         parity.push_back(static_cast<int8_t>(par));
-      } else {
-        const std::string face = "face (" + std::to_string(key.v[0]) + "," +
-                                 std::to_string(key.v[1]) + "," + std::to_string(key.v[2]) +
-                                 (n == 4 ? "," + std::to_string(key.v[3]) : std::string()) + ")";
-        if (out.cell1[id] != -1)
-          throw InputError(source, face,
-                           "shared by more than two cells (" + std::to_string(out.cell0[id]) +
-                               ", " + std::to_string(out.cell1[id]) + ", " + std::to_string(c) + ")");
-        if (parity[id] == par)
-          throw InputError(source, face,
-                           "cells " + std::to_string(out.cell0[id]) + " and " +
-                               std::to_string(c) + " lie on the same side of it (overlapping cells)");
-        out.cell1[id] = static_cast<int32_t>(c);
+        continue;
       }
-      out.cell_faces[out.cell_face_offsets[c] + f] = id;
+      const int32_t id = out.cell_faces[first[s]];
+      const auto face = [&] {  // named only in an error
+        const FaceKey& k = key[s];
+        return "face (" + std::to_string(k.v[0]) + "," + std::to_string(k.v[1]) + "," + std::to_string(k.v[2]) +
+               (n == 4 ? "," + std::to_string(k.v[3]) : std::string()) + ")";
+      };
+      if (out.cell1[id] != -1)
+        throw InputError(source, face(),
+                         "shared by more than two cells (" + std::to_string(out.cell0[id]) + ", " +
+                             std::to_string(out.cell1[id]) + ", " + std::to_string(c) + ")");
+      if (parity[id] == par)
+        throw InputError(source, face(),
+                         "cells " + std::to_string(out.cell0[id]) + " and " + std::to_string(c) +
+                             " lie on the same side of it (overlapping cells)");
+      out.cell1[id] = static_cast<int32_t>(c);
+      out.cell_faces[s] = id;
     }
-  }
   for (size_t f = 0; f < out.cell0.size(); ++f)
     if (out.cell1[f] < 0) out.boundary.push_back(static_cast<int32_t>(f));
   return out;
