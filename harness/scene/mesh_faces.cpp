@@ -17,8 +17,6 @@ size_t MeshFaces::bytes() const {
 namespace {
 struct FaceKey {
   std::array<int32_t, 4> v;  // sorted point ids, -1 padded for triangles
-  bool operator==(const FaceKey& o) const { return v == o.v; }
-  bool operator<(const FaceKey& o) const { return v < o.v; }
 };
 // Cyclic orientation of a face's vertex loop relative to its sorted key: +1 or -1, so two
 // cells sharing a face see it with opposite parity exactly when they lie on opposite sides.
@@ -80,12 +78,24 @@ MeshFaces build_mesh_faces(const CellMesh& mesh, const std::string& source) {
     for (size_t s = 0; s < slots; ++s) by_min[cursor[key[s].v[0]]++] = static_cast<int32_t>(s);
   }
   // first[s]: the lowest slot with s's key (s itself for a face's first appearance).
+  // Within a group the smallest ids are equal: keys differ in their other three.
+  const auto same = [&](int32_t x, int32_t y) {
+    const auto &a = key[x].v, &b = key[y].v;
+    return a[1] == b[1] && a[2] == b[2] && a[3] == b[3];
+  };
+  const auto before = [&](int32_t x, int32_t y) {
+    const auto &a = key[x].v, &b = key[y].v;
+    if (a[1] != b[1]) return a[1] < b[1];
+    if (a[2] != b[2]) return a[2] < b[2];
+    if (a[3] != b[3]) return a[3] < b[3];
+    return x < y;
+  };
   std::vector<int32_t> first(slots);
   for (size_t g = 0; g + 1 < group.size(); ++g) {
     int32_t* b = by_min.data() + group[g];
     int32_t* e = by_min.data() + group[g + 1];
-    std::sort(b, e, [&](int32_t x, int32_t y) { return key[x] < key[y] || (key[x] == key[y] && x < y); });
-    for (int32_t* i = b; i < e; ++i) first[*i] = i > b && key[i[-1]] == key[*i] ? first[i[-1]] : *i;
+    std::sort(b, e, before);
+    for (int32_t* i = b; i < e; ++i) first[*i] = i > b && same(i[-1], *i) ? first[i[-1]] : *i;
   }
   // Faces numbered in order of first appearance (cell by cell, local faces in order); a
   // later appearance is the face's second cell.

@@ -103,24 +103,22 @@ uint64_t hilbert_code(Vec3 p, const Aabb& box) {
   // index, whose bits interleaved (x most significant) are the index.
   uint64_t x[3] = {quantize(p.x, box.lo.x, box.hi.x), quantize(p.y, box.lo.y, box.hi.y),
                    quantize(p.z, box.lo.z, box.hi.z)};
+  // Each step's choice by masks, not jumps: the bits of a centroid are coin tosses, and the
+  // jumps mispredicted (hilbert_code was 4% of loading and ordering a 1.3M-cell gmsh mesh).
   constexpr uint64_t kTop = uint64_t(1) << 20;
   for (uint64_t q = kTop; q > 1; q >>= 1) {
     const uint64_t mask = q - 1;
     for (int i = 0; i < 3; ++i) {
-      if (x[i] & q) {
-        x[0] ^= mask;  // invert
-      } else {
-        const uint64_t t = (x[0] ^ x[i]) & mask;  // exchange
-        x[0] ^= t;
-        x[i] ^= t;
-      }
+      const uint64_t set = uint64_t(0) - ((x[i] & q) != 0);  // all ones when the bit is set
+      const uint64_t t = (x[0] ^ x[i]) & mask & ~set;         // exchange (when clear)
+      x[0] ^= (mask & set) | t;                               // invert (when set)
+      x[i] ^= t;
     }
   }
   x[1] ^= x[0];
   x[2] ^= x[1];
   uint64_t t = 0;
-  for (uint64_t q = kTop; q > 1; q >>= 1)
-    if (x[2] & q) t ^= q - 1;
+  for (uint64_t q = kTop; q > 1; q >>= 1) t ^= (q - 1) & (uint64_t(0) - ((x[2] & q) != 0));
   for (uint64_t& v : x) v ^= t;
   return spread3(x[0]) << 2 | spread3(x[1]) << 1 | spread3(x[2]);
 }

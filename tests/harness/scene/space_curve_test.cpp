@@ -51,6 +51,21 @@ TEST(SpaceCurve, MortonCodeInterleavesAxes) {
   EXPECT_EQ(morton_code({0, 0, 5}, flat), 0u);
 }
 
+// Codes pinned to those of the branching transform that preceded the masked one (Skilling's,
+// as first written), so that a renumbered mesh keeps its numbering across the rewrite.
+TEST(SpaceCurve, HilbertCodesOfTheBranchingTransform) {
+  const Aabb box{{-1, -2, 0}, {3, 2, 1}};
+  const std::pair<Vec3, uint64_t> known[] = {
+      {{-1, -2, 0}, 0ull},
+      {{3, 2, 1}, 6588122883467697005ull},
+      {{0.1, 0.2, 0.3}, 3537283967566627552ull},
+      {{2.9, -1.7, 0.05}, 9216323097680823015ull},
+      {{1, 0, 0.5}, 823515360433462125ull},
+      {{-0.3, 1.9, 0.99}, 2690287290474476054ull},
+  };
+  for (const auto& [p, code] : known) EXPECT_EQ(hilbert_code(p, box), code) << p.x << " " << p.y << " " << p.z;
+}
+
 TEST(SpaceCurve, CellOrderIsAPermutationInCurveOrder) {
   const CellMesh m = tet_block(5, 4, 3);
   const Aabb box = m.bounds();
