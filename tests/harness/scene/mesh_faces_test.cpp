@@ -148,3 +148,14 @@ TEST(MeshFaces, ErrorsNameTheFaceAndCellsOfTheReference) {
   EXPECT_NE(error_of([&] { return build_mesh_faces(overlap, "bad.vtu"); }).find("overlapping cells"),
             std::string::npos);
 }
+
+// A point id past the points (validate_cell_mesh refuses it first; this is the backstop):
+// one error naming the cell, no out-of-bounds write.
+TEST(MeshFaces, PointIdOutOfRangeIsAnError) {
+  CellMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.add_cell(CellType::Tetra, {0, 1, 2, 3});
+  m.add_cell(CellType::Tetra, {1, 2, 3, 9});
+  EXPECT_NE(error_of([&] { return build_mesh_faces(m, "m.vtu"); }).find("m.vtu: cell 1: point id out of range"),
+            std::string::npos);
+}
