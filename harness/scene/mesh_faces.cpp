@@ -57,7 +57,8 @@ MeshFaces build_mesh_faces(const CellMesh& mesh, const std::string& source) {
   out.cell_faces.resize(slots);
   // Every cell's local faces (slots) by their sorted point ids. Equal keys are found by
   // grouping the slots by smallest point id (a counting sort) and sorting each small group,
-  // not by a hash map: its node per face cost 1.7 s of allocation and misses on 1M cells.
+  // not by a hash map, whose node per face went to allocation and misses (0.9-1.0 s on a
+  // 1M-cell helix, 2.1 s on a 1.32M-cell gmsh mesh; now 0.24 and 0.62 s).
   std::vector<FaceKey> key(slots);
   const int64_t np = static_cast<int64_t>(mesh.num_points());
   for (size_t c = 0; c < nc; ++c)
