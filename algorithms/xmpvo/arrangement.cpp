@@ -58,7 +58,10 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
     return ca != 2 && cb != 2 && ac != 2 && ad != 2 ? 1 : 2;
   };
   // Each bucket's edges copied side by side first: the pair loop then reads no scattered
-  // memory (not even the projected points). A pair is tested once, in the bucket of its boxes' common lower corner.
+  // memory (not even the projected points). A pair is tested once, in the bucket of its
+  // boxes' common lower corner. The copies are sorted by their boxes' left side, so the
+  // pairs overlapping in x are a run after each edge (sweep and prune), and a pair's
+  // corner lies left of this bucket's column whenever its later edge starts there.
   struct Item {
     Box box;
     Uv ua, ub;
@@ -66,6 +69,8 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   };
   std::vector<Item> local;
   const double tx = 1e-9 * grid.cw, ty = 1e-9 * grid.ch;
+  // NaN first and never overlapping, as Box::overlaps has it.
+  auto left = [](const Item& i) { return std::isnan(i.box.x0) ? -INFINITY : i.box.x0; };
   for (int r = 0; r < grid.gh; ++r)
     for (int c = 0; c < grid.gw; ++c) {
       const size_t cell = static_cast<size_t>(r) * grid.gw + c;
@@ -75,18 +80,28 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
         const auto [a, b] = edges[id];
         local.push_back({box_[id], proj.uv[a], proj.uv[b], a, b, id});
       }
+      std::sort(local.begin(), local.end(), [&](const Item& p, const Item& q) { return left(p) < left(q); });
       const double cx0 = grid.gx0 + c * grid.cw, cy0 = grid.gy0 + r * grid.ch;
-      for (size_t x = 0; x < local.size(); ++x)
-        for (size_t y = x + 1; y < local.size(); ++y) {
-          const Item &ix = local[x], &iy = local[y];
-          const Box &ba = ix.box, &bb = iy.box;
-          if (!ba.overlaps(bb)) continue;
+      const size_t n = local.size();
+      // The pairs whose later edge starts clearly left of the column have their corner in
+      // a bucket to the left (tested there).
+      size_t first = 0;
+      if (c > 0)
+        while (first < n && left(local[first]) < cx0 - tx) ++first;
+      for (size_t x = 0; x < n; ++x) {
+        const Item& ix = local[x];
+        const Box& ba = ix.box;
+        for (size_t y = std::max(x + 1, first); y < n && local[y].box.x0 <= ba.x1; ++y) {
+          const Item& iy = local[y];
+          const Box& bb = iy.box;
           const int32_t a = ix.a, b = ix.b, cc = iy.a, d = iy.b;
-          if (a == cc || a == d || b == cc || b == d) continue;  // no proper crossing
-          const double lx = std::max(ba.x0, bb.x0), ly = std::max(ba.y0, bb.y0);
-          // Both boxes reach this bucket, so the corner is at most in it; when it lies
-          // clearly inside or clearly in a lower bucket, col/row need not be computed.
-          if ((c > 0 && lx < cx0 - tx) || (r > 0 && ly < cy0 - ty)) continue;
+          // Overlap in y, no shared point (no proper crossing), and the corner not clearly
+          // below this bucket's row; one branch for the common rejection.
+          const double ly = std::max(ba.y0, bb.y0);
+          const bool keep = (ba.y0 <= bb.y1) & (bb.y0 <= ba.y1) & (a != cc) & (a != d) & (b != cc) &
+                            (b != d) & !(r > 0 && ly < cy0 - ty);
+          if (!keep) continue;
+          const double lx = bb.x0;  // = max(ba.x0, bb.x0): sorted
           const bool inside = lx > cx0 + tx && ly > cy0 + ty;
           if (!inside && (grid.col(lx) != c || grid.row(ly) != r)) continue;
           ++candidates;
@@ -99,6 +114,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           vertices.back().e1 = ix.id;
           vertices.back().e2 = iy.id;
         }
+      }
     }
   index_crossings(proj);
   return candidates;
