@@ -56,6 +56,7 @@ void Worker::sweep_edge(int32_t e) {
 
 bool Worker::sweep(int32_t e) {
   undecided_ = false;
+  swept_ = e;
   if (!order_crossings(e) || !start_list(e)) return false;
   emit_segment();
   for (const int32_t slot : order_) {
@@ -154,6 +155,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   const int32_t a = arr.edges[e].first;
   const int sa = point_side(a, c, d);
   if (sa == 0) return false;
+  xsa_ = sa;
   int32_t enter[8], leave_at = -1;
   int n_enter = 0, n_leave = 0;
   beside_ = false;
@@ -237,7 +239,22 @@ size_t Worker::place(int32_t f, int32_t guess) {
 int32_t Worker::track(int32_t f, int m, int32_t j) {
   const int32_t pos = epos_[m];
   if (j != pos) return pos + (j < pos);
-  return pos + (depth_x(f, eface_[m]) < 0);
+  return pos + (depth_edges(f, m) < 0);
+}
+
+// Depth order of face g of e' = (c, d) and face m of e = (a, b) at the crossing: the
+// crossing's ray meets them on the edges, at Q on (c, d) and P on (a, b). With Q = E + mu
+// (P - E) (E the eye; for orthographic views its limit at infinity along -dir) and
+// orient3d affine in each point, orient3d(c, d, a, b) has the sign of (1 - mu) orient3d(c,
+// d, a, E), where orient3d(c, d, a, E) = -orient3d(E, c, d, a) has the sign -sa of the
+// crossing (cross()): so P is nearer (b's face in front) exactly when orient3d(c, d, a, b)
+// has the sign -sa. Zero (the edges meet in space): the faces touch on the ray, depth_x.
+int Worker::depth_edges(int32_t g, int m) {
+  const auto [a, b] = in_.arr.edges[swept_];
+  const int o = orient3d(pt(xc_pt_), pt(xd_pt_), pt(a), pt(b));
+  if (o == 0) return depth_x(g, eface_[m]);
+  ++stats_.depth_edge_orders;
+  return o == -xsa_ ? 1 : -1;
 }
 
 // Where face f of e' goes in list_ (front to back) at the current crossing.

@@ -111,6 +111,7 @@ class Worker {
   size_t insert_at_crossing(int32_t f);
   size_t place(int32_t f, int32_t guess);
   int32_t track(int32_t f, int m, int32_t j);
+  int depth_edges(int32_t g, int m);
 
   const QueryInput& in_;
   const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
@@ -151,6 +152,8 @@ class Worker {
   // The sweep's current crossing (vertex id, the crossing edge's points) and, per face
   // compared there, the side of its plane holding both points (0: none, or not certain).
   int32_t xvi_ = -1, xc_pt_ = -1, xd_pt_ = -1;
+  int xsa_ = 0;        // point_side(a, c, d) at the current crossing, a the swept edge's first point
+  int32_t swept_ = -1;  // the edge being swept
   // plane_side's memo (view-independent signs): key (h << 32 | p) + 1, 0 empty.
   static constexpr int kPlaneMemoBits = 12;
   std::vector<uint64_t> plane_memo_key_ = std::vector<uint64_t>(size_t{1} << kPlaneMemoBits, 0);

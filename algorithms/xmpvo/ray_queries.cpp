@@ -297,7 +297,7 @@ void QueryStats::add(const QueryStats& x) {
   queries_rechecked += x.queries_rechecked, depth_rechecked += x.depth_rechecked;
   sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
   sweep_fallbacks += x.sweep_fallbacks, depth_plane_sides += x.depth_plane_sides;
-  sweep_handoffs += x.sweep_handoffs;
+  sweep_handoffs += x.sweep_handoffs, depth_edge_orders += x.depth_edge_orders;
   scratch_bytes += x.scratch_bytes;
 }
 

@@ -43,6 +43,9 @@ struct QueryStats {
   // where a sweep took the entering face's position from the other edge's sweep.
   int64_t sweep_edges = 0, sweep_crossings = 0, sweep_fallbacks = 0, depth_plane_sides = 0;
   int64_t sweep_handoffs = 0;
+  // Sweep depth comparisons of a face of the swept edge with an entering face decided by
+  // the orientation of the two edges (edge_sweep.cpp, depth_edges).
+  int64_t depth_edge_orders = 0;
   size_t scratch_bytes = 0;        // the query threads' scratch
   void add(const QueryStats& o);
 };

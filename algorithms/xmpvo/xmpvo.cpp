@@ -129,6 +129,7 @@ void XmpvoOrderer::add_counters(Ordering& out, int64_t candidates) const {
   k["sweep_fallbacks"] = static_cast<double>(stats_.sweep_fallbacks);
   k["depth_plane_sides"] = static_cast<double>(stats_.depth_plane_sides);
   k["sweep_handoffs"] = static_cast<double>(stats_.sweep_handoffs);
+  k["depth_edge_orders"] = static_cast<double>(stats_.depth_edge_orders);
   k["degenerate_coverage"] = static_cast<double>(stats_.degenerate);
   k["relations"] = static_cast<double>(pairs_.size());
   k["grid_buckets"] = static_cast<double>(proj_.grid.buckets());

@@ -69,7 +69,9 @@
 // sweep_edges, sweep_crossings (crossings the sweeps passed, two per crossing),
 // sweep_fallbacks (edges whose crossings got full queries), depth_plane_sides (sweep depth
 // comparisons decided by the sides of a face plane alone), sweep_handoffs (crossings
-// where the second sweep took its entering face's position from the first); vertex_queries
+// where the second sweep took its entering face's position from the first), depth_edge_orders
+// (sweep depth comparisons of a face of the swept edge with an entering face, decided by the
+// orientation of the two edges); vertex_queries
 // counts every vertex ray a query or the sweep built.
 #pragma once
 #include "harness/bench/registry.h"
