@@ -11,6 +11,14 @@
 
 namespace vob {
 
+// The file is prescanned here (datasets/io/msh_prescan.h); the SDK, in the module
+// libvobench-gmsh.so beside libvobench.so, is loaded on the first file that passes.
 CellMesh read_gmsh(const std::string& path, std::string* note = nullptr);
+
+// The module's entry point (datasets/gmsh/gmsh_sdk_reader.cpp); errors are thrown as
+// InputError naming `path`.
+extern "C" void vobench_gmsh_read(const std::string& path, CellMesh& out, std::string* note);
+#define VOBENCH_GMSH_READ_ENTRY "vobench_gmsh_read"
+#define VOBENCH_GMSH_MODULE "libvobench-gmsh.so"
 
 }  // namespace vob

@@ -56,7 +56,7 @@ first, prefix = os.path.join(WORK, "prefix-installed"), os.path.join(WORK, "pref
 run([CMAKE, "--install", BUILD, "--prefix", first, "--component", "vobench"])
 os.rename(first, prefix)
 vobench = os.path.join(prefix, "bin", "vobench")
-for f in ["lib/libvobench.so", "lib/cmake/vobench/vobenchConfig.cmake",
+for f in ["lib/libvobench.so", "lib/libvobench-gmsh.so", "lib/cmake/vobench/vobenchConfig.cmake",
           "lib/cmake/vobench/vobenchConfigVersion.cmake", "lib/cmake/vobench/VobenchPlugin.cmake",
           "include/vobench/harness/bench/plugin.h", "include/vobench/harness/bench/orderer.h",
           "include/vobench/harness/oracle/oracle.h", "include/vobench/harness/view/camera.h",
@@ -138,6 +138,14 @@ if "install-marker" not in run([vobench, "list"]).stdout:
 if "install-marker" in run([os.path.join(BUILD, "harness", "cli", "vobench"), "list"]).stdout:
     fail("the build tree's vobench reads the installed prefix")
 os.remove(marker)
+
+# The .msh reader is a module beside libvobench.so, loaded on the first .msh file: found
+# from the moved prefix too.
+tet_msh = os.path.join(WORK, "tet.msh")
+open(tet_msh, "w").write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 0 1 0\n"
+                         "4 0 0 1\n$EndNodes\n$Elements\n1\n1 4 2 0 1 1 2 3 4\n$EndElements\n")
+if "1 cells" not in run([vobench, "validate", tet_msh]).stdout:
+    fail("the installed vobench did not read a .msh file")
 
 # 6. A tiny suite with the plugin, its report; reproduce's default output outside the prefix.
 before = files_under(prefix)
