@@ -8,6 +8,7 @@
 #include <mutex>
 #include <unordered_map>
 
+#include "datasets/gmsh/msh2_node_refs.h"
 #include "datasets/io/gmsh_reader.h"
 #include "harness/scene/input_error.h"
 
@@ -68,6 +69,13 @@ std::string gmsh_reason(const std::string& thrown) {
 CellMesh read_locked(const std::string& path, std::string* note) {
   GmshSession session;
   gmsh::logger::start();
+  check_msh2_node_refs(path, [](int type) {
+    std::string name;
+    int dim = 0, order = 0, nodes = 0, primary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
+    return nodes;
+  });
   gmsh::open(path);  // errors are thrown; caught in read_gmsh
   std::string last;
   gmsh::logger::getLastError(last);

@@ -1,6 +1,7 @@
 """Fuzz cases for the gmsh .msh reader (gmsh SDK) and gzipped .inr: truncations and
 mutations of small valid files."""
 import gzip
+import struct
 
 from fuzz_helpers import check_cases
 
@@ -16,6 +17,15 @@ def msh22(nodes=NODES, elements=("1 4 2 0 1 1 2 3 4",), count=None):
             f"{len(elements)}\n" + "".join(e + "\n" for e in elements) + "$EndElements\n").encode()
 
 
+def msh22_binary(nodes=NODES, element=(1, 2, 3, 4)):
+    """One tetrahedron (type 4, two tags) in MSH 2.2 binary."""
+    data = b"".join(struct.pack("<i3d", int(p[0]), *map(float, p[1:])) for p in nodes)
+    elem = struct.pack("<3i", 4, 1, 2) + struct.pack("<7i", 1, 0, 1, *element)
+    return (b"$MeshFormat\n2.2 1 8\n" + struct.pack("<i", 1) + b"\n$EndMeshFormat\n$Nodes\n" +
+            f"{len(nodes)}\n".encode() + data + b"\n$EndNodes\n$Elements\n1\n" + elem +
+            b"\n$EndElements\n")
+
+
 def inr_gz(data=bytes(range(1, 9)), dims=("2", "2", "2")):
     head = (f"#INRIMAGE-4#{{\nXDIM={dims[0]}\nYDIM={dims[1]}\nZDIM={dims[2]}\nVDIM=1\n"
             "TYPE=unsigned fixed\nPIXSIZE=8 bits\nCPU=decm\n")
@@ -29,6 +39,12 @@ def cases(work):
     files.update({
         "huge-nodes": msh22(count=1000000000),
         "node-missing": msh22(elements=("1 4 2 0 1 1 2 3 9",)),
+        # The node just past the last: gmsh 4.8's MSH 2 reader crashed on it.
+        "node-past-last": msh22(elements=("1 4 2 0 1 1 2 3 5",)),
+        "node-past-last-no-tags": msh22(elements=("1 4 0 1 2 3 5",)),
+        "node-past-last-binary": msh22_binary(element=(1, 2, 3, 5)),
+        "node-zero-binary": msh22_binary(element=(0, 2, 3, 4)),
+        "node-sparse-gap": msh22(nodes=NODES[:3] + [(7, 0, 0, 1)], elements=("1 4 0 1 2 3 4",)),
         "inverted": msh22(nodes=NODES[:3] + [(4, 0, 0, -1)]),
         "nan": msh22(nodes=NODES[:3] + [(4, 0, 0, "nan")]),
         "second-order": msh22(elements=("1 11 2 0 1 1 2 3 4 1 2 3 4 1 2",)),
