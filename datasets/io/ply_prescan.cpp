@@ -15,9 +15,11 @@ namespace vob {
 
 namespace {
 struct Property {
+  std::string name;
   int size = 0;        // bytes of a scalar, or of each list item
   int count_size = 0;  // lists: bytes of the count (0: not a list)
   bool count_signed = false;
+  bool item_signed = false, item_float = false;  // lists: the items' type
 };
 struct Element {
   std::string name;
@@ -25,7 +27,7 @@ struct Element {
   std::vector<Property> props;
 };
 
-int type_size(const std::string& t, bool* is_signed = nullptr) {
+int type_size(const std::string& t, bool* is_signed = nullptr, bool* is_float = nullptr) {
   static const std::map<std::string, std::pair<int, bool>> sizes{
       {"char", {1, true}},    {"int8", {1, true}},     {"uchar", {1, false}},  {"uint8", {1, false}},
       {"short", {2, true}},   {"int16", {2, true}},    {"ushort", {2, false}}, {"uint16", {2, false}},
@@ -34,7 +36,28 @@ int type_size(const std::string& t, bool* is_signed = nullptr) {
   const auto it = sizes.find(t);
   if (it == sizes.end()) return 0;
   if (is_signed) *is_signed = it->second.second;
+  if (is_float) *is_float = t.rfind("float", 0) == 0 || t == "double";
   return it->second.first;
+}
+
+// A binary list item as VTK takes it (converted to int from its own type).
+double item_value(const char* p, const Property& prop, bool swap) {
+  unsigned char b[8] = {};
+  for (int i = 0; i < prop.size; ++i) b[i] = static_cast<unsigned char>(p[swap ? prop.size - 1 - i : i]);
+  if (prop.item_float) {
+    if (prop.size == 4) {
+      float f;
+      std::memcpy(&f, b, 4);
+      return f;
+    }
+    double d;
+    std::memcpy(&d, b, 8);
+    return d;
+  }
+  uint64_t u = 0;
+  for (int i = prop.size - 1; i >= 0; --i) u = (u << 8) | b[i];
+  if (prop.item_signed && (b[prop.size - 1] & 0x80)) return double(int64_t(u) - (int64_t(1) << (8 * prop.size)));
+  return double(u);
 }
 }  // namespace
 
@@ -71,11 +94,12 @@ void prescan_ply(const std::string& path) {
         std::string ct, it;
         ls >> ct >> it;
         p.count_size = type_size(ct, &p.count_signed);
-        p.size = type_size(it);
+        p.size = type_size(it, &p.item_signed, &p.item_float);
         if (!p.count_size || !p.size) throw InputError(path, where, "unknown list types '" + ct + " " + it + "'");
       } else if (!(p.size = type_size(t))) {
         throw InputError(path, where, "unknown property type '" + t + "'");
       }
+      ls >> p.name;
       elements.back().props.push_back(p);
     } else {
       throw InputError(path, where, "unknown keyword '" + key + "'");
@@ -88,6 +112,19 @@ void prescan_ply(const std::string& path) {
   in.seekg(start);
   for (const Element& e : elements)  // every instance takes at least a byte: no huge loops
     if (e.count > bytes) throw InputError(path, "element " + e.name, std::to_string(e.count) + " instances do not fit in the file");
+  // VTK's reader takes the faces' "vertex_indices" as ids into the vertices, unchecked: a
+  // large one makes it read far past its points (SIGSEGV).
+  long long vertices = 0;
+  for (const Element& e : elements)
+    if (e.name == "vertex") vertices = e.count;
+  const auto is_index_list = [](const Element& e, const Property& p) {
+    return e.name == "face" && p.count_size && p.name == "vertex_indices";
+  };
+  const auto check_index = [&](double v, const std::string& where) {
+    if (!(v > -1 && v < double(vertices)))  // VTK truncates to int
+      throw InputError(path, where, "vertex index " + std::to_string(static_cast<long long>(v)) +
+                                        " is out of range (" + std::to_string(vertices) + " vertices)");
+  };
   const bool ascii = format == "ascii";
   const bool swap = format == "binary_big_endian";  // hosts here are little endian
   if (ascii) {
@@ -116,7 +153,11 @@ void prescan_ply(const std::string& path) {
             if (n < 0 || n != std::floor(n) || n > double(bytes))
               throw InputError(path, where, "list count '" + token + "' is not a valid count");
           }
-          for (long long k = 0; k < static_cast<long long>(n); ++k) number();
+          const bool indices = is_index_list(e, p);
+          for (long long k = 0; k < static_cast<long long>(n); ++k) {
+            const double v = number();
+            if (indices) check_index(v, where);
+          }
         }
         if (words >> token) throw InputError(path, where, "line has more numbers than the header declares");
       }
@@ -140,8 +181,15 @@ void prescan_ply(const std::string& path) {
           n = binary_count(p, where);
           if (n < 0 || n > bytes) throw InputError(path, where, "list count " + std::to_string(n) + " is not a valid count");
         }
-        if (!in.seekg(n * p.size, std::ios::cur) || in.tellg() - start > bytes)
+        if (is_index_list(e, p)) {
+          // Bounded by the bytes left before the buffer grows: a bogus count is refused, not allocated.
+          if (n * p.size > bytes - (in.tellg() - start)) throw InputError(path, where, "file ends early");
+          if (buf.size() < size_t(n * p.size)) buf.resize(size_t(n * p.size));
+          if (!in.read(buf.data(), n * p.size)) throw InputError(path, where, "file ends early");
+          for (long long k = 0; k < n; ++k) check_index(item_value(buf.data() + k * p.size, p, swap), where);
+        } else if (!in.seekg(n * p.size, std::ios::cur) || in.tellg() - start > bytes) {
           throw InputError(path, where, "file ends early");
+        }
       }
     }
 }

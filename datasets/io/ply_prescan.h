@@ -2,7 +2,9 @@
 // frees twice or reads past its buffers on a file that ends early or holds a malformed
 // number. Checks: the header's grammar and types, then every element instance present
 // (ASCII: enough numeric tokens, list counts non-negative integers; binary: enough bytes,
-// list counts read in the file's byte order). One InputError naming file, element, reason.
+// list counts read in the file's byte order), and every face's vertex_indices within the
+// vertices (VTK's reader reads far past its points for a large one). One InputError naming
+// file, element, reason.
 #pragma once
 #include <string>
 

@@ -64,6 +64,10 @@ def cases(work):
         "negative-count": ply(nv=-4),
         "index-out-of-range": ply(faces=FACES[:3] + [(0, 3, 9)]),
         "negative-index": ply(faces=FACES[:3] + [(0, 3, -1)]),
+        # Far out of range: VTK's reader read past its points (SIGSEGV) before the prescan.
+        "index-far-out": ply(faces=FACES[:3] + [(0, 3, 90000000)]),
+        "bin-index-far-out": ply(fmt="binary_little_endian", faces=FACES[:3] + [(0, 3, 90000000)]),
+        "bin-negative-index": ply(fmt="binary_little_endian", faces=FACES[:3] + [(0, -70000000, 2)]),
         "nan": ply(pts=PTS[:3] + [(0, 0, "nan")]),
         "text-number": ply(pts=PTS[:3] + [(0, 0, "one")]),
         "bad-format": ply(fmt="binary_middle_endian"),
