@@ -122,7 +122,8 @@ void prescan_ply(const std::string& path) {
   };
   const auto check_index = [&](double v, const std::string& where) {
     if (!(v > -1 && v < double(vertices)))  // VTK truncates to int
-      throw InputError(path, where, "vertex index " + std::to_string(static_cast<long long>(v)) +
+      throw InputError(path, where, "vertex index " +  // cast only where defined (NaN, huge floats)
+                                        (std::abs(v) < 9e18 ? std::to_string(static_cast<long long>(v)) : std::to_string(v)) +
                                         " is out of range (" + std::to_string(vertices) + " vertices)");
   };
   const bool ascii = format == "ascii";
