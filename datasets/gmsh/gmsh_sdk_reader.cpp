@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "datasets/gmsh/msh2_node_refs.h"
+#include "datasets/gmsh/msh4_blocks.h"
 #include "datasets/io/gmsh_reader.h"
 #include "harness/scene/input_error.h"
 
@@ -55,6 +56,20 @@ std::string element_name(int type, int* dim) {
   return name;
 }
 
+// gmsh's dimension and node count of an element type code; nodes 0 for a code gmsh does
+// not know (it throws or logs an error for those).
+GmshElementType element_type(int type) {
+  std::string name;
+  int dim = 0, order = 0, nodes = 0, primary = 0;
+  std::vector<double> local;
+  try {
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
+  } catch (...) {
+    return {};
+  }
+  return {dim, nodes};
+}
+
 // gmsh 4.8 throws its error text as a std::string (not a std::exception); its logger keeps
 // the last error too.
 std::string gmsh_reason(const std::string& thrown) {
@@ -69,13 +84,8 @@ std::string gmsh_reason(const std::string& thrown) {
 CellMesh read_locked(const std::string& path, std::string* note) {
   GmshSession session;
   gmsh::logger::start();
-  check_msh2_node_refs(path, [](int type) {
-    std::string name;
-    int dim = 0, order = 0, nodes = 0, primary = 0;
-    std::vector<double> local;
-    gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
-    return nodes;
-  });
+  check_msh2_node_refs(path, [](int type) { return element_type(type).nodes; });
+  check_msh4_blocks(path, element_type);
   gmsh::open(path);  // errors are thrown; caught in read_gmsh
   std::string last;
   gmsh::logger::getLastError(last);
