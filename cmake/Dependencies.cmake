@@ -45,6 +45,12 @@ find_package(PkgConfig QUIET)
 vob_require(PkgConfig_FOUND "pkg-config" pkg-config)
 pkg_check_modules(OSMESA QUIET IMPORTED_TARGET osmesa)
 vob_require(OSMESA_FOUND "OSMesa (pkg-config osmesa)" libosmesa6-dev)
+# vobench opens libOSMesa by its soname when it first needs a GL context (harness/gl).
+find_library(VOB_OSMESA_LIBRARY NAMES OSMesa HINTS ${OSMESA_LIBRARY_DIRS})
+execute_process(COMMAND ${CMAKE_OBJDUMP} -p ${VOB_OSMESA_LIBRARY} OUTPUT_VARIABLE _vob_osmesa_dyn ERROR_QUIET)
+string(REGEX MATCH "SONAME +([^ \n]+)" _vob_osmesa_match "${_vob_osmesa_dyn}")
+set(VOB_OSMESA_SONAME "${CMAKE_MATCH_1}")
+vob_require(VOB_OSMESA_SONAME "the soname of libOSMesa (objdump -p ${VOB_OSMESA_LIBRARY})" libosmesa6-dev)
 
 find_program(TETGEN_EXECUTABLE tetgen)
 vob_require(TETGEN_EXECUTABLE "the tetgen program" tetgen)
