@@ -87,6 +87,15 @@ std::string new_run_id() {
   return utc_now("%Y%m%dT%H%M%SZ") + "-" + host + "-" + std::to_string(getpid()) + "-" + rnd;
 }
 
+namespace {
+nlohmann::json& allocation_context() {
+  static nlohmann::json a = {{"huge_pages", false}, {"why_off", "not the vobench program: plain malloc"}};
+  return a;
+}
+}  // namespace
+
+void set_allocation_context(const nlohmann::json& allocation) { allocation_context() = allocation; }
+
 nlohmann::json run_context(int threads) {
   double load[3] = {-1, -1, -1};
   const bool have_load = getloadavg(load, 3) == 3;  // before the measurement below adds to it
@@ -113,6 +122,7 @@ nlohmann::json run_context(int threads) {
             {"nlohmann_json", std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
                                   std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
                                   std::to_string(NLOHMANN_JSON_VERSION_PATCH)}}}};
+  c["allocation"] = allocation_context();
   // At 1 thread, the run's first count and all threads the run may use (`--threads`).
   if (!machine_limits_skipped()) c["machine_limits"] = measure_machine_limits({1, threads, run_threads()});
   return c;

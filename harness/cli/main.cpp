@@ -4,12 +4,21 @@
 #include <map>
 #include <vector>
 
+#include "harness/bench/context.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/error_line.h"
+#include "harness/cli/huge_page_new.h"
 #include "harness/cli/plugin_loader.h"
 #include "harness/scene/input_error.h"
 
 int main(int argc, char** argv) {
+  {
+    const vob::HugePagePolicy hp = vob::huge_page_policy();
+    vob::set_allocation_context({{"huge_pages", hp.on},
+                                 {"min_bytes", vob::kHugePageMinBytes},
+                                 {"kernel_thp", hp.kernel},
+                                 {"why_off", hp.why}});
+  }
   CLI::App app{"vobench: visibility orderings for volume rendering, checked by one oracle"};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "help for every subcommand");

@@ -28,14 +28,19 @@ def runs_header(page, recs):
         e["threads"].add(str(r.get("threads", c.get("threads", "?"))))
         if isinstance(c.get("load_avg"), list) and c["load_avg"]:
             e["load"].add(f"{c['load_avg'][0]:.2f}")
+        a = c.get("allocation")
+        if isinstance(a, dict):
+            e["alloc"].add("2 MiB pages" if a.get("huge_pages") else "4 KiB pages" + (f" ({a['why_off']})" if a.get("why_off") else ""))
         if isinstance(c.get("libraries"), dict):
             e["libs"].add(", ".join(f"{k} {v}" for k, v in sorted(c["libraries"].items())))
         e["records"].add(id(r))
     page.heading(2, "Revisions and runs")
     rows = [[rev, str(len(e["runs"])), ", ".join(sorted(e["dates"])), "; ".join(sorted(e["machines"])),
              "; ".join(sorted(e["builds"])), ", ".join(sorted(e["threads"])),
-             ", ".join(sorted(e["load"])) or "–", str(len(e["records"]))] for rev, e in by_rev.items()]
-    page.table(["revision (git)", "runs", "dates", "machine", "build", "threads", "load at start", "records"], rows)
+             ", ".join(sorted(e["load"])) or "–", "; ".join(sorted(e["alloc"])) or "not recorded",
+             str(len(e["records"]))] for rev, e in by_rev.items()]
+    page.table(["revision (git)", "runs", "dates", "machine", "build", "threads", "load at start",
+                "large blocks", "records"], rows)
     for rev, e in by_rev.items():
         if e["libs"]:
             page.para(f"Libraries ({rev}): " + "; ".join(sorted(e["libs"])) + ".")

@@ -162,7 +162,7 @@ TEST(Cli, RunWritesRecordsAndSkipsThemOnRerun) {
       EXPECT_EQ(n, 0);
       ++contexts;
       run_id = j["run_id"];
-      for (const char* k : {"cpu", "threads", "libraries", "load_avg", "git_sha"})
+      for (const char* k : {"cpu", "threads", "libraries", "load_avg", "git_sha", "allocation"})
         EXPECT_TRUE(j["context"].contains(k)) << k;
       continue;
     }
@@ -197,6 +197,38 @@ TEST(Cli, RunWritesRecordsAndSkipsThemOnRerun) {
   EXPECT_TRUE(fs::exists(report / "report.md"));
   EXPECT_TRUE(fs::exists(report / "report.html"));
   EXPECT_FALSE(fs::is_empty(report / "figures"));
+}
+
+// The context says how large blocks were allocated: huge pages unless the kernel's mode is
+// "never", the build is under AddressSanitizer, or VOBENCH_HUGE_PAGES=0 turned them off.
+TEST(Cli, RunContextSaysHowLargeBlocksAreAllocated) {
+  const fs::path suite = scratch("alloc_suite.json");
+  write(suite, R"({"name": "t", "datasets": [{"name": "gap", "set": {"nx": 2, "ny": 2, "nz": 2}}],
+                   "algorithms": ["centroid"], "views": 1, "sizes": ["16x16"], "repeats": 1, "warmup": 0})");
+  std::ifstream mode_in("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string mode;
+  std::getline(mode_in, mode);
+#if defined(__SANITIZE_ADDRESS__)
+  const bool asan = true;
+#else
+  const bool asan = false;
+#endif
+  for (const std::string env : {"", "VOBENCH_HUGE_PAGES=0 "}) {
+    const fs::path results = scratch("alloc.jsonl");
+    fs::remove(results);
+    const auto r = vob::test::run_command(env + VOB_BINARY + " run " + suite.string() + " -o " + results.string() + " 2>&1");
+    ASSERT_EQ(r.code, 0) << r.out;
+    std::ifstream in(results);
+    std::string line;
+    ASSERT_TRUE(std::getline(in, line));
+    const auto a = nlohmann::json::parse(line)["context"]["allocation"];
+    ASSERT_TRUE(a.is_object()) << line;
+    const bool expect_on = env.empty() && !asan && !mode.empty() && mode.find("[never]") == std::string::npos;
+    EXPECT_EQ(a["huge_pages"], expect_on) << a.dump();
+    EXPECT_EQ(a["kernel_thp"], mode.empty() ? "unknown" : mode) << a.dump();
+    EXPECT_EQ(a["min_bytes"], 2 << 20) << a.dump();
+    if (!env.empty()) EXPECT_EQ(a["why_off"], asan ? "not built under AddressSanitizer" : "VOBENCH_HUGE_PAGES=0");
+  }
 }
 
 TEST(Cli, MalformedSuiteIsBadInput) {
