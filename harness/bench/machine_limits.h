@@ -30,7 +30,9 @@ size_t last_level_cache_bytes();
 //  "gather": [{"threads", "gathers_per_second", "best_seconds", "median_seconds"}],
 //  "triad_elements", "triad_bytes_per_pass", "gather_array_bytes", "gathers" (per pass),
 //  "llc_bytes", "huge_pages" (the kernel took MADV_HUGEPAGE), "repetitions", "warmup",
-//  "setup_seconds" (allocation, first touch), "seconds" (wall time of the whole measurement)}.
+//  "setup_seconds" (allocation, first touch), "first_touch" ({small_pages_bytes_per_second,
+//  huge_pages_bytes_per_second, bytes}: fresh memory touched once per 4 KiB, on 4 KiB and on
+//  2 MiB pages, 32 MiB each), "seconds" (wall time of the whole measurement)}.
 // `thread_counts`: deduplicated, each run inside a task_arena of that many threads.
 nlohmann::json measure_machine_limits(std::vector<int> thread_counts, const MachineLimitsOptions& opt = {});
 

@@ -58,6 +58,14 @@ TEST(MachineLimits, ContextCarriesTriadAndGatherAtOneAndAllThreads) {
   EXPECT_GE(ml["gather_array_bytes"].get<size_t>() * 2, std::max<size_t>(4 * llc, size_t(64) << 20));
   EXPECT_GT(ml["seconds"].get<double>(), 0.0);
   EXPECT_GE(ml["repetitions"].get<int>(), 1);
+  // The first-touch rates of fresh 4 KiB and 2 MiB pages, 32 MiB each.
+  const nlohmann::json& ft = ml["first_touch"];
+  ASSERT_TRUE(ft.is_object()) << ml.dump();
+  EXPECT_EQ(ft["bytes"].get<size_t>(), size_t(32) << 20);
+  for (const char* k : {"small_pages_bytes_per_second", "huge_pages_bytes_per_second"}) {
+    const double v = ft.at(k).get<double>();
+    EXPECT_TRUE(std::isfinite(v) && v > 0) << k << ": " << ft.dump();
+  }
 }
 
 TEST(MachineLimits, ThreadLimitCapsTheAllThreadsCount) {
