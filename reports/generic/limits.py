@@ -80,15 +80,20 @@ def runs_table(page, recs):
     out = []
     for run, ml in runs.items():
         if ml is None:
-            out.append([run, "–", NOT_MEASURED, NOT_MEASURED, "–", "–"])
+            out.append([run, "–", NOT_MEASURED, NOT_MEASURED, NOT_MEASURED, "–", "–"])
             continue
         gathers = {e.get("threads"): e for e in ml.get("gather") or []}
+        # Fresh memory's first touch, on 4 KiB / 2 MiB pages (one thread; older runs lack it).
+        ft = ml.get("first_touch") or {}
+        small, huge = ft.get("small_pages_bytes_per_second"), ft.get("huge_pages_bytes_per_second")
+        touch = (f"{per_second(small, 'B')} / {per_second(huge, 'B')}" if small and huge else NOT_MEASURED)
         for e in ml.get("triad") or []:
             g = gathers.get(e.get("threads"), {})
             out.append([run, str(e.get("threads")), per_second(e["bytes_per_second"], "B"),
                         per_second(g["gathers_per_second"], "") if g.get("gathers_per_second") else NOT_MEASURED,
-                        human_bytes(ml.get("triad_bytes_per_pass")), human_seconds(ml.get("seconds"))])
-    page.table(["run", "threads", "triad bandwidth", "random gathers", "triad arrays", "measured in"], out)
+                        touch, human_bytes(ml.get("triad_bytes_per_pass")), human_seconds(ml.get("seconds"))])
+    page.table(["run", "threads", "triad bandwidth", "random gathers", "first touch (4 KiB / 2 MiB pages)",
+                "triad arrays", "measured in"], out)
 
 
 def section(page, rows, recs):
