@@ -88,7 +88,9 @@ class Fields {
     const char* stop = p;
     while (stop < end && !is_space(*stop)) ++stop;
     if (p == stop) fail(std::string("the file ends where ") + what + " was expected");
-    const auto [next, ec] = std::from_chars(p, stop, v);
+    // fscanf takes a leading '+'; from_chars does not.
+    const char* digits = p + (*p == '+' && stop - p > 1 && *(p + 1) != '-' && *(p + 1) != '+' ? 1 : 0);
+    const auto [next, ec] = std::from_chars(digits, stop, v);
     if (ec != std::errc() || next != stop)
       fail(std::string("expected ") + what + ", found '" + std::string(p, size_t(std::min<ptrdiff_t>(stop - p, 40))) +
            "'");

@@ -54,6 +54,13 @@ else:
         nodes, "".join(f"{i} {float(i)}\n" for i in range(1, nodes + 1)))
     (work / "field.msh").write_text(src + field)
     counts["field.msh"] = volume
+    # MSH 4.1 coordinates written with a leading '+': gmsh's fscanf reads them, so must
+    # vobench's block walk (datasets/gmsh/msh4_blocks.cpp).
+    head, rest = (work / f"{geo.stem}-msh41.msh").read_text().split("$Nodes\n", 1)
+    node_part, tail = rest.split("$EndNodes\n", 1)
+    plus = "\n".join("+" + l if len(l.split()) == 3 and not l.startswith("-") else l for l in node_part.split("\n"))
+    (work / "plus-msh41.msh").write_text(head + "$Nodes\n" + plus + "$EndNodes\n" + tail)
+    counts["plus-msh41.msh"] = volume
     r = run([maker, "scalars", work / "field.msh"])
     print("field.msh scalars:", r.stdout.strip())
     if f"scalars {nodes} min 1 max {nodes}" not in r.stdout:
