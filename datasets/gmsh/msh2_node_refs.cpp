@@ -4,9 +4,9 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <vector>
 
+#include "datasets/gmsh/msh_text.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -64,19 +64,8 @@ bool first_number(std::string_view line, int64_t& v) {
 }  // namespace
 
 void check_msh2_node_refs(const std::string& path, const std::function<int(int)>& nodes_of) {
-  std::ifstream in(path, std::ios::binary);
-  std::string s(64, '\0');  // the format line first: only MSH 2 files are read whole
-  in.read(s.data(), std::streamsize(s.size()));
-  s.resize(size_t(in.gcount()));
-  if (s.rfind("$MeshFormat\n2", 0) != 0) return;
-  in.clear();
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size <= 0) return;
-  in.seekg(0);
-  s.resize(size_t(size));
-  in.read(s.data(), size);
-  s.resize(size_t(in.gcount()));
+  std::string s;  // only MSH 2 files are read whole
+  if (!read_msh_if_starts_with(path, "$MeshFormat\n2", s)) return;
   Cursor fmt{s, std::strlen("$MeshFormat\n")};
   std::string_view line;
   std::vector<int64_t> v;

@@ -4,11 +4,11 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <vector>
 
+#include "datasets/gmsh/msh_text.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -240,19 +240,8 @@ void read_elements(Fields& f, const NodeSet& nodes, const std::function<GmshElem
 }  // namespace
 
 void check_msh4_blocks(const std::string& path, const std::function<GmshElementType(int)>& type_of) {
-  std::ifstream in(path, std::ios::binary);
-  std::string s(64, '\0');  // the format line first: only MSH 4.1 files are read whole
-  in.read(s.data(), std::streamsize(s.size()));
-  s.resize(size_t(in.gcount()));
-  if (s.rfind("$MeshFormat\n4.1 ", 0) != 0) return;
-  in.clear();
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size <= 0) return;
-  in.seekg(0);
-  s.resize(size_t(size));
-  in.read(s.data(), size);
-  s.resize(size_t(in.gcount()));
+  std::string s;  // only MSH 4.1 files are read whole
+  if (!read_msh_if_starts_with(path, "$MeshFormat\n4.1 ", s)) return;
 
   size_t at = std::strlen("$MeshFormat\n");
   const size_t eol = s.find('\n', at);
