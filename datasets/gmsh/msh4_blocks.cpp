@@ -4,7 +4,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <limits>
+#include <cstdio>
 #include <map>
 #include <vector>
 
@@ -25,10 +25,8 @@ class Fields {
       : path_(path), s_(s), at_(at), binary_(binary) {}
 
   void set_place(std::string place) { place_ = std::move(place); }
-  const std::string& place() const { return place_; }
   size_t at() const { return at_; }
   size_t left() const { return s_.size() - at_; }
-  bool binary() const { return binary_; }
 
   uint64_t size() {
     if (binary_) return raw<uint64_t>("a count");
