@@ -1,5 +1,6 @@
 #include "datasets/io/ply_prescan.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -18,7 +19,7 @@ struct Property {
   std::string name;
   int size = 0;        // bytes of a scalar, or of each list item
   int count_size = 0;  // lists: bytes of the count (0: not a list)
-  bool count_signed = false;
+  bool count_signed = false, count_float = false;  // lists: the count's type
   bool item_signed = false, item_float = false;  // lists: the items' type
 };
 struct Element {
@@ -93,7 +94,7 @@ void prescan_ply(const std::string& path) {
       if (t == "list") {
         std::string ct, it;
         ls >> ct >> it;
-        p.count_size = type_size(ct, &p.count_signed);
+        p.count_size = type_size(ct, &p.count_signed, &p.count_float);
         p.size = type_size(it, &p.item_signed, &p.item_float);
         if (!p.count_size || !p.size) throw InputError(path, where, "unknown list types '" + ct + " " + it + "'");
       } else if (!(p.size = type_size(t))) {
@@ -106,6 +107,27 @@ void prescan_ply(const std::string& path) {
     }
   }
   if (format.empty()) throw InputError(path, "header", "no format line");
+  // What VTK's reader takes from the header without checking: without scalar x, y and z its
+  // points are unset (SIGSEGV), and without the faces' index list it frees an unset pointer
+  // (abort). It takes the list by two names, and the vertices must come first.
+  const auto is_index_name = [](const std::string& n) { return n == "vertex_indices" || n == "vertex_index"; };
+  bool seen_vertex = false;
+  for (const Element& e : elements) {
+    seen_vertex |= e.name == "vertex";
+    if (e.name == "face" && !seen_vertex)  // it sets up each polygon with the points it has read (SIGSEGV)
+      throw InputError(path, "element face", "comes before element vertex (VTK's PLY reader needs the vertices first)");
+    if (e.name == "vertex")
+      for (const char* axis : {"x", "y", "z"}) {
+        const auto it = std::find_if(e.props.begin(), e.props.end(), [&](const Property& p) { return p.name == axis; });
+        if (it == e.props.end() || it->count_size)
+          throw InputError(path, "element vertex", std::string("no scalar property '") + axis +
+                                                       "' (the points need x, y and z)");
+      }
+    if (e.name == "face" && std::none_of(e.props.begin(), e.props.end(), [&](const Property& p) {
+          return p.count_size && is_index_name(p.name);
+        }))
+      throw InputError(path, "element face", "no list property 'vertex_indices' or 'vertex_index' (the polygons' points)");
+  }
   const std::streamoff start = in.tellg();
   in.seekg(0, std::ios::end);
   const std::streamoff bytes = in.tellg() - start;
@@ -117,8 +139,15 @@ void prescan_ply(const std::string& path) {
   long long vertices = 0;
   for (const Element& e : elements)
     if (e.name == "vertex") vertices = e.count;
-  const auto is_index_list = [](const Element& e, const Property& p) {
-    return e.name == "face" && p.count_size && p.name == "vertex_indices";
+  const auto is_index_list = [&](const Element& e, const Property& p) {
+    return e.name == "face" && p.count_size && is_index_name(p.name);
+  };
+  // VTK keeps a polygon's vertex count in a byte: a longer polygon would be read cut short.
+  constexpr long long kMaxPolygon = 255;
+  const auto check_polygon = [&](long long n, const std::string& where) {
+    if (n > kMaxPolygon)
+      throw InputError(path, where, "polygon of " + std::to_string(n) + " points (VTK's PLY reader keeps at most " +
+                                        std::to_string(kMaxPolygon) + ")");
   };
   const auto check_index = [&](double v, const std::string& where) {
     if (!(v > -1 && v < double(vertices)))  // VTK truncates to int
@@ -155,6 +184,7 @@ void prescan_ply(const std::string& path) {
               throw InputError(path, where, "list count '" + token + "' is not a valid count");
           }
           const bool indices = is_index_list(e, p);
+          if (indices) check_polygon(static_cast<long long>(n), where);
           for (long long k = 0; k < static_cast<long long>(n); ++k) {
             const double v = number();
             if (indices) check_index(v, where);
@@ -165,13 +195,19 @@ void prescan_ply(const std::string& path) {
     return;
   }
   std::vector<char> buf(8);
+  // A list count in its own type (any of the eight, as VTK converts it): a whole number from
+  // 0 to the file's size.
   auto binary_count = [&](const Property& p, const std::string& where) -> long long {
     if (!in.read(buf.data(), p.count_size)) throw InputError(path, where, "file ends early");
-    unsigned char b[4] = {0, 0, 0, 0};
-    for (int i = 0; i < p.count_size; ++i) b[i] = static_cast<unsigned char>(buf[swap ? p.count_size - 1 - i : i]);
-    const uint32_t u = uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
-    if (p.count_signed && (b[p.count_size - 1] & 0x80)) return -1;
-    return static_cast<long long>(u);
+    Property count;
+    count.size = p.count_size, count.item_signed = p.count_signed, count.item_float = p.count_float;
+    const double v = item_value(buf.data(), count, swap);
+    if (!(v >= 0 && v <= double(bytes)) || v != std::floor(v)) {
+      std::ostringstream text;
+      text << v;
+      throw InputError(path, where, "list count " + text.str() + " is not a valid count");
+    }
+    return static_cast<long long>(v);
   };
   for (const Element& e : elements)
     for (long long i = 0; i < e.count; ++i) {
@@ -180,9 +216,9 @@ void prescan_ply(const std::string& path) {
         long long n = 1;
         if (p.count_size) {
           n = binary_count(p, where);
-          if (n < 0 || n > bytes) throw InputError(path, where, "list count " + std::to_string(n) + " is not a valid count");
         }
         if (is_index_list(e, p)) {
+          check_polygon(n, where);
           // Bounded by the bytes left before the buffer grows: a bogus count is refused, not allocated.
           if (n * p.size > bytes - (in.tellg() - start)) throw InputError(path, where, "file ends early");
           if (buf.size() < size_t(n * p.size)) buf.resize(size_t(n * p.size));

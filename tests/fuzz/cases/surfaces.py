@@ -24,13 +24,15 @@ def stl_binary(faces=FACES, count=None):
     return b"\0" * 80 + struct.pack("<I", len(faces) if count is None else count) + body
 
 
-def ply(fmt="ascii", nv=4, nf=4, faces=FACES, pts=PTS, extra=""):
-    head = (f"ply\nformat {fmt} 1.0\nelement vertex {nv}\nproperty float x\nproperty float y\n"
-            f"property float z\nelement face {nf}\nproperty list uchar int vertex_indices\n{extra}end_header\n")
+def ply(fmt="ascii", nv=4, nf=4, faces=FACES, pts=PTS, extra="", x="x", index="list uchar int vertex_indices",
+        faces_first=False):
+    vertex = f"element vertex {nv}\nproperty float {x}\nproperty float y\nproperty float z\n"
+    face = f"element face {nf}\nproperty {index}\n"
+    head = f"ply\nformat {fmt} 1.0\n" + (face + vertex if faces_first else vertex + face) + f"{extra}end_header\n"
     if fmt == "ascii":
-        body = "".join(" ".join(str(c) for c in p) + "\n" for p in pts)
-        body += "".join(f"{len(f)} " + " ".join(str(i) for i in f) + "\n" for f in faces)
-        return (head + body).encode()
+        vbody = "".join(" ".join(str(c) for c in p) + "\n" for p in pts)
+        fbody = "".join(f"{len(f)} " + " ".join(str(i) for i in f) + "\n" for f in faces)
+        return (head + (fbody + vbody if faces_first else vbody + fbody)).encode()
     body = b"".join(struct.pack("<3f", *p) for p in pts)
     body += b"".join(struct.pack("<B3i", 3, *f) for f in faces)
     return head.encode() + body
@@ -74,6 +76,14 @@ def cases(work):
         "bad-type": ply(extra="property quad w\n"),
         "no-end-header": b"ply\nformat ascii 1.0\nelement vertex 4\n",
         "not-ply": b"plx\n",
+        # What VTK's reader takes from the header unchecked: it crashed on each of these.
+        "no-x": ply(x="w"),
+        "no-index-list": ply(index="list uchar int verts"),
+        "scalar-index": ply(index="int vertex_indices", faces=[(0,), (1,), (2,), (3,)]),
+        "faces-first": ply(faces_first=True),
+        "vertex-index-far-out": ply(index="list uchar int vertex_index", faces=FACES[:3] + [(0, 3, 90000000)]),
+        # VTK keeps a polygon's count in a byte: it read these 300 points as 44.
+        "polygon-300": ply(index="list ushort int vertex_indices", faces=FACES[:3] + [tuple(i % 4 for i in range(300))]),
         "empty": b"",
     })
     out += check_cases({"ply-" + k: v for k, v in plys.items()}, "ply", "triangle-centroid")
