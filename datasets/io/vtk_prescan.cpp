@@ -81,6 +81,37 @@ uint64_t count(const std::string& path, const std::string& element, std::string_
   return static_cast<uint64_t>(v);
 }
 
+// The cell list before format 5.1: `cells` records "k id_1 .. id_k" in `size` values (ASCII
+// words, or big-endian 32-bit integers in a binary file), which VTK walks unchecked: a
+// negative or too large k writes past its arrays (heap corruption). 5.1 files give OFFSETS
+// and CONNECTIVITY instead, whose cells are checked after reading.
+void walk_legacy_cells(std::istream& in, const std::string& path, const std::string& where, uint64_t cells,
+                       uint64_t size, bool binary) {
+  const auto next = [&]() -> int64_t {
+    if (binary) {
+      unsigned char b[4];
+      if (!in.read(reinterpret_cast<char*>(b), 4)) throw InputError(path, where, "the cell list ends early");
+      return static_cast<int32_t>(uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | uint32_t(b[3]));
+    }
+    long long v = 0;  // as VTK reads them
+    if (!(in >> v)) throw InputError(path, where, "the cell list ends early or holds a word that is not an integer");
+    return v;
+  };
+  uint64_t used = 0;
+  for (uint64_t c = 0; c < cells; ++c) {
+    const int64_t k = next();
+    ++used;
+    if (k < 0 || used > size || static_cast<uint64_t>(k) > size - used)
+      throw InputError(path, where, "cell " + std::to_string(c) + ": point count " + std::to_string(k) +
+                                        " does not fit the list's " + std::to_string(size) + " values");
+    for (int64_t j = 0; j < k; ++j) next();
+    used += static_cast<uint64_t>(k);
+  }
+  if (used != size)
+    throw InputError(path, where, std::to_string(cells) + " cells use " + std::to_string(used) + " of the list's " +
+                                      std::to_string(size) + " values");
+}
+
 struct Tag {
   std::string name;
   std::map<std::string, std::string> attrs;
@@ -217,8 +248,10 @@ void prescan_vtk_legacy(const std::string& path) {
   // that happens to start with a keyword would need the exact spelling below.
   std::string line;
   int64_t number = 0;
+  bool binary = false;
   while (std::getline(in, line)) {
     ++number;
+    if (number == 3) binary = line.rfind("BINARY", 0) == 0;  // the header's third line: ASCII or BINARY
     if (line.size() > 256 || line.empty() || !std::isupper(static_cast<unsigned char>(line[0]))) continue;
     const auto t = split(line);
     const std::string key(t[0]);
@@ -238,8 +271,13 @@ void prescan_vtk_legacy(const std::string& path) {
     } else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES" ||
                key == "TRIANGLE_STRIPS") {
       need(3);
-      count(path, where, t[1], bytes, "cell count");
-      count(path, where, t[2], bytes, "connectivity size");
+      const uint64_t cells = count(path, where, t[1], bytes, "cell count");
+      const uint64_t size = count(path, where, t[2], bytes, "connectivity size");
+      const std::streampos data = in.tellg();
+      std::string after;
+      std::getline(in, after);
+      in.seekg(data);
+      if (after.rfind("OFFSETS", 0) != 0) walk_legacy_cells(in, path, where, cells, size, binary);
     } else if (key == "CELL_TYPES" || key == "POINT_DATA" || key == "CELL_DATA") {
       need(2);
       count(path, where, t[1], bytes, "count");

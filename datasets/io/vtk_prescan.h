@@ -17,7 +17,9 @@ inline constexpr double kMaxCompressionRatio = 1100;
 // `expected_type` is the VTKFile type the extension promises (UnstructuredGrid, ImageData).
 void prescan_vtk_xml(const std::string& path, const std::string& expected_type);
 // Legacy .vtk: POINTS, CELLS, CELL_TYPES, POINT_DATA, CELL_DATA and DIMENSIONS counts are
-// integers and fit the file (every value takes at least one byte).
+// integers and fit the file (every value takes at least one byte); a cell list in the format
+// before 5.1 ("k id_1 .. id_k" per cell) holds exactly its declared values, every k
+// non-negative and within them (VTK walks it unchecked).
 void prescan_vtk_legacy(const std::string& path);
 
 }  // namespace vob

@@ -81,6 +81,10 @@ def cases(work):
     add("ascii-voxel", ascii_grid(types=[11, 5, 1]))
     add("ascii-unknown-type", ascii_grid(types=[250, 5, 1]))
     add("ascii-index-out-of-range", ascii_grid(cells=[[8, 0, 1, 2, 3, 4, 5, 6, 70]] + CELLS[1:]))
+    # A point count that does not fit the cell list: VTK walked it unchecked (heap corruption,
+    # or in a binary file a silently different mesh).
+    add("ascii-negative-point-count", ascii_grid(cells=[HEX, [-1, 0, 1, 2], [1, 0]]))
+    add("ascii-point-count-past-list", ascii_grid(cells=[HEX, [9, 0, 1, 2], [1, 0]]))
     add("ascii-inverted", ascii_grid(cells=[[8, 4, 5, 6, 7, 0, 1, 2, 3]] + CELLS[1:]))
     add("ascii-nonconvex-twisted-hex", ascii_grid(points=CUBE[:6] + [(0.4, 1.3, 1.9)] + CUBE[7:]))
     add("ascii-short-scalars", ascii_grid(scalars=["0", "1"]))
@@ -95,6 +99,8 @@ def cases(work):
     add("binary-huge-points", binary_grid(npts=2000000000), "vtk-binary")
     add("binary-index-out-of-range", binary_grid(cells=[[8, 0, 1, 2, 3, 4, 5, 6, 1 << 30]] + CELLS[1:]),
         "vtk-binary")
+    add("binary-negative-point-count", binary_grid(cells=[HEX, [-1, 0, 1, 2], [1, 0]]), "vtk-binary")
+    add("binary-point-count-past-list", binary_grid(cells=[HEX, [40, 0, 1, 2], [1, 0]]), "vtk-binary")
     add("binary-only-lower-dim", binary_grid(cells=CELLS[1:], types=TYPES[1:]), "vtk-binary")
     add("binary-quadratic-tetra", binary_grid(types=[24, 5, 1]), "vtk-binary")
     add("volume-huge-dims", volume(dims="100000 100000 100000"), algorithm="distance-sort")
