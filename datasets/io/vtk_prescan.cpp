@@ -3,6 +3,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -249,8 +250,15 @@ void prescan_vtk_legacy(const std::string& path) {
   std::string line;
   int64_t number = 0;
   bool binary = false;
+  bool cell_lists = true;  // cells as "k id_1 .. id_k" lists: VTK reads them so below version 5.1
   while (std::getline(in, line)) {
     ++number;
+    if (number == 1) {  // "# vtk DataFile Version M.m": VTK takes what it cannot read as 0.0
+      int major = 0, minor = 0;
+      const size_t at = line.find("Version");
+      if (at != std::string::npos) std::sscanf(line.c_str() + at + 7, "%d.%d", &major, &minor);
+      cell_lists = major < 5 || (major == 5 && minor < 1);
+    }
     if (number == 3) binary = line.rfind("BINARY", 0) == 0;  // the header's third line: ASCII or BINARY
     if (line.size() > 256 || line.empty() || !std::isupper(static_cast<unsigned char>(line[0]))) continue;
     const auto t = split(line);
@@ -273,11 +281,7 @@ void prescan_vtk_legacy(const std::string& path) {
       need(3);
       const uint64_t cells = count(path, where, t[1], bytes, "cell count");
       const uint64_t size = count(path, where, t[2], bytes, "connectivity size");
-      const std::streampos data = in.tellg();
-      std::string after;
-      std::getline(in, after);
-      in.seekg(data);
-      if (after.rfind("OFFSETS", 0) != 0) walk_legacy_cells(in, path, where, cells, size, binary);
+      if (cell_lists) walk_legacy_cells(in, path, where, cells, size, binary);
     } else if (key == "CELL_TYPES" || key == "POINT_DATA" || key == "CELL_DATA") {
       need(2);
       count(path, where, t[1], bytes, "count");

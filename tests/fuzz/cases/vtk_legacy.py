@@ -43,6 +43,21 @@ def binary_grid(points=CUBE, cells=CELLS, types=TYPES, npts=None, coord=None):
     return b
 
 
+def binary_grid51(version="5.1"):
+    """The binary grid in format 5.1 (OFFSETS and CONNECTIVITY), as VTK 9 writes it."""
+    b = f"# vtk DataFile Version {version}\ncube\nBINARY\nDATASET UNSTRUCTURED_GRID\n".encode()
+    flat = [float(c) for p in CUBE for c in p]
+    b += f"POINTS {len(CUBE)} double\n".encode() + struct.pack(f">{len(flat)}d", *flat) + b"\n"
+    conn = [i for c in CELLS for i in c[1:]]
+    offsets = [0]
+    for c in CELLS:
+        offsets.append(offsets[-1] + len(c) - 1)
+    b += f"CELLS {len(offsets)} {len(conn)}\nOFFSETS vtktypeint64\n".encode() + struct.pack(f">{len(offsets)}q", *offsets)
+    b += b"\nCONNECTIVITY vtktypeint64\n" + struct.pack(f">{len(conn)}q", *conn) + b"\n"
+    b += f"CELL_TYPES {len(TYPES)}\n".encode() + struct.pack(f">{len(TYPES)}i", *TYPES) + b"\n"
+    return b
+
+
 def volume(dims="2 2 2", spacing="1 1 1", origin="0 0 0", values="1 2 3 4 5 6 7 8", n=8):
     return (f"# vtk DataFile Version 3.0\nvol\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS {dims}\n"
             f"SPACING {spacing}\nORIGIN {origin}\nPOINT_DATA {n}\nSCALARS v float 1\n"
@@ -101,6 +116,9 @@ def cases(work):
         "vtk-binary")
     add("binary-negative-point-count", binary_grid(cells=[HEX, [-1, 0, 1, 2], [1, 0]]), "vtk-binary")
     add("binary-point-count-past-list", binary_grid(cells=[HEX, [40, 0, 1, 2], [1, 0]]), "vtk-binary")
+    # A 5.1 body under a header without its version: VTK reads it as the older cell lists
+    # (it crashed walking the OFFSETS bytes as point counts).
+    add("binary-51-without-version", binary_grid51(version=""), "vtk-binary")
     add("binary-only-lower-dim", binary_grid(cells=CELLS[1:], types=TYPES[1:]), "vtk-binary")
     add("binary-quadratic-tetra", binary_grid(types=[24, 5, 1]), "vtk-binary")
     add("volume-huge-dims", volume(dims="100000 100000 100000"), algorithm="distance-sort")
