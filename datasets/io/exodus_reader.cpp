@@ -14,6 +14,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "datasets/io/netcdf_prescan.h"
 #include "datasets/io/vtk_shared.h"
 
 namespace vob {
@@ -51,6 +52,7 @@ void check_magic(const std::string& path) {
   const bool cdf = std::memcmp(m, "CDF", 3) == 0 && (m[3] == 1 || m[3] == 2 || m[3] == 5);
   const bool hdf = std::memcmp(m, "\x89HDF", 4) == 0;
   if (!cdf && !hdf) throw InputError(path, "header", "is not a netCDF or HDF5 file (not Exodus II)");
+  if (cdf) prescan_netcdf_classic(path);
 }
 }  // namespace
 

@@ -1,0 +1,134 @@
+#include "datasets/io/netcdf_prescan.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <vector>
+
+#include "harness/scene/input_error.h"
+
+namespace vob {
+
+namespace {
+constexpr uint32_t kDimension = 0x0A, kVariable = 0x0B, kAttribute = 0x0C;
+constexpr uint64_t kMaxName = 256;  // NC_MAX_NAME
+
+class HeaderWalk {
+ public:
+  // `bytes`: the file's first bytes, all of it when `whole`.
+  HeaderWalk(const std::string& path, std::vector<unsigned char> bytes, bool whole)
+      : path_(path), b_(std::move(bytes)), version_(b_[3]), whole_(whole) {}
+
+  void run() {
+    at_ = 4;
+    const uint64_t numrecs = big();  // NON_NEG or STREAMING (all ones): any value is valid
+    (void)numrecs;
+    const uint64_t dims = list(kDimension, "dimension list", 8);
+    for (uint64_t i = 0; i < dims; ++i) {
+      name("dimension " + std::to_string(i));
+      big();  // its length (0: the record dimension)
+    }
+    attributes("global attribute list");
+    const uint64_t vars = list(kVariable, "variable list", 24);
+    for (uint64_t i = 0; i < vars; ++i) {
+      const std::string where = "variable " + std::to_string(i);
+      name(where);
+      const uint64_t rank = count(where + " dimension count", big(), 4);
+      for (uint64_t k = 0; k < rank; ++k)
+        if (const uint64_t id = big(); id >= dims)
+          throw InputError(path_, where, "dimension id " + std::to_string(id) + " is not one of the " +
+                                             std::to_string(dims) + " dimensions");
+      attributes(where + " attribute list");
+      type(where);
+      big();                            // vsize
+      version_ == 1 ? u32() : u64();    // begin: 32-bit offsets in CDF-1 only
+    }
+  }
+
+ private:
+  uint32_t u32() {
+    need(4, "header");
+    const unsigned char* p = &b_[at_];
+    at_ += 4;
+    return uint32_t(p[0]) << 24 | uint32_t(p[1]) << 16 | uint32_t(p[2]) << 8 | p[3];
+  }
+  uint64_t u64() {
+    const uint64_t hi = u32();
+    return hi << 32 | u32();
+  }
+  uint64_t big() { return version_ == 5 ? u64() : u32(); }  // NON_NEG: 64-bit in CDF-5
+  uint64_t left() const { return b_.size() - at_; }
+  void need(uint64_t n, const std::string& where) const {
+    if (n > left())
+      throw InputError(path_, where, whole_ ? "the header ends past the end of the file"
+                                            : "the header runs past the first " + std::to_string(b_.size()) +
+                                                  " bytes (no Exodus header is that long)");
+  }
+  // A count of items of at least `min_bytes` each, against the bytes left.
+  uint64_t count(const std::string& where, uint64_t n, uint64_t min_bytes) const {
+    if (n > left() / min_bytes)
+      throw InputError(path_, where, std::to_string(n) + " entries cannot fit in the " + std::to_string(left()) +
+                                         " bytes left");
+    return n;
+  }
+  // ABSENT (two zeros) or the list's tag and its count.
+  uint64_t list(uint32_t tag, const std::string& where, uint64_t min_bytes) {
+    const uint32_t t = u32();
+    const uint64_t n = big();
+    if (t == 0 && n == 0) return 0;
+    if (t != tag)
+      throw InputError(path_, where, "tag " + std::to_string(t) + " where " + std::to_string(tag) +
+                                         " (or an absent list) belongs");
+    return count(where, n, min_bytes);
+  }
+  void name(const std::string& where) {
+    const uint64_t n = big();
+    if (n == 0 || n > kMaxName)
+      throw InputError(path_, where, "name of " + std::to_string(n) + " bytes (1 to " + std::to_string(kMaxName) + ")");
+    const uint64_t padded = (n + 3) / 4 * 4;
+    need(padded, where);
+    at_ += padded;
+  }
+  uint64_t type(const std::string& where) {
+    const uint32_t t = u32();
+    static const int kSize[] = {0, 1, 1, 2, 4, 4, 8, 1, 2, 4, 8, 8};  // NC_BYTE .. NC_UINT64
+    if (t < 1 || t > (version_ == 5 ? 11u : 6u))
+      throw InputError(path_, where, "type " + std::to_string(t) + " is not a netCDF type of this format");
+    return kSize[t];
+  }
+  void attributes(const std::string& where) {
+    const uint64_t n = list(kAttribute, where, 12);
+    for (uint64_t i = 0; i < n; ++i) {
+      const std::string what = where + " entry " + std::to_string(i);
+      name(what);
+      const uint64_t size = type(what);
+      const uint64_t values = count(what + " values", big(), size);
+      const uint64_t padded = (values * size + 3) / 4 * 4;
+      need(padded, what);
+      at_ += padded;
+    }
+  }
+
+  const std::string& path_;
+  std::vector<unsigned char> b_;
+  unsigned char version_;
+  bool whole_;
+  uint64_t at_ = 0;
+};
+}  // namespace
+
+void prescan_netcdf_classic(const std::string& path) {
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in) throw InputError(path, "file", "cannot be opened");
+  const std::streamoff size = in.tellg();
+  // The header lies before the data; a classic Exodus header is a few kB to a few MB.
+  const std::streamoff keep = std::min<std::streamoff>(size, std::streamoff(64) << 20);
+  std::vector<unsigned char> bytes(static_cast<size_t>(keep));
+  in.seekg(0);
+  in.read(reinterpret_cast<char*>(bytes.data()), keep);
+  if (keep < 4 || std::memcmp(bytes.data(), "CDF", 3) != 0) return;
+  HeaderWalk(path, std::move(bytes), keep == size).run();
+}
+
+}  // namespace vob
