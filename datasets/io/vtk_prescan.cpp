@@ -82,20 +82,74 @@ uint64_t count(const std::string& path, const std::string& element, std::string_
   return static_cast<uint64_t>(v);
 }
 
+// Integers from a stream through a buffer (`in >> v` per value cost more than VTK's own read
+// of a large file): ASCII words as `>>` reads them (sign, digits, stopping at anything
+// else), or big-endian 32-bit values. finish() puts the stream just past the last one read.
+class ValueReader {
+ public:
+  ValueReader(std::istream& in, bool binary) : in_(in), binary_(binary), start_(in.tellg()) {}
+  bool next(int64_t& v) {
+    if (binary_) {
+      if (!fill(4)) return false;
+      const auto* b = reinterpret_cast<const unsigned char*>(buf_.data() + pos_);
+      pos_ += 4;
+      v = static_cast<int32_t>(uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | uint32_t(b[3]));
+      return true;
+    }
+    for (;;) {  // whitespace, across refills
+      while (pos_ < end_ && std::isspace(static_cast<unsigned char>(buf_[pos_]))) ++pos_;
+      if (pos_ < end_ || !fill(1)) break;
+    }
+    if (!fill(kLongestWord)) fill(1);  // a word whole in the buffer (or the file's last bytes)
+    const char* b = buf_.data() + pos_;
+    const char* e = buf_.data() + end_;
+    if (b < e && *b == '+' && b + 1 < e && *(b + 1) != '-') ++b;
+    long long x = 0;
+    const auto [p, ec] = std::from_chars(b, e, x);
+    if (ec != std::errc()) return false;
+    pos_ = static_cast<size_t>(p - buf_.data());
+    v = x;
+    return true;
+  }
+  void finish() {
+    in_.clear();
+    in_.seekg(start_ + std::streamoff(consumed_ + pos_));
+  }
+
+ private:
+  static constexpr size_t kLongestWord = 32, kChunk = size_t(1) << 20;
+  // At least n unread bytes in the buffer, reading more if needed; false at the file's end.
+  bool fill(size_t n) {
+    if (end_ - pos_ >= n) return true;
+    buf_.erase(buf_.begin(), buf_.begin() + static_cast<std::ptrdiff_t>(pos_));
+    consumed_ += pos_;
+    end_ -= pos_;
+    pos_ = 0;
+    buf_.resize(end_ + kChunk);
+    in_.read(buf_.data() + end_, static_cast<std::streamsize>(kChunk));
+    end_ += static_cast<size_t>(in_.gcount());
+    buf_.resize(end_);
+    return end_ - pos_ >= n;
+  }
+  std::istream& in_;
+  bool binary_;
+  std::streampos start_;
+  std::vector<char> buf_;
+  size_t pos_ = 0, end_ = 0, consumed_ = 0;
+};
+
 // The cell list before format 5.1: `cells` records "k id_1 .. id_k" in `size` values (ASCII
 // words, or big-endian 32-bit integers in a binary file), which VTK walks unchecked: a
 // negative or too large k writes past its arrays (heap corruption). 5.1 files give OFFSETS
 // and CONNECTIVITY instead, whose cells are checked after reading.
 void walk_legacy_cells(std::istream& in, const std::string& path, const std::string& where, uint64_t cells,
                        uint64_t size, bool binary) {
+  ValueReader values(in, binary);
   const auto next = [&]() -> int64_t {
-    if (binary) {
-      unsigned char b[4];
-      if (!in.read(reinterpret_cast<char*>(b), 4)) throw InputError(path, where, "the cell list ends early");
-      return static_cast<int32_t>(uint32_t(b[0]) << 24 | uint32_t(b[1]) << 16 | uint32_t(b[2]) << 8 | uint32_t(b[3]));
-    }
-    long long v = 0;  // as VTK reads them
-    if (!(in >> v)) throw InputError(path, where, "the cell list ends early or holds a word that is not an integer");
+    int64_t v = 0;
+    if (!values.next(v))
+      throw InputError(path, where, binary ? "the cell list ends early"
+                                           : "the cell list ends early or holds a word that is not an integer");
     return v;
   };
   uint64_t used = 0;
@@ -111,6 +165,7 @@ void walk_legacy_cells(std::istream& in, const std::string& path, const std::str
   if (used != size)
     throw InputError(path, where, std::to_string(cells) + " cells use " + std::to_string(used) + " of the list's " +
                                       std::to_string(size) + " values");
+  values.finish();
 }
 
 struct Tag {
