@@ -14,11 +14,14 @@ namespace {
 constexpr uint32_t kDimension = 0x0A, kVariable = 0x0B, kAttribute = 0x0C;
 constexpr uint64_t kMaxName = 256;  // NC_MAX_NAME
 
+// Thrown when the walk reaches the end of the bytes read so far and the file has more.
+struct NeedMore {};
+
 class HeaderWalk {
  public:
-  // `bytes`: the file's first bytes, all of it when `whole`.
-  HeaderWalk(const std::string& path, std::vector<unsigned char> bytes, bool whole)
-      : path_(path), b_(std::move(bytes)), version_(b_[3]), whole_(whole) {}
+  // `bytes`: the first bytes of a file of `file_size` bytes.
+  HeaderWalk(const std::string& path, std::vector<unsigned char> bytes, uint64_t file_size)
+      : path_(path), b_(std::move(bytes)), version_(b_[3]), whole_(b_.size() == file_size), file_size_(file_size) {}
 
   void run() {
     at_ = 4;
@@ -60,15 +63,15 @@ class HeaderWalk {
   uint64_t big() { return version_ == 5 ? u64() : u32(); }  // NON_NEG: 64-bit in CDF-5
   uint64_t left() const { return b_.size() - at_; }
   void need(uint64_t n, const std::string& where) const {
-    if (n > left())
-      throw InputError(path_, where, whole_ ? "the header ends past the end of the file"
-                                            : "the header runs past the first " + std::to_string(b_.size()) +
-                                                  " bytes (no Exodus header is that long)");
+    if (n <= left()) return;
+    if (!whole_) throw NeedMore{};
+    throw InputError(path_, where, "the header ends past the end of the file");
   }
-  // A count of items of at least `min_bytes` each, against the bytes left.
+  // A count of items of at least `min_bytes` each, against the file's bytes left.
   uint64_t count(const std::string& where, uint64_t n, uint64_t min_bytes) const {
-    if (n > left() / min_bytes)
-      throw InputError(path_, where, std::to_string(n) + " entries cannot fit in the " + std::to_string(left()) +
+    const uint64_t file_left = file_size_ - at_;
+    if (n > file_left / min_bytes)
+      throw InputError(path_, where, std::to_string(n) + " entries cannot fit in the " + std::to_string(file_left) +
                                          " bytes left");
     return n;
   }
@@ -114,6 +117,7 @@ class HeaderWalk {
   std::vector<unsigned char> b_;
   unsigned char version_;
   bool whole_;
+  uint64_t file_size_;
   uint64_t at_ = 0;
 };
 }  // namespace
@@ -122,13 +126,23 @@ void prescan_netcdf_classic(const std::string& path) {
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw InputError(path, "file", "cannot be opened");
   const std::streamoff size = in.tellg();
-  // The header lies before the data; a classic Exodus header is a few kB to a few MB.
-  const std::streamoff keep = std::min<std::streamoff>(size, std::streamoff(64) << 20);
-  std::vector<unsigned char> bytes(static_cast<size_t>(keep));
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(bytes.data()), keep);
-  if (keep < 4 || std::memcmp(bytes.data(), "CDF", 3) != 0) return;
-  HeaderWalk(path, std::move(bytes), keep == size).run();
+  // The header lies before the data and is a few kB in an Exodus file: read 64 kB, and more
+  // only when the walk needs it (up to 64 MB, past which no Exodus header goes).
+  constexpr std::streamoff kFirst = std::streamoff(64) << 10, kMost = std::streamoff(64) << 20;
+  for (std::streamoff keep = std::min(size, kFirst);; keep = std::min(size, keep * 16)) {
+    std::vector<unsigned char> bytes(static_cast<size_t>(keep));
+    in.seekg(0);
+    in.read(reinterpret_cast<char*>(bytes.data()), keep);
+    if (keep < 4 || std::memcmp(bytes.data(), "CDF", 3) != 0) return;
+    try {
+      HeaderWalk(path, std::move(bytes), static_cast<uint64_t>(size)).run();
+      return;
+    } catch (const NeedMore&) {
+      if (keep >= kMost)
+        throw InputError(path, "header", "runs past the first " + std::to_string(keep) +
+                                             " bytes (no Exodus header is that long)");
+    }
+  }
 }
 
 }  // namespace vob
