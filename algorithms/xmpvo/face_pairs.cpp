@@ -419,17 +419,12 @@ int coplanar_order(const ViewGeometry& g, const Vec3* a, const Vec3* b) {
   return fa < 0 ? -1 : 1;
 }
 
-int depth_order(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb) {
-  // B entirely on the far (near) closed side of A's plane: A (B) is in front wherever they
-  // overlap, because every ray meets A's plane once and the eye is on the near side.
-  const int b_side = plane_side_of(g, a, b, nb);
-  if (b_side == kCoplanar) return coplanar_order(g, a, b);
-  if (b_side != 0) return b_side > 0 ? 1 : -1;
-  if (int s = plane_side_of(g, b, a, na)) return s > 0 ? -1 : 1;
-  // Each straddles the other's plane (or they are coplanar). Split A by B's plane: along a
-  // ray through the overlap, A's point on the eye's side of B's plane means A is in front.
-  // The part of A on the near side overlapping B decides; both parts overlapping B means
-  // the faces intersect.
+namespace {
+
+// The straddling case by construction: split A by B's plane. Along a ray through the
+// overlap, A's point on the eye's side of B's plane means A is in front. The part of A on
+// the near side overlapping B decides; both parts overlapping B means the faces intersect.
+int straddling_order_by_clipping(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb) {
   const int near_b = eye_side(g, b[0], b[1], b[2]);
   if (near_b == 0) return 0;
   const EK::Plane_3 plane_b(EPoint(b[0].x, b[0].y, b[0].z), EPoint(b[1].x, b[1].y, b[1].z),
@@ -445,6 +440,79 @@ int depth_order(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int
                                             eb.data(), nb, side, true);
   if (near_overlaps == far_overlaps) return 0;  // intersecting, coplanar, or no overlap
   return near_overlaps ? -1 : 1;
+}
+
+constexpr int kNotShared = 3;
+
+// Triangles A and B sharing exactly one vertex p, each straddling the other's plane. The
+// planes meet in a line L through p; its projection L' splits the image into the half
+// where A's plane is nearer (H_A: there lie the projections of A's points on the eye's side
+// of B's plane and of B's points beyond A's plane) and the half where B's is. A meets L in
+// a segment from p, B too. If both segments leave p the same way, the faces share it: they
+// intersect. Otherwise the overlap of the projections is a convex set that can meet L'
+// only at p, so it lies in one half, and near p it is the overlap of the two triangles'
+// projected angles at p. In each half each angle is bounded by one of its triangle's edges
+// from p (that triangle's neighbour of p there) and by L'. So, in H_A, with alpha_near the
+// neighbour of p in A on the eye's side of B's plane and beta_far B's neighbour beyond A's
+// plane: the angles overlap there iff beta_far lies strictly inside A's angle and
+// alpha_near strictly inside B's; if exactly one of the two holds, both angles hold the
+// same end of L' (the segments leave p the same way). Likewise in H_B. Only orientation
+// signs of input points: no construction (the clipping path builds lazy exact points whose
+// every predicate is exactly degenerate at p, so each call ran the rational arithmetic).
+// Returns kNotShared when A and B do not share exactly one vertex.
+int shared_vertex_order(const ViewGeometry& g, const Vec3* a, const Vec3* b) {
+  int ia = -1, jb = -1, shared = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (a[i] == b[j]) ia = i, jb = j, ++shared;
+  if (shared != 1) return kNotShared;
+  const int eye_a = eye_side(g, a[0], a[1], a[2]), eye_b = eye_side(g, b[0], b[1], b[2]);
+  if (eye_a == 0 || eye_b == 0) return 0;  // seen edge-on: no open projection
+  const Vec3 p = a[ia];
+  const Vec3 a1 = a[(ia + 1) % 3], a2 = a[(ia + 2) % 3], b1 = b[(jb + 1) % 3], b2 = b[(jb + 2) % 3];
+  // Sides of the other plane, positive towards the eye; a straddling triangle has its two
+  // other vertices strictly on opposite sides.
+  const int sa1 = orient3d(b[0], b[1], b[2], a1) * eye_b, sa2 = orient3d(b[0], b[1], b[2], a2) * eye_b;
+  const int sb1 = orient3d(a[0], a[1], a[2], b1) * eye_a, sb2 = orient3d(a[0], a[1], a[2], b2) * eye_a;
+  if (sa1 * sa2 >= 0 || sb1 * sb2 >= 0) return kNotShared;
+  const Vec3 alpha_near = sa1 > 0 ? a1 : a2, alpha_far = sa1 > 0 ? a2 : a1;
+  const Vec3 beta_near = sb1 > 0 ? b1 : b2, beta_far = sb1 > 0 ? b2 : b1;
+  // x strictly inside the projected angle at p between the rays to u and v.
+  auto inside = [&](Vec3 x, Vec3 u, Vec3 v) {
+    const int su = edge_side(g, p, u, v);
+    return su != 0 && edge_side(g, p, u, x) == su && edge_side(g, p, v, x) == -su;
+  };
+  const bool c1 = inside(beta_far, alpha_near, alpha_far), c2 = inside(alpha_near, beta_near, beta_far);
+  const bool c3 = inside(beta_near, alpha_near, alpha_far), c4 = inside(alpha_far, beta_near, beta_far);
+  if (c1 != c2 || c3 != c4) return 0;  // both segments leave p the same way: they intersect
+  const bool near_overlaps = c1, far_overlaps = c3;  // in H_A, in H_B
+  if (near_overlaps == far_overlaps) return 0;
+  return near_overlaps ? -1 : 1;
+}
+
+int depth_order_impl(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb, bool shortcut) {
+  // B entirely on the far (near) closed side of A's plane: A (B) is in front wherever they
+  // overlap, because every ray meets A's plane once and the eye is on the near side.
+  const int b_side = plane_side_of(g, a, b, nb);
+  if (b_side == kCoplanar) return coplanar_order(g, a, b);
+  if (b_side != 0) return b_side > 0 ? 1 : -1;
+  if (int s = plane_side_of(g, b, a, na)) return s > 0 ? -1 : 1;
+  // Each straddles the other's plane.
+  if (shortcut && na == 3 && nb == 3) {
+    const int r = shared_vertex_order(g, a, b);
+    if (r != kNotShared) return r;
+  }
+  return straddling_order_by_clipping(g, a, na, b, nb);
+}
+
+}  // namespace
+
+int depth_order(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb) {
+  return depth_order_impl(g, a, na, b, nb, true);
+}
+
+int depth_order_by_clipping(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb) {
+  return depth_order_impl(g, a, na, b, nb, false);
 }
 
 }  // namespace vob::xmpvo

@@ -46,7 +46,14 @@ bool projections_overlap(const ViewGeometry& g, const Vec3* a, int na, const Vec
 // equal depth on every ray through the overlap; there the ray leaves the cell of the
 // back-facing face and enters the cell of the front-facing one, so the back-facing face
 // counts as in front: see coplanar_order.
+// Two triangles that share one vertex and straddle each other's planes (faces of a curved
+// boundary around a vertex, seen across a fold) are decided by orientation signs at the
+// shared vertex alone; other straddling pairs by clipping A at B's plane in exact
+// constructions.
 int depth_order(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb);
+// depth_order without the shared-vertex shortcut: every straddling pair clipped (the
+// reference the shortcut is tested against).
+int depth_order_by_clipping(const ViewGeometry& g, const Vec3* a, int na, const Vec3* b, int nb);
 
 // The tie rule for coplanar exterior faces A and B (outward normals by the right-hand
 // rule of their first three vertices) whose projections overlap: -1 when A is back-facing

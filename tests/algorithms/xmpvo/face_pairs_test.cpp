@@ -3,10 +3,13 @@
 // straddle the other's plane, crossing sides; perspective and orthographic.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "algorithms/xmpvo/face_pairs.h"
+#include "harness/geometry/predicates.h"
 
 using namespace vob;
 using namespace vob::xmpvo;
@@ -280,4 +283,63 @@ TEST(FacePairs, CoplanarRuleIsExactOffTheGrid) {
     for (Vec3& p : lifted) p.z = std::nextafter(3.0, 2.0);  // now intersecting the volume below
     EXPECT_EQ(depth_order(g, lifted, 3, top, 3), 1);
   }
+}
+
+// Triangles sharing one vertex and straddling each other's planes take a shortcut (signs at
+// the shared vertex, no construction); it must give the clipping path's answer everywhere,
+// on a small integer grid (exact collinearities, coplanar points, the eye in a face's plane)
+// and off it, in perspective and orthographic views.
+TEST(FacePairs, SharedVertexShortcutAgreesWithClipping) {
+  std::mt19937 rng(20261204);
+  std::uniform_int_distribution<int> grid(-3, 3), eye_xy(-6, 6), eye_z(6, 14), dir_xy(-2, 2);
+  std::uniform_real_distribution<double> unit(-3, 3);
+  int straddling = 0, outcome[3] = {0, 0, 0};
+  for (int trial = 0; trial < 24000; ++trial) {
+    const bool on_grid = trial % 3 != 2;
+    auto point = [&] {
+      return on_grid ? Vec3{double(grid(rng)), double(grid(rng)), double(grid(rng))}
+                     : Vec3{unit(rng), unit(rng), unit(rng)};
+    };
+    const Vec3 p = point();
+    Vec3 a[3] = {p, point(), point()}, b[3] = {point(), p, point()};
+    if (trial % 2) {
+      // A fold seen from above: both planes hold the line through p along x; a's angle at p
+      // holds +x, b's holds -x, and the two angles may overlap on either side or not at all.
+      std::uniform_real_distribution<double> angle(0.05, 3.0), slope(-2, 2);
+      const double k = slope(rng), m = slope(rng);
+      auto at = [&](double t, double r, double h) {
+        return p + Vec3{r * std::cos(t), r * std::sin(t), h * r * std::sin(t)};
+      };
+      // Angles of the other vertices: a's at ta and -ua, b's at pi - tb and pi + ub (each
+      // angle under pi).
+      const double ta = angle(rng), ua = std::min(angle(rng), 3.1 - ta);
+      const double tb = angle(rng), ub = std::min(angle(rng), 3.1 - tb);
+      a[1] = at(ta, 2, k), a[2] = at(-ua, 2, k);
+      b[0] = at(M_PI - tb, 2, m), b[2] = at(M_PI + ub, 2, m);
+    }
+    std::rotate(a, a + trial % 3, a + 3);
+    ViewGeometry g;
+    if (trial % 4 == 3) {
+      g.ortho = true;
+      g.dir = {double(dir_xy(rng)), double(dir_xy(rng)), -1.0 - trial % 2};
+    } else {
+      g.eye = {double(eye_xy(rng)), double(eye_xy(rng)), double(eye_z(rng))};
+      g.dir = {0, 0, -1};
+    }
+    const int fast = depth_order(g, a, 3, b, 3), slow = depth_order_by_clipping(g, a, 3, b, 3);
+    ASSERT_EQ(fast, slow) << "trial " << trial;
+    // The shortcut's case: a's two other vertices on opposite sides of b's plane, b's of a's.
+    const int ip = static_cast<int>(std::find(a, a + 3, p) - a);
+    const bool straddle =
+        orient3d(b[0], b[1], b[2], a[(ip + 1) % 3]) * orient3d(b[0], b[1], b[2], a[(ip + 2) % 3]) < 0 &&
+        orient3d(a[0], a[1], a[2], b[0]) * orient3d(a[0], a[1], a[2], b[2]) < 0;
+    if (straddle) ++straddling, ++outcome[slow + 1];
+  }
+  // The shortcut's own cases, each answer among them.
+  std::printf("straddling pairs %d: A in front %d, undecided %d, B in front %d\n", straddling, outcome[0],
+              outcome[1], outcome[2]);
+  EXPECT_GT(straddling, 8000);
+  EXPECT_GT(outcome[0], 1500);
+  EXPECT_GT(outcome[1], 1500);
+  EXPECT_GT(outcome[2], 1500);
 }
