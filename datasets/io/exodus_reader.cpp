@@ -6,6 +6,7 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtk_exodusII.h>
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -13,6 +14,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <regex>
+#include <vector>
 
 #include "datasets/io/netcdf_prescan.h"
 #include "datasets/io/vtk_shared.h"
@@ -54,11 +57,75 @@ void check_magic(const std::string& path) {
   if (!cdf && !hdf) throw InputError(path, "header", "is not a netCDF or HDF5 file (not Exodus II)");
   if (cdf) prescan_netcdf_classic(path);
 }
+
+// The Exodus library's last error, for a message.
+std::string exodus_error() {
+  const char *msg = nullptr, *func = nullptr;
+  int code = 0;
+  ex_get_err(&msg, &func, &code);
+  if (!msg || !*msg) return "error " + std::to_string(code);
+  // Its messages end with the library's own file handle ("... in file id 65536"): dropped.
+  std::string m = std::regex_replace(std::string(msg), std::regex(" (in|for) file id:? -?[0-9]+"), "");
+  return std::regex_replace(m, std::regex(" +"), " ");
+}
+
+// Every block's and set's parameters read through the Exodus library before VTK's reader
+// asks for them: the reader does not look at the library's status, and one block whose
+// parameters fail (a renamed dimension or "elem_type" attribute: one changed byte) left
+// its sorted block list shorter than its block count (SIGSEGV in
+// vtkExodusIIReaderPrivate::GetSortedObjectInfo). Call with stderr quieted.
+void check_exodus_objects(const std::string& path) {
+  int cpu_word = 8, io_word = 0;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_READ, &cpu_word, &io_word, &version);
+  if (id < 0) throw InputError(path, "file", "the Exodus II library cannot open it: " + exodus_error());
+  struct Close {
+    int id;
+    ~Close() { ex_close(id); }
+  } close{id};
+  ex_set_int64_status(id, EX_ALL_INT64_API);
+  ex_init_params init;
+  if (ex_get_init_ext(id, &init) < 0)
+    throw InputError(path, "header", "the Exodus II library cannot read its sizes: " + exodus_error());
+  struct Kind {
+    ex_entity_type type;
+    ex_inquiry count;
+    const char* name;
+    bool block;
+  };
+  const Kind kinds[] = {
+      {EX_ELEM_BLOCK, EX_INQ_ELEM_BLK, "element block", true}, {EX_EDGE_BLOCK, EX_INQ_EDGE_BLK, "edge block", true},
+      {EX_FACE_BLOCK, EX_INQ_FACE_BLK, "face block", true},    {EX_NODE_SET, EX_INQ_NODE_SETS, "node set", false},
+      {EX_EDGE_SET, EX_INQ_EDGE_SETS, "edge set", false},      {EX_FACE_SET, EX_INQ_FACE_SETS, "face set", false},
+      {EX_SIDE_SET, EX_INQ_SIDE_SETS, "side set", false},      {EX_ELEM_SET, EX_INQ_ELEM_SETS, "element set", false}};
+  for (const Kind& k : kinds) {
+    const int64_t n = ex_inquire_int(id, k.count);
+    if (n <= 0) continue;
+    std::vector<int64_t> ids(static_cast<size_t>(n));
+    if (ex_get_ids(id, k.type, ids.data()) < 0)
+      throw InputError(path, std::string(k.name) + "s", "the Exodus II library cannot read their ids: " + exodus_error());
+    for (const int64_t object : ids) {
+      int status;
+      if (k.block) {
+        char type[MAX_STR_LENGTH + 1] = {};
+        int64_t entries = 0, nodes = 0, edges = 0, faces = 0, attributes = 0;
+        status = ex_get_block(id, k.type, object, type, &entries, &nodes, &edges, &faces, &attributes);
+      } else {
+        int64_t entries = 0, distribution = 0;
+        status = ex_get_set_param(id, k.type, object, &entries, &distribution);
+      }
+      if (status < 0)
+        throw InputError(path, std::string(k.name) + " " + std::to_string(object),
+                         "the Exodus II library cannot read its parameters: " + exodus_error());
+    }
+  }
+}
 }  // namespace
 
 CellMesh read_exodus(const std::string& path, const std::string& variable, std::string* note) {
   check_magic(path);
   QuietStderr quiet;
+  check_exodus_objects(path);
   vtkNew<vtkExodusIIReader> r;
   {
     ScopedCapture capture;

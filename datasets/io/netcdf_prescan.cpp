@@ -25,12 +25,16 @@ class HeaderWalk {
 
   void run() {
     at_ = 4;
-    const uint64_t numrecs = big();  // NON_NEG or STREAMING (all ones): any value is valid
-    (void)numrecs;
+    struct {
+      uint64_t vars = 0, size = 0, begin = UINT64_MAX;
+      bool clamped = false;
+    } records;
+    const uint64_t numrecs = big();  // NON_NEG, or STREAMING (all ones)
     const uint64_t dims = list(kDimension, "dimension list", 8);
+    uint64_t record_dim = dims;  // none
     for (uint64_t i = 0; i < dims; ++i) {
       name("dimension " + std::to_string(i));
-      big();  // its length (0: the record dimension)
+      if (big() == 0) record_dim = i;  // its length (0: the record dimension)
     }
     attributes("global attribute list");
     const uint64_t vars = list(kVariable, "variable list", 24);
@@ -38,18 +42,43 @@ class HeaderWalk {
       const std::string where = "variable " + std::to_string(i);
       name(where);
       const uint64_t rank = count(where + " dimension count", big(), 4);
-      for (uint64_t k = 0; k < rank; ++k)
-        if (const uint64_t id = big(); id >= dims)
+      bool record = false;
+      for (uint64_t k = 0; k < rank; ++k) {
+        const uint64_t id = big();
+        if (id >= dims)
           throw InputError(path_, where, "dimension id " + std::to_string(id) + " is not one of the " +
                                              std::to_string(dims) + " dimensions");
+        record |= k == 0 && id == record_dim;
+      }
       attributes(where + " attribute list");
       type(where);
-      big();                            // vsize
-      version_ == 1 ? u32() : u64();    // begin: 32-bit offsets in CDF-1 only
+      const uint64_t vsize = big();
+      const uint64_t begin = version_ == 1 ? u32() : u64();  // 32-bit offsets in CDF-1 only
+      if (record) {
+        ++records.vars;
+        records.size += vsize;
+        records.begin = std::min(records.begin, begin);
+        records.clamped |= version_ != 5 && vsize == 0xFFFFFFFFu;  // a record over 4 GiB
+      }
     }
+    check_numrecs(numrecs, records);
   }
 
  private:
+  // The record count against the bytes the records can have: VTK's Exodus reader sizes its
+  // time steps by a truncated count and the netCDF library reads them all (one changed
+  // byte of a CDF-5 count crashed it in ncx_getn_double_double). A last record written in
+  // part (no-fill mode) is allowed.
+  template <class Records>
+  void check_numrecs(uint64_t numrecs, const Records& r) const {
+    const uint64_t streaming = version_ == 5 ? UINT64_MAX : 0xFFFFFFFFu;
+    if (numrecs == streaming || r.vars == 0 || r.size == 0 || r.clamped) return;
+    const uint64_t room = r.begin < file_size_ ? (file_size_ - r.begin) / r.size + 1 : 1;
+    if (numrecs > room)
+      throw InputError(path_, "header", "record count " + std::to_string(numrecs) + " of " + std::to_string(r.size) +
+                                            "-byte records cannot fit in the file's " +
+                                            std::to_string(file_size_) + " bytes");
+  }
   uint32_t u32() {
     need(4, "header");
     const unsigned char* p = &b_[at_];
