@@ -17,6 +17,13 @@ constexpr uint64_t kMaxName = 256;  // NC_MAX_NAME
 // Thrown when the walk reaches the end of the bytes read so far and the file has more.
 struct NeedMore {};
 
+// The record variables of a header: how many, the bytes of one record of all of them, where
+// the first begins, and whether a size was clamped (a record over 4 GiB: count unknowable).
+struct RecordVars {
+  uint64_t vars = 0, size = 0, begin = UINT64_MAX;
+  bool clamped = false;
+};
+
 class HeaderWalk {
  public:
   // `bytes`: the first bytes of a file of `file_size` bytes.
@@ -25,10 +32,7 @@ class HeaderWalk {
 
   void run() {
     at_ = 4;
-    struct {
-      uint64_t vars = 0, size = 0, begin = UINT64_MAX;
-      bool clamped = false;
-    } records;
+    RecordVars records;
     const uint64_t numrecs = big();  // NON_NEG, or STREAMING (all ones)
     const uint64_t dims = list(kDimension, "dimension list", 8);
     uint64_t record_dim = dims;  // none
@@ -69,8 +73,7 @@ class HeaderWalk {
   // time steps by a truncated count and the netCDF library reads them all (one changed
   // byte of a CDF-5 count crashed it in ncx_getn_double_double). A last record written in
   // part (no-fill mode) is allowed.
-  template <class Records>
-  void check_numrecs(uint64_t numrecs, const Records& r) const {
+  void check_numrecs(uint64_t numrecs, const RecordVars& r) const {
     const uint64_t streaming = version_ == 5 ? UINT64_MAX : 0xFFFFFFFFu;
     if (numrecs == streaming || r.vars == 0 || r.size == 0 || r.clamped) return;
     const uint64_t room = r.begin < file_size_ ? (file_size_ - r.begin) / r.size + 1 : 1;
