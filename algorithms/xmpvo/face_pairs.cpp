@@ -7,6 +7,7 @@
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Interval_nt.h>
 
+#include "algorithms/xmpvo/bounded_double.h"
 #include "harness/geometry/predicates.h"
 
 namespace vob::xmpvo {
@@ -16,38 +17,6 @@ using EK = CGAL::Exact_predicates_exact_constructions_kernel;
 using EPoint = EK::Point_3;
 
 int sign_of(CGAL::Sign s) { return s == CGAL::POSITIVE ? 1 : (s == CGAL::NEGATIVE ? -1 : 0); }
-
-// Double with a running bound on its rounding error (inputs exact): a value larger than
-// twice its bound has a certain sign. A semi-static filter, far cheaper than switching the
-// rounding mode, and tight where the inputs are close together (mesh coordinates far from
-// the origin), unlike a bound proportional to the summands' magnitudes.
-struct Fd {
-  double v = 0, e = 0;
-  Fd() = default;
-  explicit Fd(double x) : v(x), e(0) {}
-  Fd(double v_, double e_) : v(v_), e(e_) {}
-};
-constexpr double kU = 0x1p-52;  // twice the unit roundoff: also covers rounding of e
-inline Fd operator+(Fd a, Fd b) {
-  const double v = a.v + b.v;
-  return {v, a.e + b.e + kU * std::fabs(v)};
-}
-inline Fd operator-(Fd a, Fd b) {
-  const double v = a.v - b.v;
-  return {v, a.e + b.e + kU * std::fabs(v)};
-}
-inline Fd operator*(Fd a, Fd b) {
-  const double v = a.v * b.v;
-  return {v, std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kU * std::fabs(v)};
-}
-// +1 / -1 when certain, 2 when not (also on overflow, NaN or underflow-sized values).
-inline int certain_sign(Fd x) {
-  if (!(std::fabs(x.v) < 1e280) || !(x.e < 1e280)) return 2;
-  const double bound = 2 * x.e + 1e-290;
-  if (x.v > bound) return 1;
-  if (x.v < -bound) return -1;
-  return 2;
-}
 
 // D(x, y, z) of face_pairs.h in any number type; differences are taken in NT so that the
 // interval and rational evaluations bound resp. equal the exact value.
@@ -86,7 +55,7 @@ int crossing_exact(const ViewGeometry& g, Vec3 a, Vec3 b, Vec3 c, Vec3 d, Vec3 p
   {
     Fd oa;
     const Fd v = crossing_value<Fd>(g, a, b, c, d, p, q, oa);
-    const int sv = certain_sign(v), so = certain_sign(oa);
+    const int sv = fd_sign(v), so = fd_sign(oa);
     if (sv != 2 && so != 2) return sv * so;
   }
   {
@@ -263,7 +232,7 @@ int plane_order_exact(const ViewGeometry& g, const Vec3* a, const Vec3* b, const
   {
     Fd v, da, db;
     plane_order_value<Fd>(g, a, b, crossing, p, v, da, db);
-    const int sv = certain_sign(v), sa = certain_sign(da), sb = certain_sign(db);
+    const int sv = fd_sign(v), sa = fd_sign(da), sb = fd_sign(db);
     if (sv != 2 && sa != 2 && sb != 2) return sv * sa * sb;
   }
   {
@@ -326,7 +295,7 @@ int vertex_side(const VertexRay& r, Vec3 p, Vec3 q) {
   if (!r.crossing) return edge_side(r.g, r.p[0], p, q);
   const Fd oa = fd(r.oa), ob = fd(r.ob);
   const Fd v = oa * det_d<Fd>(r.g, r.p[1], p, q) - ob * det_d<Fd>(r.g, r.p[0], p, q);
-  const int sv = certain_sign(v), so = certain_sign(oa);
+  const int sv = fd_sign(v), so = fd_sign(oa);
   if (sv != 2 && so != 2) return sv * so;
   return crossing_exact(r.g, r.p[0], r.p[1], r.p[2], r.p[3], p, q);
 }
@@ -352,7 +321,7 @@ int vertex_plane_order(const VertexRay& r, const FacePlane& a, const FacePlane& 
   Fd na, da, nb, db;
   param(a, na, da);
   param(b, nb, db);
-  const int sv = certain_sign(na * db - nb * da), sa = certain_sign(da), sb = certain_sign(db);
+  const int sv = fd_sign(na * db - nb * da), sa = fd_sign(da), sb = fd_sign(db);
   if (sv != 2 && sa != 2 && sb != 2) return sv * sa * sb;
   return plane_order_exact(r.g, a.f, b.f, r.crossing ? r.p : nullptr, r.p[0]);
 }

@@ -1,41 +1,15 @@
 // XMPVO's depth keys at one arrangement vertex: where the vertex's ray meets each face's
 // plane, as a fraction num / den in doubles with a running rounding bound (the semi-static
-// filter of face_pairs.cpp), computed once per face and query instead of once per
+// filter of bounded_double.h), computed once per face and query instead of once per
 // comparison. Comparing two keys is then two products; a comparison too close to call
 // returns 2 and the caller asks the exact vertex_plane_order.
 #pragma once
 #include <cmath>
 
+#include "algorithms/xmpvo/bounded_double.h"
 #include "algorithms/xmpvo/face_pairs.h"
 
 namespace vob::xmpvo {
-
-// A double with a bound on its rounding error (inputs exact); the sign is certain when the
-// value exceeds twice the bound.
-struct Fd {
-  double v = 0, e = 0;
-};
-constexpr double kFdU = 0x1p-52;  // twice the unit roundoff: also covers rounding of e
-inline Fd operator+(Fd a, Fd b) {
-  const double v = a.v + b.v;
-  return {v, a.e + b.e + kFdU * std::fabs(v)};
-}
-inline Fd operator-(Fd a, Fd b) {
-  const double v = a.v - b.v;
-  return {v, a.e + b.e + kFdU * std::fabs(v)};
-}
-inline Fd operator*(Fd a, Fd b) {
-  const double v = a.v * b.v;
-  return {v, std::fabs(a.v) * b.e + std::fabs(b.v) * a.e + a.e * b.e + kFdU * std::fabs(v)};
-}
-// +1 / -1 when certain, 2 when not (also on overflow, NaN or underflow-sized values).
-inline int fd_sign(Fd x) {
-  if (!(std::fabs(x.v) < 1e280) || !(x.e < 1e280)) return 2;
-  const double bound = 2 * x.e + 1e-290;
-  if (x.v > bound) return 1;
-  if (x.v < -bound) return -1;
-  return 2;
-}
 
 struct PlaneKey {
   Fd num, den;
