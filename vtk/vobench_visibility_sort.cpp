@@ -108,11 +108,7 @@ bool vobVisibilitySort::SetOrderer(const std::string& spec) {
     this->Fail(e.what());
     return false;
   }
-  this->S->claims = this->S->orderer->claims();
-  this->S->prepared = this->S->has_camera = this->S->failed = false;
-  this->LastError.clear();
-  this->Modified();
-  return true;
+  return this->Adopted();
 }
 
 bool vobVisibilitySort::SetExternalCommand(const std::string& command, double timeout) {
@@ -122,6 +118,10 @@ bool vobVisibilitySort::SetExternalCommand(const std::string& command, double ti
     this->Fail(e.what());
     return false;
   }
+  return this->Adopted();
+}
+
+bool vobVisibilitySort::Adopted() {
   this->S->claims = this->S->orderer->claims();
   this->S->prepared = this->S->has_camera = this->S->failed = false;
   this->LastError.clear();

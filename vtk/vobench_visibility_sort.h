@@ -84,6 +84,8 @@ class vobVisibilitySort : public vtkVisibilitySort {
   bool Prepare(const double* data_to_world);
   bool CurrentCamera(vob::Camera& out, double* data_to_world);
   void Fail(const std::string& message);
+  // After S->orderer was replaced: its claims, nothing prepared, no error. Returns true.
+  bool Adopted();
 
   struct State;
   std::unique_ptr<State> S;
