@@ -15,24 +15,27 @@ void ABuffer::reset(int64_t pixels) {
 }
 
 void ABuffer::gather() {
-  // Counting sort by pixel, stable, straight into the lists (each entry's rank parked in its
-  // `next` until the links are made: one scatter of 16-byte entries, no scratch copy).
+  // Counting sort by pixel straight into the lists (each entry's rank parked in its `next`
+  // until the links are made: one scatter of 16-byte entries, no scratch copy). Each
+  // pixel's count becomes its list's end, and the scatter counts it down to the list's
+  // start: no cursor array to copy. A list comes out in reverse recording order, which
+  // order() does not see (it replays the arrivals by rank).
+  int32_t* end = offsets_.data();
   std::fill(offsets_.begin(), offsets_.end(), 0);
-  each_raw([&](const Raw& r) { ++offsets_[r.pixel + 1]; });
-  for (int64_t p = 0; p < pixels_; ++p) offsets_[p + 1] += offsets_[p];
+  each_raw([&](const Raw& r) { ++end[r.pixel]; });
+  for (int64_t p = 1; p < pixels_; ++p) end[p] += end[p - 1];
+  offsets_[pixels_] = static_cast<int32_t>(entries_);
   list_.resize(static_cast<size_t>(entries_));
-  std::vector<int32_t>& cursor = cursor_;
-  cursor.assign(offsets_.begin(), offsets_.end() - 1);
   PixEntry* list = list_.data();
   // Pixels come at random: the place of the entry kDist ahead is asked for before its
-  // write (its cursor may still move before then; a stale guess only costs a prefetch).
+  // write (its list end may still move before then; a stale guess only costs a prefetch).
   constexpr size_t kDist = 32;
   const auto scatter = [&](const std::vector<Raw>& raw) {
     const size_t n = raw.size();
     for (size_t i = 0; i < n; ++i) {
-      if (i + kDist < n) __builtin_prefetch(&list[cursor[raw[i + kDist].pixel]], 1);
+      if (i + kDist < n) __builtin_prefetch(&list[end[raw[i + kDist].pixel] - 1], 1);
       const Raw& r = raw[i];
-      list[cursor[r.pixel]++] = {r.t, r.item, r.rank};
+      list[--end[r.pixel]] = {r.t, r.item, r.rank};
     }
   };
   scatter(raw_);

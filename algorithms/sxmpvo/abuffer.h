@@ -79,7 +79,7 @@ class ABuffer {
   size_t bytes() const {
     return offsets_.capacity() * sizeof(int32_t) +
            raw_.capacity() * sizeof(Raw) +
-           list_.capacity() * sizeof(PixEntry) + cursor_.capacity() * sizeof(int32_t);
+           list_.capacity() * sizeof(PixEntry);
   }
 
  private:
@@ -95,7 +95,6 @@ class ABuffer {
   std::vector<const std::vector<Raw>*> batches_;  // append()ed, read in place
   std::vector<int32_t> offsets_;   // pixels + 1
   std::vector<PixEntry> list_;     // per pixel, decreasing t
-  std::vector<int32_t> cursor_;    // scratch of finish()
   int64_t head_insertions_ = 0, walk_steps_ = 0;
 };
 
