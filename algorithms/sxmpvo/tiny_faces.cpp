@@ -41,8 +41,22 @@ int entries_scalar(const SampleFrame& fr, const Vec3* v, int phase1_sign, const 
   return n;
 }
 
+// A step's four entries, the lanes of mask `m` first (pixels from `pixel`, the step's first).
+__attribute__((target("avx2"), always_inline)) inline void write_step(__m256d t, int m, int32_t pixel, int32_t item,
+                                                                       int32_t rank, ABuffer::Raw* dst) {
+  alignas(32) double ts[4];
+  alignas(16) int32_t px[4];
+  _mm256_store_pd(ts, RowStepAvx2::compact_t(t, m));
+  _mm_store_si128(reinterpret_cast<__m128i*>(px), _mm_add_epi32(_mm_set1_epi32(pixel), RowStepAvx2::compact_lanes(m)));
+  for (int j = 0; j < 4; ++j) dst[j] = ABuffer::Raw(ts[j], item, px[j], rank);
+}
+
 // The row kernel's steps (row_step_avx2.h) over the box, each step's four entries written
 // whatever its mask (the count steps by the covered ones): no jump per sample or per hit.
+// Entries are placed by the edge tests' mask alone, so the next step's places do not wait
+// for this step's t (a division and a square root); a step where a covered sample's t is
+// not positive and finite (almost never: every vertex is in front of the eye) is written
+// again by the full mask, a jump that is predicted right.
 template <bool kOrtho>
 __attribute__((target("avx2,popcnt"))) int entries_avx2(const SampleFrame& fr, const RowEdges& e, const RowDepth& p,
                                                  const SampleRect& box, int32_t item, int32_t rank,
@@ -56,14 +70,16 @@ __attribute__((target("avx2,popcnt"))) int entries_avx2(const SampleFrame& fr, c
     const __m256d rx = _mm256_set1_pd(row.x), ry = _mm256_set1_pd(row.y), rz = _mm256_set1_pd(row.z);
     for (int sx = box.x0; sx <= box.x1; sx += 4) {
       __m256d t;
-      const int mask = k.step<kOrtho>(rx, ry, rz, cx, cy, cz, sx, box.x1, t);
-      alignas(32) double ts[4];
-      alignas(16) int32_t px[4];
-      _mm256_store_pd(ts, RowStepAvx2::compact_t(t, mask));
-      _mm_store_si128(reinterpret_cast<__m128i*>(px),
-                      _mm_add_epi32(_mm_set1_epi32(sy * cols + sx), RowStepAvx2::compact_lanes(mask)));
-      for (int j = 0; j < 4; ++j) dst[n + j] = ABuffer::Raw(ts[j], item, px[j], rank);
-      n += __builtin_popcount(mask);
+      int inside;
+      const int mask = k.step<kOrtho>(rx, ry, rz, cx, cy, cz, sx, box.x1, t, inside);
+      const int32_t pixel = sy * cols + sx;
+      write_step(t, inside, pixel, item, rank, dst + n);
+      if (__builtin_expect(mask != inside, 0)) {
+        write_step(t, mask, pixel, item, rank, dst + n);
+        n += __builtin_popcount(mask);
+      } else {
+        n += __builtin_popcount(inside);
+      }
     }
   }
   return n;

@@ -50,6 +50,16 @@ struct RowStepAvx2 {
   template <bool kOrtho>
   __attribute__((target("avx2"))) int step(__m256d rx, __m256d ry, __m256d rz, const double* cx, const double* cy,
                                            const double* cz, int sx, int x1, __m256d& t) const {
+    int inside;
+    return step<kOrtho>(rx, ry, rz, cx, cy, cz, sx, x1, t, inside);
+  }
+  // The same, and in `inside` the lanes the edge tests accept. The returned mask is
+  // `inside` less the lanes whose t is not positive and finite, so a caller may place its
+  // entries by `inside`, known long before t (which waits on a division and a square root),
+  // and redo the rare step where the two differ.
+  template <bool kOrtho>
+  __attribute__((target("avx2"))) int step(__m256d rx, __m256d ry, __m256d rz, const double* cx, const double* cy,
+                                           const double* cz, int sx, int x1, __m256d& t, int& inside) const {
     const __m256d zero = _mm256_setzero_pd(), sign = _mm256_set1_pd(-0.0);
     const __m256d X = _mm256_add_pd(rx, _mm256_loadu_pd(cx + sx));
     const __m256d Y = _mm256_add_pd(ry, _mm256_loadu_pd(cy + sx));
@@ -77,6 +87,7 @@ struct RowStepAvx2 {
     }
     const __m256d inf = _mm256_set1_pd(HUGE_VAL);
     ok = _mm256_and_pd(ok, _mm256_cmp_pd(_mm256_andnot_pd(sign, t), inf, _CMP_LT_OQ));  // finite
+    inside = ~_mm256_movemask_pd(out) & 15;
     return _mm256_movemask_pd(_mm256_andnot_pd(out, ok));
   }
 

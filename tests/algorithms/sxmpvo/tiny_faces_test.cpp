@@ -174,6 +174,30 @@ TEST(TinyFaces, LargeOrBehindTheEyeIsNotTiny) {
   EXPECT_EQ(sxmpvo::sample_box(f, q, 3, box), sxmpvo::BoxKind::None);  // no centre inside
 }
 
+// Triangles so far along their sample rays that their normals overflow: the edge tests
+// accept samples (an infinite or NaN edge value rejects nothing) whose t is not finite, so
+// the AVX2 entries, placed by the edge tests first, must take such a step back. Every path
+// gives the rasterizer's samples (none with a finite depth).
+TEST(TinyFaces, AcceptedSamplesWithoutAFiniteDepthGiveNoEntry) {
+  for (bool ortho : {false, true}) {
+    Camera cam = camera(ortho);
+    // Seen along an axis, a point far along a ray keeps its window position exactly.
+    if (ortho) cam.eye = {0, 0, 9}, cam.target = {0, 0, 0}, cam.up = {0, 1, 0};
+    const SampleFrame f(cam, 1);
+    int taken_count = 0;
+    for (double far : {1e155, 1e160, 1e200, 1e300}) {
+      const Vec3 v[3] = {on_ray(f, cam, 49.7, 39.6, far), on_ray(f, cam, 52.4, 40.1, 1.1 * far),
+                         on_ray(f, cam, 50.2, 42.6, 1.2 * far)};
+      bool taken = false;
+      SampleRect box;
+      const Hits h = by_tiny_path(f, v, taken, box);  // checks the AVX2 and scalar entries against these
+      taken_count += taken;
+      if (taken) EXPECT_EQ(h, by_raster(f, v)) << far;
+    }
+    EXPECT_GT(taken_count, 0);
+  }
+}
+
 // The AVX2 setup against the scalar one, bit for bit: random triangles, and triangles with
 // edges along sample rows and columns seen along an axis, where an edge's ownership falls
 // to the second and third of its tests (m . dx == 0 exactly).
