@@ -174,10 +174,11 @@ TEST(TinyFaces, LargeOrBehindTheEyeIsNotTiny) {
   EXPECT_EQ(sxmpvo::sample_box(f, q, 3, box), sxmpvo::BoxKind::None);  // no centre inside
 }
 
-// Triangles so far along their sample rays that their normals overflow: the edge tests
-// accept samples (an infinite or NaN edge value rejects nothing) whose t is not finite, so
-// the AVX2 entries, placed by the edge tests first, must take such a step back. Every path
-// gives the rasterizer's samples (none with a finite depth).
+// Triangles so far along their sample rays that their depth planes overflow: the edge
+// tests accept samples (perspective: edge values that are NaN, which rejects nothing;
+// orthographic: finite edges) whose t is not finite, so the AVX2 entries, placed by the
+// edge tests first, must write such a step again. Every path gives the rasterizer's
+// samples (none: no t is finite).
 TEST(TinyFaces, AcceptedSamplesWithoutAFiniteDepthGiveNoEntry) {
   for (bool ortho : {false, true}) {
     Camera cam = camera(ortho);
