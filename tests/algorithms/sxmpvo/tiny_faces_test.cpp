@@ -175,10 +175,10 @@ TEST(TinyFaces, LargeOrBehindTheEyeIsNotTiny) {
 }
 
 // Triangles so far along their sample rays that their depth planes overflow: the edge
-// tests accept samples (perspective: edge values that are NaN, which rejects nothing;
-// orthographic: finite edges) whose t is not finite, so the AVX2 entries, placed by the
-// edge tests first, must write such a step again. Every path gives the rasterizer's
-// samples (none: no t is finite).
+// tests accept samples (perspective: edge values that overflow, +inf or NaN, which reject
+// nothing; orthographic: finite edges) whose t is not finite, so the AVX2 entries, placed
+// by the edge tests first, must write such a step again. Every path gives the
+// rasterizer's samples (none: no t is finite).
 TEST(TinyFaces, AcceptedSamplesWithoutAFiniteDepthGiveNoEntry) {
   for (bool ortho : {false, true}) {
     Camera cam = camera(ortho);
