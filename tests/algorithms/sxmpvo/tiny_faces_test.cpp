@@ -193,7 +193,9 @@ TEST(TinyFaces, AcceptedSamplesWithoutAFiniteDepthGiveNoEntry) {
       SampleRect box;
       const Hits h = by_tiny_path(f, v, taken, box);  // checks the AVX2 and scalar entries against these
       taken_count += taken;
-      if (taken) EXPECT_EQ(h, by_raster(f, v)) << far;
+      if (taken) {
+        EXPECT_EQ(h, by_raster(f, v)) << far;
+      }
     }
     EXPECT_GT(taken_count, 0);
   }
