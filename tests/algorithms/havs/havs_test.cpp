@@ -96,7 +96,9 @@ TEST_P(HavsMesh, PixelsWithinKAreExactForEveryK) {
     for (int k = 1; k <= 3; ++k) {
       const havs::Analysis a = havs::analyze(fd, cam, order, k);
       for (size_t p = 0; p < a.k_needed.size(); ++p)
-        if (a.k_needed[p] <= k) ASSERT_EQ(a.violating[p], 0) << "pixel " << p << " k " << k;
+        if (a.k_needed[p] <= k) {
+          ASSERT_EQ(a.violating[p], 0) << "pixel " << p << " k " << k;
+        }
       violating_total += a.violating_pixels;
       // Violations only where the stream is more than k out of order.
       EXPECT_LE(a.violating_pixels, a.pixels_k_above(k));

@@ -42,7 +42,9 @@ TEST(StencilXmpvo, ExactAtPixelCentresWhereMpvoncFails) {
       EXPECT_TRUE(is_permutation_of(g.ordering.order, s.num_primitives()));
       EXPECT_EQ(g.ordering.counters.at("exterior_faces"), k.at("exterior_faces"));
     }
-    if (s.name() != "helix") EXPECT_GT(relations, 0) << s.name();
+    if (s.name() != "helix") {
+      EXPECT_GT(relations, 0) << s.name();
+    }
   }
   EXPECT_GT(mpvonc_failures, 0);  // the scenes need the exterior-face relations
 }

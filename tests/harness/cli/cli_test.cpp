@@ -63,7 +63,9 @@ TEST(Cli, ListJsonHasEveryOrdererWithClaimsAndDeclaredParameters) {
       EXPECT_EQ(k.at("default"), 2);
       EXPECT_EQ(k.at("range"), nlohmann::json::array({1, 16}));
     }
-    if (o.at("name") == "xmpvo") EXPECT_EQ(o.at("claims").at("object_exact"), true);
+    if (o.at("name") == "xmpvo") {
+      EXPECT_EQ(o.at("claims").at("object_exact"), true);
+    }
   }
   EXPECT_TRUE(saw_havs);
   EXPECT_FALSE(j.at("datasets").empty());
@@ -227,7 +229,9 @@ TEST(Cli, RunContextSaysHowLargeBlocksAreAllocated) {
     EXPECT_EQ(a["huge_pages"], expect_on) << a.dump();
     EXPECT_EQ(a["kernel_thp"], mode.empty() ? "unknown" : mode) << a.dump();
     EXPECT_EQ(a["min_bytes"], 2 << 20) << a.dump();
-    if (!env.empty()) EXPECT_EQ(a["why_off"], asan ? "not built under AddressSanitizer" : "VOBENCH_HUGE_PAGES=0");
+    if (!env.empty()) {
+      EXPECT_EQ(a["why_off"], asan ? "not built under AddressSanitizer" : "VOBENCH_HUGE_PAGES=0");
+    }
   }
 }
 
