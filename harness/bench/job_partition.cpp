@@ -40,7 +40,7 @@ RecordedTimes RecordedTimes::read(const std::string& path) {
   RecordedTimes t;
   std::error_code ec;
   if (path.empty() || !std::filesystem::is_regular_file(path, ec)) return t;
-  for (const auto& r : ResultsFile::read_all(path)) {
+  for (const auto& r : ResultsFile::read_all(path, /*torn_tail_ok=*/true)) {
     if (!r.is_object() || !r.contains("key") || !r["key"].is_string()) continue;
     const double s = record_seconds(r), u = record_units(r);
     if (!(s > 0)) continue;

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "datasets/datasets.h"
+#include "harness/bench/context.h"
 #include "harness/bench/results.h"
 
 namespace vob {
@@ -115,9 +116,21 @@ KnownRecords KnownRecords::read(const std::string& results_path) {
   KnownRecords k;
   std::error_code ec;
   if (results_path.empty() || !std::filesystem::is_regular_file(results_path, ec)) return k;
-  for (const auto& r : ResultsFile::read_all(results_path)) {
-    if (!r.is_object()) continue;
-    if (r.contains("key") && r["key"].is_string()) k.keys.insert(r["key"].get<std::string>());
+  const std::vector<nlohmann::json> lines = ResultsFile::read_all_lines(results_path, /*torn_tail_ok=*/true);
+  std::map<std::string, std::string> run_revision;  // run_id -> its context's git_sha
+  for (const auto& r : lines)
+    if (r.is_object() && is_context_line(r) && r.contains("run_id") && r["run_id"].is_string() &&
+        r["context"].is_object() && r["context"].contains("git_sha") && r["context"]["git_sha"].is_string())
+      run_revision.emplace(r["run_id"].get<std::string>(), r["context"]["git_sha"].get<std::string>());
+  for (const auto& r : lines) {
+    if (!r.is_object() || is_context_line(r)) continue;
+    if (r.contains("key") && r["key"].is_string()) {
+      k.keys.insert(r["key"].get<std::string>());
+      if (r.contains("run_id") && r["run_id"].is_string()) {
+        const auto it = run_revision.find(r["run_id"].get<std::string>());
+        k.revision.emplace(r["key"].get<std::string>(), it == run_revision.end() ? "" : it->second);
+      }
+    }
     if (!r.contains("dataset") || !r["dataset"].is_string() || !r.contains("n") || !r["n"].is_number()) continue;
     const double n = r["n"].get<double>();
     k.primitives[r["dataset"].get<std::string>()] = n;
@@ -217,6 +230,33 @@ RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords
     for (const Job& j : sceneless_jobs(suite, *p, tags)) add(sceneless, j);
   if (!sceneless.jobs.empty()) plan.datasets.push_back(std::move(sceneless));
   return plan;
+}
+
+std::map<std::string, size_t> done_by_other_revisions(const RunPlan& plan, const KnownRecords& known,
+                                                      const std::string& current, const PlannedJobFilter& take) {
+  std::map<std::string, size_t> others;
+  for (const PlannedDataset& d : plan.datasets)
+    for (const PlannedJob& j : d.jobs) {
+      if (!j.done || (take && !take(d, j))) continue;
+      const auto it = known.revision.find(j.key);
+      const std::string rev = it == known.revision.end() ? "" : it->second;
+      if (rev != current) ++others[rev.empty() ? "unknown" : rev];
+    }
+  return others;
+}
+
+std::string other_revisions_note(const std::map<std::string, size_t>& others, const std::string& current,
+                                 const std::string& to_measure_again) {
+  if (others.empty()) return "";
+  size_t n = 0;
+  std::string revs;
+  for (const auto& [rev, count] : others) {
+    n += count;
+    revs += (revs.empty() ? "" : ", ") + std::to_string(count) + " by " + rev;
+  }
+  return std::to_string(n) + " of the jobs done were measured by other builds (" + revs + "), not by this one (" +
+         (current.empty() ? "unknown" : current) + "): they are kept, and reported under their revision; " +
+         to_measure_again + " measures them again";
 }
 
 }  // namespace vob

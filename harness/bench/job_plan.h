@@ -4,6 +4,7 @@
 // they are the keys the run will use; a dataset's size comes from records of it already in
 // the results file, else from its generator parameters, else it is a guess (said so).
 #pragma once
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
@@ -21,6 +22,8 @@ struct KnownRecords {
   std::map<std::string, double> primitives;  // dataset label -> n
   double seconds = 0, cost = 0;              // calibration: measured seconds and their cost
   size_t timed = 0;                          // records that gave both
+  // key -> the source revision (context git_sha) of the run that wrote it ("" unknown)
+  std::map<std::string, std::string> revision;
   // Nothing when the file does not exist; never creates or writes it.
   static KnownRecords read(const std::string& results_path);
   double seconds_per_unit() const { return cost > 0 ? seconds / cost : 0; }
@@ -67,6 +70,17 @@ struct RunPlan {
 };
 
 RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords& known);
+// Of the jobs the plans find done, those written by a build of another source revision
+// than `current`, counted per revision: a rerun keeps them, so the user is told whose
+// numbers they are.
+// `take` (if set) limits it to the jobs of one part of the run.
+using PlannedJobFilter = std::function<bool(const PlannedDataset&, const PlannedJob&)>;
+std::map<std::string, size_t> done_by_other_revisions(const RunPlan& plan, const KnownRecords& known,
+                                                      const std::string& current, const PlannedJobFilter& take = {});
+// One line for them ("" when there are none): how many, by which revisions, and how to
+// measure them again (`to_measure_again`: "--force", "another -o").
+std::string other_revisions_note(const std::map<std::string, size_t>& others, const std::string& current,
+                                 const std::string& to_measure_again);
 // A dataset's part of the plan again once its scene is made: its real jobs and size.
 PlannedDataset plan_made(const SuiteSpec& suite, const std::string& label, const std::vector<Job>& jobs,
                          double primitives, const KnownRecords& known);

@@ -1,5 +1,7 @@
 #include "harness/bench/results.h"
 
+#include <algorithm>
+
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/stat.h>
@@ -71,7 +73,7 @@ class ResultsFile::Lock {
   ResultsFile& f_;
 };
 
-std::vector<nlohmann::json> ResultsFile::read_all(const std::string& path) {
+std::vector<nlohmann::json> ResultsFile::read_all_lines(const std::string& path, bool torn_tail_ok) {
   std::vector<nlohmann::json> out;
   std::ifstream in(path);
   if (!in) throw InputError(path, "results", "cannot be read");
@@ -80,9 +82,17 @@ std::vector<nlohmann::json> ResultsFile::read_all(const std::string& path) {
   while (std::getline(in, line)) {
     ++n;
     if (blank(line)) continue;
-    nlohmann::json r = parse_json_input(line, path, "line " + std::to_string(n));
-    if (!is_context_line(r)) out.push_back(std::move(r));
+    // getline stopped at the end of the file, not at a newline: the last line is unfinished.
+    if (torn_tail_ok && in.eof() && !nlohmann::json::accept(line)) break;
+    out.push_back(parse_json_input(line, path, "line " + std::to_string(n)));
   }
+  return out;
+}
+
+std::vector<nlohmann::json> ResultsFile::read_all(const std::string& path, bool torn_tail_ok) {
+  std::vector<nlohmann::json> out = read_all_lines(path, torn_tail_ok);
+  out.erase(std::remove_if(out.begin(), out.end(), [](const nlohmann::json& r) { return is_context_line(r); }),
+            out.end());
   return out;
 }
 

@@ -43,7 +43,12 @@ class ResultsFile {
 
   // Every record of a results file, in file order, without the runs' context lines
   // (context.h). InputError for a line that is not JSON.
-  static std::vector<nlohmann::json> read_all(const std::string& path);
+  // `torn_tail_ok`: a last line without its newline that is not JSON (a writer killed
+  // mid-line; the next ResultsFile removes it) is left out instead of refused, for the
+  // readers that plan a run before its writer opens the file.
+  static std::vector<nlohmann::json> read_all(const std::string& path, bool torn_tail_ok = false);
+  // The same with the context lines, where they stand.
+  static std::vector<nlohmann::json> read_all_lines(const std::string& path, bool torn_tail_ok = false);
 
  private:
   class Lock;

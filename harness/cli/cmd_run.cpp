@@ -4,6 +4,9 @@
 #include <filesystem>
 #include <iostream>
 
+#include "harness/bench/job_partition.h"
+#include "harness/bench/job_plan.h"
+#include "harness/bench/resources.h"
 #include "harness/bench/runner.h"
 #include "harness/cli/dry_run.h"
 #include "harness/cli/commands.h"
@@ -96,6 +99,19 @@ Command add_run_command(CLI::App& app) {
     opt.validate_full = *validate == "full";
     opt.progress = [](const std::string& line) { std::cerr << line << std::endl; };
     opt.stop_requested = [] { return StopSignals::received() != 0; };
+    {  // records kept from other builds: say whose numbers they are
+      const std::string revision = source_revision();
+      const KnownRecords known = KnownRecords::read(*out);
+      PlannedJobFilter take;
+      if (opt.take_group)
+        take = [&](const PlannedDataset& d, const PlannedJob& j) {
+          return opt.take_group(group_id(s.name, d.label, j.unit));
+        };
+      const std::string note =
+          other_revisions_note(done_by_other_revisions(plan_run(s, RunTags{}, known), known, revision, take), revision,
+                               "a new -o file");
+      if (!note.empty()) std::cerr << "run " << s.name << ": " << note << "\n";
+    }
     const RunSummary r = run_suite(s, opt);
     std::cerr << "run " << s.name << ": " << r.written << " records written, " << r.skipped
               << " already present, ";

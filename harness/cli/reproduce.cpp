@@ -10,6 +10,7 @@
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/job_partition.h"
 #include "harness/bench/job_plan.h"
+#include "harness/bench/resources.h"
 #include "harness/bench/results.h"
 #include "harness/bench/runner.h"
 #include "harness/cli/dry_run.h"
@@ -29,7 +30,7 @@ std::string results_of(const std::string& dir) { return (fs::path(dir) / "result
 void check_scale_of_folder(const Reproduction& rep, const std::string& results) {
   std::error_code ec;
   if (!fs::exists(results, ec)) return;
-  for (const auto& r : ResultsFile::read_all(results))
+  for (const auto& r : ResultsFile::read_all(results, /*torn_tail_ok=*/true))
     if (r.value("reproduction", "") == rep.name && r.value("scale", "default") != rep.scale)
       throw InputError(results, "records", "hold " + rep.name + "'s records at scale " +
                                                r.value("scale", "default") + ", not " + rep.scale +
@@ -41,11 +42,14 @@ struct PartCount {
   size_t jobs = 0, to_do = 0;
   double cost = 0;
 };
+bool in_part(const RunPart* part, const std::string& suite_name, const PlannedDataset& d, const PlannedJob& j) {
+  return !part || !part->take_group || part->take_group(group_id(suite_name, d.label, j.unit));
+}
 PartCount count_part(const RunPlan& plan, const std::string& suite_name, const RunPart* part) {
   PartCount c;
   for (const PlannedDataset& d : plan.datasets)
     for (const PlannedJob& j : d.jobs)
-      if (!part || !part->take_group || part->take_group(group_id(suite_name, d.label, j.unit))) {
+      if (in_part(part, suite_name, d, j)) {
         ++c.jobs;
         c.to_do += !j.done;
         c.cost += j.done ? 0 : j.cost;
@@ -72,12 +76,23 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
   ProgressTracker tracker(all);
   tracker.set_calibration(known.seconds_per_unit());
   size_t done = 0;
+  const std::string revision = source_revision();
+  std::map<std::string, size_t> others;  // done jobs of other builds, per revision
   for (const SuiteSpec& suite : suites) {
-    const PartCount c = count_part(plan_run(suite, tags, known), tags.suite_name(suite), part);
+    const RunPlan plan = plan_run(suite, tags, known);
+    const std::string suite_name = tags.suite_name(suite);
+    const PartCount c = count_part(plan, suite_name, part);
     tracker.add(c.jobs, c.cost);
     done += c.jobs - c.to_do;
+    for (const auto& [rev, n] : done_by_other_revisions(plan, known, revision,
+                                                         [&](const PlannedDataset& d, const PlannedJob& j) {
+                                                           return in_part(part, suite_name, d, j);
+                                                         }))
+      others[rev] += n;
   }
   std::fprintf(stderr, "%s: %zu jobs, %zu already done\n", name.c_str(), tracker.total(), done);
+  const std::string note = other_revisions_note(others, revision, "--force");
+  if (!note.empty()) std::fprintf(stderr, "%s: %s\n", name.c_str(), note.c_str());
   RunOptions opt;
   opt.results_path = results;
   opt.tags = tags;

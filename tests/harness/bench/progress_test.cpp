@@ -11,6 +11,7 @@
 #include "harness/bench/job_plan.h"
 #include "harness/bench/names.h"
 #include "harness/bench/progress.h"
+#include "harness/bench/resources.h"
 #include "harness/bench/runner.h"
 #include "harness/bench/suite.h"
 #include "harness/scene/input_error.h"
@@ -134,6 +135,49 @@ TEST(Progress, CountsEveryJobAndSkippedOnesAsDone) {
   EXPECT_EQ(known.timed, 30u);
   EXPECT_GT(known.seconds_per_unit(), 0);
   EXPECT_EQ(plan_run(SuiteSpec::from_json(j, "p.json"), RunTags{}, known).to_do(), 0u);
+  // Both runs were this build's.
+  EXPECT_TRUE(done_by_other_revisions(plan_run(SuiteSpec::from_json(j, "p.json"), RunTags{}, known), known,
+                                      source_revision())
+                  .empty());
+}
+
+TEST(JobPlan, DoneJobsOfOtherBuildsAreCountedByRevision) {
+  // Records name their run; the run's context line names the source revision.
+  const fs::path results = scratch("revisions.jsonl");
+  {
+    std::ofstream out(results);
+    out << R"({"key": "context|r1", "type": "context", "run_id": "r1", "context": {"git_sha": "aaa1111"}})" << "\n"
+        << R"({"key": "k1", "run_id": "r1"})" << "\n"
+        << R"({"key": "k2", "run_id": "r1"})" << "\n"
+        << R"({"key": "context|r2", "type": "context", "run_id": "r2", "context": {"git_sha": "bbb2222"}})" << "\n"
+        << R"({"key": "k3", "run_id": "r2"})" << "\n"
+        << R"({"key": "k4", "run_id": "gone"})" << "\n";
+  }
+  const KnownRecords known = KnownRecords::read(results.string());
+  EXPECT_EQ(known.revision.at("k1"), "aaa1111");
+  EXPECT_EQ(known.revision.at("k3"), "bbb2222");
+  EXPECT_EQ(known.revision.at("k4"), "");
+  EXPECT_EQ(known.revision.count("context|r1"), 0u);
+  RunPlan plan;
+  plan.datasets.resize(1);
+  for (const char* key : {"k1", "k2", "k3", "k4", "k5"}) {
+    PlannedJob j;
+    j.key = key;
+    j.done = known.keys.count(key) > 0;
+    plan.datasets[0].jobs.push_back(j);
+  }
+  auto others = done_by_other_revisions(plan, known, "bbb2222");
+  EXPECT_EQ(others.size(), 2u);
+  EXPECT_EQ(others["aaa1111"], 2u);
+  EXPECT_EQ(others["unknown"], 1u);  // a record whose run has no context line
+  EXPECT_TRUE(done_by_other_revisions(plan, known, "bbb2222", [](const PlannedDataset&, const PlannedJob& j) {
+                return j.key == "k3";
+              }).empty());
+  const std::string note = other_revisions_note(others, "bbb2222", "--force");
+  EXPECT_NE(note.find("3 of the jobs done"), std::string::npos) << note;
+  EXPECT_NE(note.find("2 by aaa1111"), std::string::npos) << note;
+  EXPECT_NE(note.find("--force"), std::string::npos) << note;
+  EXPECT_EQ(other_revisions_note({}, "bbb2222", "--force"), "");
 }
 
 TEST(Progress, StatusAndClock) {

@@ -276,3 +276,40 @@ TEST(RunInterrupt, UnwritableResultsFolderIsReportedBeforeAnyWork) {
   EXPECT_EQ(v.output().find("dataset 1/"), std::string::npos) << "work started: " << v.output();
   EXPECT_EQ(std::count(v.output().begin(), v.output().end(), '\n'), 1) << v.output();
 }
+
+// `reproduce` plans the run (what is done, at which scale) before its writer opens the file:
+// a line torn by a kill must not stop it from resuming. And records of another build are
+// kept but named, with how to measure them again.
+TEST(RunInterrupt, ReproduceResumesAfterATornLineAndNamesOtherBuilds) {
+  const fs::path dir = scratch("repro");
+  fs::remove_all(dir);
+  {
+    Vobench v({"reproduce", "quick", "--tiny", "-o", dir.string()});
+    ASSERT_EQ(v.finish(), 0) << v.output();
+  }
+  const fs::path results = dir / "results.jsonl";
+  // As if an older build had written them: its runs' context lines name another revision.
+  std::vector<std::string> lines;
+  {
+    std::ifstream in(results);
+    for (std::string l; std::getline(in, l);) {
+      nlohmann::json j = nlohmann::json::parse(l);
+      if (j.value("type", "") == "context") j["context"]["git_sha"] = "0ld0ld0";
+      lines.push_back(j.dump());
+    }
+  }
+  {
+    std::ofstream out(results, std::ios::trunc);
+    for (const auto& l : lines) out << l << "\n";
+    out << R"({"key": "quick/quick|mpvo|gap)";  // torn by a kill
+  }
+  Vobench v({"reproduce", "quick", "--tiny", "-o", dir.string()});
+  EXPECT_EQ(v.finish(), 0) << v.output();
+  EXPECT_EQ(v.output().find("not valid JSON"), std::string::npos) << v.output();
+  EXPECT_NE(v.output().find("incomplete last line"), std::string::npos) << v.output();
+  EXPECT_NE(v.output().find("measured by other builds"), std::string::npos) << v.output();
+  EXPECT_NE(v.output().find(" by 0ld0ld0), not by this one"), std::string::npos) << v.output();
+  EXPECT_NE(v.output().find("--force measures them again"), std::string::npos) << v.output();
+  // Nothing new was measured: every job was done.
+  EXPECT_NE(v.output().find(" 0 records written"), std::string::npos) << v.output();
+}
