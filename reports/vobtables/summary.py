@@ -11,7 +11,8 @@ from .doc import fmt
 VERDICT = {True: "holds", False: "does not hold", None: "not measured"}
 PAPERS = {"botha": "Botha and Post 2005 (IP-PBTF)", "cook": "Cook, Max, Silva, Williams 2004 (SXMPVO)",
           "havs": "Callahan et al. 2005 (HAVS)", "krishnan": "Krishnan, Silva, Wei 2001",
-          "xmpvo": "Cook et al. 2004 Table 2, Silva et al. 1998, Comba et al. 1999 (XMPVO, BSP-XMPVO)"}
+          "xmpvo": "Cook et al. 2004 Table 2, Silva et al. 1998, Comba et al. 1999 (XMPVO, BSP-XMPVO)",
+          "vobench": "vobench's own speed targets (issue 16), not a paper's"}
 
 
 def counts(rows):
@@ -31,7 +32,8 @@ def write_summary(docs, out_dir, scale):
                          "criterion": c["criterion"]})
     total = counts(rows)
     per_paper = [(p, counts([r for r in rows if r["paper"] == p])) for p in sorted({r["paper"] for r in rows})]
-    title = "vobench: every claim of the four papers" + ("" if scale == "default" else f" ({scale} scale)")
+    title = ("vobench: every claim of the four papers" + (" and vobench's speed targets" if "vobench" in {p for p, _ in docs} else "")
+             + ("" if scale == "default" else f" ({scale} scale)"))
     intro = (f"{len(rows)} claims from {len(docs)} reproductions: {total['holds']} hold, {total['does not hold']} do "
              f"not hold, {total['not measured']} not measured (a record they need is missing). Every verdict is "
              "computed from the records by the criterion shown; each experiment's page (EXPERIMENT.md) has the "
