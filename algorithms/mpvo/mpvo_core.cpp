@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -321,19 +322,42 @@ bool MpvoCore::dfs_from(int32_t root, Ordering& out) {
   return true;
 }
 
+// The root loops look at every cell but start a search at few (sinks are rare, and after
+// the sinks' searches only cells of cycles are left): they skip eight cells a word at a time
+// rather than call dfs_from for each (a call per cell cost about 10% of a frame's DFS).
+namespace {
+constexpr uint64_t kBytes01 = 0x0101010101010101ull;
+uint64_t word_at(const uint8_t* p) {
+  uint64_t w;
+  std::memcpy(&w, p, sizeof w);
+  return w;
+}
+bool has_zero_byte(uint64_t w) { return ((w - kBytes01) & ~w & (kBytes01 << 7)) != 0; }
+}  // namespace
+
 void MpvoCore::dfs_sinks(Ordering& out) {
   const int32_t n = static_cast<int32_t>(num_cells());
-  for (int32_t c = 0; c < n; ++c)
-    if (is_sink(c)) {
-      ++sinks_;
-      dfs_from(c, out);
-    }
+  const uint8_t* outbound = outbound_.data();
+  for (int32_t c0 = 0; c0 < n; c0 += 8) {
+    const int32_t c1 = std::min(n, c0 + 8);
+    if (c1 - c0 == 8 && !has_zero_byte(word_at(outbound + c0))) continue;  // no sink among them
+    for (int32_t c = c0; c < c1; ++c)
+      if (is_sink(c)) {
+        ++sinks_;
+        dfs_from(c, out);
+      }
+  }
 }
 
 void MpvoCore::dfs_unvisited(Ordering& out) {
   const int32_t n = static_cast<int32_t>(num_cells());
-  for (int32_t c = 0; c < n; ++c)
-    if (dfs_from(c, out)) ++cycle_roots_;
+  const uint64_t done = kDone * kBytes01, mask = kStateMask * kBytes01;
+  for (int32_t c0 = 0; c0 < n; c0 += 8) {
+    const int32_t c1 = std::min(n, c0 + 8);
+    if (c1 - c0 == 8 && (word_at(state_.data() + c0) & mask) == done) continue;  // all output
+    for (int32_t c = c0; c < c1; ++c)
+      if (dfs_from(c, out)) ++cycle_roots_;
+  }
 }
 
 void MpvoCore::add_counters(Ordering& out) const {

@@ -86,6 +86,40 @@ TEST(MpvoCore, ExtraRelationsAreEligibleNeighboursAndCyclesAreBroken) {
   }
 }
 
+// The root loops skip eight cells a word at a time: on 21 loose tets (no arrows, so every
+// cell is a sink unless a relation puts something in front of it) the sinks' searches run
+// in id order, and the cycle left for dfs_unvisited lies past the first, fully output word.
+TEST(MpvoCore, RootLoopsFindSinksAndCyclesPastTheFirstWord) {
+  CellMesh mesh = two_loose_tets();
+  for (int k = 1; k < 10; ++k) {
+    CellMesh more = two_loose_tets();
+    for (Vec3& p : more.points) p += Vec3{0, 3.0 * k, 0};
+    mesh = append(mesh, more);
+  }
+  CellMesh last;  // one more tet: 21 cells, a partial last word
+  last.points = {{0, 0, 7}, {1, 0, 7}, {0, 1, 7}, {0, 0, 8}};
+  last.add_cell(CellType::Tetra, {0, 1, 2, 3});
+  mesh = append(mesh, last);
+  Scene s = Scene::from_mesh("loose", mesh);
+  ASSERT_EQ(s.num_primitives(), 21u);
+  mpvo::MpvoCore core;
+  core.bind(s);
+  core.create_partial_order(fibonacci_view(s.bounds(), 1, 0));
+  ASSERT_EQ(core.arrows(), 0);
+  mpvo::ExtraRelations x;
+  x.build_from_pairs(21, {{9, 17}, {17, 9}, {20, 3}});  // a 2-cycle; 3 behind 20
+  Ordering o;
+  core.begin_dfs(o, &x);
+  core.dfs_sinks(o);
+  core.dfs_unvisited(o);
+  core.add_counters(o);
+  EXPECT_EQ(o.order, (std::vector<int32_t>{0, 1, 2, 4, 5, 6, 7, 8, 10, 11, 12, 13, 14, 15, 16, 18, 19, 3, 20,
+                                           17, 9}));
+  EXPECT_EQ(o.counters["sink_cells"], 18);
+  EXPECT_EQ(o.counters["cycle_roots"], 1);
+  EXPECT_EQ(o.cycles.cycles, 1);
+}
+
 // The sparse form (SXMPVO's): the same traversal as the dense one; a second frame with
 // other relations reads no stale span entry of the first.
 TEST(MpvoCore, SparseExtraRelations) {
