@@ -110,12 +110,14 @@ def speed_targets(records, numbers, doc):
                  "one run (ratios from orderers measured in turn frame by frame, one thread unless said), and holds "
                  "on a dataset only when it holds at every view measured. The gmsh-meshed target (SXMPVO at most 1.5 "
                  "times vtk-centroid on component8.step at -clmax 0.4) needs gmsh and its demo files: "
-                 "`tests/benchmarks/gmsh-component8.sh OUT.jsonl`.")
+                 "tests/benchmarks/gmsh-component8.sh OUT.jsonl.")
     doc.conditions = conditions(records, {"machine": "none (these are vobench's own targets)"})
     for t in TARGETS:
         recs = [r for r in records if str(r.get("suite")).split("/")[-1] == t["suite"]]
         table = doc.table(f"{t['what']}: {t['target']}", columns(t),
-                          f"Suite {t['suite']} of this reproduction; times are the median of each record's frames.",
+                          f"Suite {t['suite']} of this reproduction; "
+                          + ("the preprocessing is timed once per dataset (the record's prepare seconds)."
+                             if t["kind"] == "prepare" else "times are the median of each record's frames."),
                           decimals={"ratio": 3})
         rows = dict(m.group(recs, lambda r: r.get("row") or r.get("dataset")))
         for row, rs in rows.items():
