@@ -171,14 +171,14 @@ void Arrangement::index_crossings(const Projection& proj) {
     const double xc = 0.5 * (b.x0 + b.x1), yc = 0.5 * (b.y0 + b.y1);
     const double hw = 0.5 * (b.x1 - b.x0), hh = 0.5 * (b.y1 - b.y0);
     const int32_t e1 = vertices[v].e1, e2 = vertices[v].e2, s1 = fill[e1]++, s2 = fill[e2]++;
-    for (const auto& [e, other, self, partner] : {std::array{e1, e2, s1, s2}, std::array{e2, e1, s2, s1}}) {
+    for (const auto& [e, other, slot] : {std::array{e1, e2, s1}, std::array{e2, e1, s2}}) {
       const auto [ax, ay] = proj.uv[edges[e].first];
       const auto [bx, by] = proj.uv[edges[e].second];
       const double dx = bx - ax, dy = by - ay;
       const double ext = std::fabs(dx) * hw + std::fabs(dy) * hh +
                          1e-14 * (std::fabs(dx) * (std::fabs(xc) + std::fabs(ax)) + std::fabs(dy) * (std::fabs(yc) + std::fabs(ay))) +
                          1e-300;
-      edge_crossings[self] = {dx * (xc - ax) + dy * (yc - ay), ext, static_cast<int32_t>(v), other, self, partner};
+      edge_crossings[slot] = {dx * (xc - ax) + dy * (yc - ay), ext, static_cast<int32_t>(v), other};
     }
   }
 }

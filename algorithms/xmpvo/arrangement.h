@@ -25,7 +25,6 @@ struct ArrVertex {
 struct EdgeCrossing {
   double key, ext;
   int32_t vertex, other;
-  int32_t self, partner;  // its slot in edge_crossings, and the other edge's slot for it
 };
 
 struct Arrangement {

@@ -24,24 +24,11 @@ struct Wedge {
   int32_t pos;  // number of inside faces in front of it
 };
 
-// What the first of a crossing's two sweeps learns for the other: where its edge's faces
-// (at most two, in Arrangement::edge_faces order) go among the faces covering the crossing
-// (both sweeps' lists, without their own edges' faces, are those faces in the same order).
-// Per slot of Arrangement::edge_crossings, written to the other edge's slot; `ready`
-// (released after the data) says it is there.
-struct Handoff {
-  int32_t pos[2];
-};
-struct Handoffs {
-  std::unique_ptr<Handoff[]> data;  // uninitialised where not ready
-  std::unique_ptr<std::atomic<uint8_t>[]> ready;
-};
-
 class Worker {
  public:
   Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane,
-         const std::vector<int32_t>& point_vertex, Handoffs* handoffs)
-      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex), handoffs_(handoffs),
+         const std::vector<int32_t>& point_vertex)
+      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
         face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
         key_(in.ext.face.size()), touch_(in.ext.face.size()) {
     signs_.side = signs_.dis_side = 0;
@@ -102,6 +89,7 @@ class Worker {
   bool start_list(int32_t e);
   bool order_crossings(int32_t e);
   bool cross(int32_t e, const EdgeCrossing& xing);
+  bool swap(int32_t e, const EdgeCrossing& xing);
   void emit_segment();
   int point_side(int32_t x, int32_t p, int32_t q);
   int plane_side(int32_t h, int32_t p);
@@ -116,7 +104,6 @@ class Worker {
   const QueryInput& in_;
   const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
   const std::vector<int32_t>& point_vertex_;  // per exterior point, its vertex id or -1
-  Handoffs* handoffs_;                        // the sweeps' (ready null: none)
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
 

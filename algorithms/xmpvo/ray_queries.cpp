@@ -297,7 +297,7 @@ void QueryStats::add(const QueryStats& x) {
   queries_rechecked += x.queries_rechecked, depth_rechecked += x.depth_rechecked;
   sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
   sweep_fallbacks += x.sweep_fallbacks, depth_plane_sides += x.depth_plane_sides;
-  sweep_handoffs += x.sweep_handoffs, depth_edge_orders += x.depth_edge_orders;
+  sweep_swaps += x.sweep_swaps, depth_edge_orders += x.depth_edge_orders;
   scratch_bytes += x.scratch_bytes;
 }
 
@@ -310,8 +310,7 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   for (int32_t f : in.proj.kept) view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
   std::vector<int32_t> point_vertex(in.ext.points.size(), -1);
   for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
-  detail::Handoffs handoffs;
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex, &handoffs); });
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex); });
   auto queries = [&](size_t v0, size_t v1, bool keep_starts) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
@@ -335,8 +334,6 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
       for (size_t k = 0; k < w.starts_.size(); ++k) start_of[w.starts_[k].vi] = {&w, static_cast<int32_t>(k)};
       w.start_of_ = &start_of;
     }
-    handoffs.data.reset(new detail::Handoff[arr.edge_crossings.size()]);
-    handoffs.ready.reset(new std::atomic<uint8_t>[arr.edge_crossings.size()]());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, arr.edges.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
       for (size_t e = r.begin(); e < r.end(); ++e) w.sweep_edge(static_cast<int32_t>(e));
@@ -351,7 +348,6 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     w.stats_.scratch_bytes = w.bytes();
     stats.add(w.stats_);
   }
-  if (handoffs.ready) stats.scratch_bytes += arr.edge_crossings.size() * (sizeof(detail::Handoff) + 1);
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   return pairs;

@@ -28,6 +28,9 @@ struct QueryInput {
   // Crossings by the edge sweep (edge_sweep.cpp) where the view allows; off: a full query
   // at every vertex (the same relations, for tests and comparisons).
   bool sweep = true;
+  // The exterior surface meets itself only at shared vertices and edges (find_edge_contacts
+  // found no touched edge): the sweep's swaps need no depth comparison (edge_sweep.cpp).
+  bool conforming = false;
 };
 
 struct QueryStats {
@@ -39,10 +42,10 @@ struct QueryStats {
   int64_t side_filtered = 0, side_rechecked = 0, queries_rechecked = 0;
   int64_t depth_rechecked = 0;  // depth comparisons the filtered plane keys left undecided
   // Edges swept, crossings the sweeps passed (two per crossing), edges that fell back to
-  // full queries; sweep depth comparisons decided by the sides of a plane alone; crossings
-  // where a sweep took the entering face's position from the other edge's sweep.
+  // full queries; sweep depth comparisons decided by the sides of a plane alone.
   int64_t sweep_edges = 0, sweep_crossings = 0, sweep_fallbacks = 0, depth_plane_sides = 0;
-  int64_t sweep_handoffs = 0;
+  // Crossings whose entering face took the leaving face's place (edge_sweep.cpp, swap).
+  int64_t sweep_swaps = 0;
   // Sweep depth comparisons of a face of the swept edge with an entering face decided by
   // the orientation of the two edges (edge_sweep.cpp, depth_edges).
   int64_t depth_edge_orders = 0;

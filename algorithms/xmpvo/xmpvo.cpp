@@ -6,6 +6,7 @@
 
 #include "algorithms/mpvo/mpvo_core.h"
 #include "algorithms/xmpvo/arrangement.h"
+#include "algorithms/xmpvo/edge_contacts.h"
 #include "algorithms/xmpvo/face_pairs.h"
 #include "algorithms/xmpvo/projection.h"
 #include "algorithms/xmpvo/ray_queries.h"
@@ -27,9 +28,13 @@ class XmpvoOrderer final : public Orderer {
     core_.prepare(scene, clock);
     core_.set_plain_double_signs(mode_ == Mode::Double);
     { auto p = clock.phase("exterior faces"); ext_ = &scene.exterior_faces(); }
-    auto p = clock.phase("exterior face planes");
-    plane_.resize(ext_->face.size());
-    for (size_t i = 0; i < plane_.size(); ++i) plane_[i] = xmpvo::FacePlane::of(&ext_->corners[4 * i]);
+    {
+      auto p = clock.phase("exterior face planes");
+      plane_.resize(ext_->face.size());
+      for (size_t i = 0; i < plane_.size(); ++i) plane_[i] = xmpvo::FacePlane::of(&ext_->corners[4 * i]);
+    }
+    auto p = clock.phase("exterior edge contacts");
+    contacts_ = xmpvo::find_edge_contacts(*ext_);
     const Aabb box = scene.mesh().bounds();
     centre_ = box.center();
     radius_ = box.radius();
@@ -60,6 +65,7 @@ class XmpvoOrderer final : public Orderer {
   xmpvo::Projection proj_;
   xmpvo::Arrangement arr_;
   xmpvo::QueryStats stats_;
+  xmpvo::EdgeContacts contacts_;  // view-independent, from prepare
   std::vector<std::pair<int32_t, int32_t>> pairs_;
   mpvo::ExtraRelations extra_;
 };
@@ -84,7 +90,8 @@ Ordering XmpvoOrderer::order(const Camera& view, PhaseClock& clock) {
   }
   {
     auto p = clock.phase("ray queries");
-    const xmpvo::QueryInput in{signs_, *ext_, plane_, core_.scene().face_planes(), proj_, arr_};
+    xmpvo::QueryInput in{signs_, *ext_, plane_, core_.scene().face_planes(), proj_, arr_};
+    in.conforming = contacts_.triangles_only && contacts_.touched_edges == 0;
     pairs_ = xmpvo::run_ray_queries(in, stats_);
     signs_.side += stats_.side;
     signs_.dis_side += stats_.dis_side;
@@ -128,7 +135,8 @@ void XmpvoOrderer::add_counters(Ordering& out, int64_t candidates) const {
   k["sweep_crossings"] = static_cast<double>(stats_.sweep_crossings);
   k["sweep_fallbacks"] = static_cast<double>(stats_.sweep_fallbacks);
   k["depth_plane_sides"] = static_cast<double>(stats_.depth_plane_sides);
-  k["sweep_handoffs"] = static_cast<double>(stats_.sweep_handoffs);
+  k["touched_exterior_edges"] = contacts_.triangles_only ? static_cast<double>(contacts_.touched_edges) : -1.0;
+  k["sweep_swaps"] = static_cast<double>(stats_.sweep_swaps);
   k["depth_edge_orders"] = static_cast<double>(stats_.depth_edge_orders);
   k["degenerate_coverage"] = static_cast<double>(stats_.degenerate);
   k["relations"] = static_cast<double>(pairs_.size());

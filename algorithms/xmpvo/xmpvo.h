@@ -68,8 +68,10 @@
 // plane sides, too close to call), queries_rechecked (vertex queries or swept edges with any exact re-check);
 // sweep_edges, sweep_crossings (crossings the sweeps passed, two per crossing),
 // sweep_fallbacks (edges whose crossings got full queries), depth_plane_sides (sweep depth
-// comparisons decided by the sides of a face plane alone), sweep_handoffs (crossings
-// where the second sweep took its entering face's position from the first), depth_edge_orders
+// comparisons decided by the sides of a face plane alone), sweep_swaps (crossings whose
+// entering face took the leaving face's place), touched_exterior_edges (exterior edges an
+// exterior face not having them meets, found in prepare; -1 with quadrilaterals: on 0 the
+// swaps compare no depths), depth_edge_orders
 // (sweep depth comparisons of a face of the swept edge with an entering face, decided by the
 // orientation of the two edges); vertex_queries
 // counts every vertex ray a query or the sweep built.
