@@ -158,6 +158,13 @@ void Arrangement::build_edges(const ExteriorFaces& ext, const Projection& proj) 
 // projected direction, monotone along the exact edge) lies within the box's extent,
 // widened by the rounding.
 void Arrangement::index_crossings(const Projection& proj) {
+  swap_.resize(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const int32_t x = edge_face_off[e];
+    const bool two_sides = edge_face_off[e + 1] - x == 2 &&
+                           edge_face_dir[x] * proj.facing[edge_faces[x]] == -edge_face_dir[x + 1] * proj.facing[edge_faces[x + 1]];
+    swap_[e] = two_sides ? std::array<int32_t, 2>{edge_faces[x], edge_faces[x + 1]} : std::array<int32_t, 2>{-1, -1};
+  }
   edge_vertex_off.assign(edges.size() + 1, 0);
   for (size_t v = projected_vertices; v < vertices.size(); ++v) {
     ++edge_vertex_off[vertices[v].e1 + 1];
@@ -178,9 +185,13 @@ void Arrangement::index_crossings(const Projection& proj) {
       const double ext = std::fabs(dx) * hw + std::fabs(dy) * hh +
                          1e-14 * (std::fabs(dx) * (std::fabs(xc) + std::fabs(ax)) + std::fabs(dy) * (std::fabs(yc) + std::fabs(ay))) +
                          1e-300;
-      edge_crossings[slot] = {dx * (xc - ax) + dy * (yc - ay), ext, static_cast<int32_t>(v), other};
+      edge_crossings[slot] = {dx * (xc - ax) + dy * (yc - ay), ext, static_cast<int32_t>(v), other,
+                              {swap_[other][0], swap_[other][1]}};
     }
   }
+  for (size_t e = 0; e < edges.size(); ++e)
+    std::sort(edge_crossings.begin() + edge_vertex_off[e], edge_crossings.begin() + edge_vertex_off[e + 1],
+              [](const EdgeCrossing& p, const EdgeCrossing& q) { return p.key < q.key; });
 }
 
 // Where the crossing of (a, b) and (c, d) lies in projected doubles: the computed point
@@ -218,7 +229,7 @@ size_t Arrangement::bytes() const {
   return edges.capacity() * 8 + (edge_off.capacity() + edge_items.capacity()) * 4 +
          (edge_face_off.capacity() + edge_faces.capacity() + edge_vertex_off.capacity()) * 4 +
          edge_face_dir.capacity() + edge_crossings.capacity() * sizeof(EdgeCrossing) +
-         vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box);
+         vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box) + swap_.capacity() * 8;
 }
 
 }  // namespace vob::xmpvo

@@ -2,6 +2,7 @@
 // plus the proper crossings of their projected edges, found among edge pairs sharing a
 // bucket (exact crossing test).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -21,10 +22,13 @@ struct ArrVertex {
 
 // A crossing as one of its edges sees it: where it lies along that edge (the vertex box's
 // centre and its extent, both projected on the edge's direction from its first point),
-// the vertex and the other edge. Stored per edge side by side, for the edge sweep.
+// the vertex and the other edge, and the other edge's two faces when it has one on each
+// side (else -1: a silhouette edge, or not two kept faces). Stored per edge side by side,
+// sorted by key, for the edge sweep.
 struct EdgeCrossing {
   double key, ext;
   int32_t vertex, other;
+  int32_t swap[2];
 };
 
 struct Arrangement {
@@ -46,6 +50,7 @@ struct Arrangement {
 
  private:
   std::vector<Box> box_;  // per edge, its projected box
+  std::vector<std::array<int32_t, 2>> swap_;  // per edge, EdgeCrossing::swap
   BucketGrid grid_;       // of the edges
   Box edge_box(const Projection& proj, int32_t e) const;
   void build_edges(const ExteriorFaces& ext, const Projection& proj);

@@ -60,28 +60,21 @@ bool Worker::sweep(int32_t e) {
   swept_ = e;
   if (!order_crossings(e) || !start_list(e)) return false;
   emit_segment();
-  for (const int32_t slot : order_) {
-    if (!cross(e, in_.arr.edge_crossings[slot])) return false;
+  for (int32_t x = in_.arr.edge_vertex_off[e]; x < in_.arr.edge_vertex_off[e + 1]; ++x) {
+    if (!cross(e, in_.arr.edge_crossings[x])) return false;
     // The pairs next to e's faces change only where a face leaves or enters beside them.
     if (beside_) emit_segment();
   }
   return !undecided_;
 }
 
-// The crossings on e from a to b, when their order is certain: their extents along e
-// (Arrangement::index_crossings) are disjoint.
+// The crossings on e from a to b (Arrangement::index_crossings sorts them by key), when
+// their order is certain: their extents along e are disjoint.
 bool Worker::order_crossings(int32_t e) {
   const Arrangement& arr = in_.arr;
-  keys_.clear();
-  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) keys_.push_back({arr.edge_crossings[x].key, x});
-  std::sort(keys_.begin(), keys_.end());
-  order_.clear();
-  for (size_t k = 0; k < keys_.size(); ++k) {
-    if (k > 0) {
-      const EdgeCrossing &p = arr.edge_crossings[keys_[k - 1].second], &q = arr.edge_crossings[keys_[k].second];
-      if (!(p.key + p.ext < q.key - q.ext)) return false;
-    }
-    order_.push_back(keys_[k].second);
+  for (int32_t x = arr.edge_vertex_off[e] + 1; x < arr.edge_vertex_off[e + 1]; ++x) {
+    const EdgeCrossing &p = arr.edge_crossings[x - 1], &q = arr.edge_crossings[x];
+    if (!(p.key + p.ext < q.key - q.ext)) return false;
   }
   return true;
 }
@@ -202,10 +195,8 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
 // must decide instead (which face leaves unknown, a neighbour not confirming).
 bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
-  const int32_t x0 = arr.edge_face_off[xing.other];
-  if (arr.edge_face_off[xing.other + 1] - x0 != 2) return false;
-  const int32_t g0 = arr.edge_faces[x0], g1 = arr.edge_faces[x0 + 1];
-  if (arr.edge_face_dir[x0] * in_.proj.facing[g0] != -arr.edge_face_dir[x0 + 1] * in_.proj.facing[g1]) return false;
+  const int32_t g0 = xing.swap[0], g1 = xing.swap[1];
+  if (g0 < 0) return false;
   const auto it0 = std::find(list_.begin(), list_.end(), g0);
   const auto it1 = std::find(list_.begin(), list_.end(), g1);
   if ((it0 == list_.end()) == (it1 == list_.end())) return false;

@@ -36,7 +36,6 @@ class Worker {
   size_t bytes() const {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
             key_stamp_.capacity() + list_.capacity() + start_inside_.capacity()) * 4 +
-           order_.capacity() * 4 +
            (start_wedges_.capacity() + starts_wedges_.capacity()) * sizeof(Wedge) +
            starts_.capacity() * sizeof(Start) + starts_inside_.capacity() * 4 + plane_memo_key_.capacity() * 9 +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
@@ -124,7 +123,6 @@ class Worker {
   // The sweep's sorted covering faces of the open segment before the current crossing
   // (faces of the swept edge excluded), and the edge's crossings in order.
   std::vector<int32_t> list_;
-  std::vector<int32_t> order_;  // slots of Arrangement::edge_crossings, along the edge
   bool beside_ = false;         // the last crossing changed a neighbour of e's faces
   // The last sweep start: its point, covering faces sorted, and wedges.
   int32_t start_point_ = -1;
