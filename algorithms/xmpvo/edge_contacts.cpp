@@ -114,6 +114,8 @@ EdgeContacts find_edge_contacts(const ExteriorFaces& ext) {
     fb.emplace_back(b, int32_t(f));
   }
   std::vector<uint8_t> touched(edges.size(), 0);
+  // Cutoff 1000: 107-118 ms on the 200k-cell helix, against 296 at CGAL's default of 10
+  // (186-211 at 100, 130-141 at 4000).
   CGAL::box_intersection_d(
       eb.begin(), eb.end(), fb.begin(), fb.end(),
       [&](const IdBox& e, const IdBox& f) {
