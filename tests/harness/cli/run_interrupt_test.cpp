@@ -123,12 +123,20 @@ std::string label_of(const nlohmann::json& r) {
          std::to_string(r["h"].get<int>()) + " t" + std::to_string(r["threads"].get<int>());
 }
 
-// Label -> how many lines of the file hold it; every line must be a whole JSON record.
-std::map<std::string, int> on_disk(const fs::path& results) {
+// Label -> how many lines of the file hold it. Every line must be a whole JSON record,
+// except that where `torn` is given, a last line without its newline is counted there and
+// left out: SIGKILL can stop a write() between two pages of a record (ext4 looks for a
+// fatal signal before each page it copies), which tears the record in progress; the next
+// run removes it.
+std::map<std::string, int> on_disk(const fs::path& results, int* torn = nullptr) {
   std::map<std::string, int> out;
   std::ifstream in(results);
   std::string line;
   while (std::getline(in, line)) {
+    if (torn && in.eof()) {  // getline met the end before a newline
+      ++*torn;
+      break;
+    }
     const auto r = nlohmann::json::parse(line);
     if (r.value("type", "") != "context") ++out[label_of(r)];  // a run's context line
   }
@@ -219,13 +227,15 @@ TEST(RunInterrupt, SigkillLosesAtMostTheRecordInProgress) {
     const Stopped s = run_and_signal(suite, results, after, SIGKILL);
     EXPECT_EQ(s.code, 128 + SIGKILL);
     reported.insert(s.reported.begin(), s.reported.end());
-    const auto disk = on_disk(results);
+    int torn = 0;
+    const auto disk = on_disk(results, &torn);
     EXPECT_EQ(total(disk), int(disk.size())) << "a record is on disk twice";
     int unreported = 0;
     for (const auto& [k, n] : disk) unreported += reported.count(k) == 0;
     for (const auto& l : reported) EXPECT_EQ(disk.count(l), 1u) << "reported but lost: " << l;
-    // Killed between writing a record and printing its line: on disk, not yet reported.
-    EXPECT_LE(unreported, 1);
+    // The record in progress when the kill came: on disk whole but not yet reported (killed
+    // between its write and its line), or torn (killed in its write), or not there.
+    EXPECT_LE(unreported + torn, 1);
     for (const auto& [k, n] : disk) reported.insert(k);
   }
   // A line torn by a kill in the middle of a write: the next run notes it and removes it.
