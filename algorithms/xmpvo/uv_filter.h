@@ -18,8 +18,8 @@ namespace vob::xmpvo {
 using Uv = std::pair<double, double>;
 
 // Sign of orient2d(p, q, x) for x within (rx, ry) of (xx, xy), p and q within s of theirs:
-// +1 / -1 when certain, 2 when not.
-inline int uv_side(double xx, double xy, double rx, double ry, Uv p, Uv q, double s) {
+// +1 / -1 when certain, 0 when not (no branch: for loops whose outcomes are unpredictable).
+inline int uv_sign(double xx, double xy, double rx, double ry, Uv p, Uv q, double s) {
   const double ax = q.first - p.first, ay = q.second - p.second;
   const double bx = xx - p.first, by = xy - p.second;
   const double o = ax * by - ay * bx;
@@ -28,12 +28,17 @@ inline int uv_side(double xx, double xy, double rx, double ry, Uv p, Uv q, doubl
   const double bound = std::fabs(ax) * ey + std::fabs(by) * ea + std::fabs(ay) * ex +
                        std::fabs(bx) * ea + ea * (ex + ey) +
                        1e-15 * (std::fabs(ax * by) + std::fabs(ay * bx));
-  if (o > 1.001 * bound) return 1;
-  if (o < -1.001 * bound) return -1;
-  return 2;
+  return (o > 1.001 * bound) - (o < -1.001 * bound);
+}
+
+// The same, 2 when not certain.
+inline int uv_side(double xx, double xy, double rx, double ry, Uv p, Uv q, double s) {
+  const int sign = uv_sign(xx, xy, rx, ry, p, q, s);
+  return sign != 0 ? sign : 2;
 }
 
 // The same for x itself a projected point (within s).
+inline int uv_sign(Uv x, Uv p, Uv q, double s) { return uv_sign(x.first, x.second, s, s, p, q, s); }
 inline int uv_side(Uv x, Uv p, Uv q, double s) { return uv_side(x.first, x.second, s, s, p, q, s); }
 
 }  // namespace vob::xmpvo
