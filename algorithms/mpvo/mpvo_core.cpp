@@ -43,6 +43,31 @@ void ExtraRelations::build_from_pairs(size_t cells,
   for (const auto& [front, behind_cell] : pairs) behind[fill[front]++] = behind_cell;
 }
 
+void sort_unique_pairs(std::vector<std::pair<int32_t, int32_t>>& pairs, size_t cells) {
+  // Two passes cost O(pairs + cells); std::sort O(pairs log pairs): 291k pairs on 200k cells
+  // (XMPVO, 200k-cell helix) took about 4 times as long by std::sort.
+  if (cells > 4 * pairs.size() + 1024) {
+    std::sort(pairs.begin(), pairs.end());
+  } else {
+    std::vector<std::pair<int32_t, int32_t>> by_second(pairs.size());
+    std::vector<int32_t> start(cells + 1);
+    const auto pass = [&](const std::vector<std::pair<int32_t, int32_t>>& from,
+                          std::vector<std::pair<int32_t, int32_t>>& to, auto id) {
+      std::fill(start.begin(), start.end(), 0);
+      for (const auto& p : from) {
+        const int32_t c = id(p);
+        if (c < 0 || static_cast<size_t>(c) >= cells) throw std::out_of_range("sort_unique_pairs: cell id out of range");
+        ++start[c + 1];
+      }
+      for (size_t c = 0; c < cells; ++c) start[c + 1] += start[c];
+      for (const auto& p : from) to[start[id(p)]++] = p;
+    };
+    pass(pairs, by_second, [](const std::pair<int32_t, int32_t>& p) { return p.second; });
+    pass(by_second, pairs, [](const std::pair<int32_t, int32_t>& p) { return p.first; });
+  }
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+}
+
 void ExtraRelations::clear() {
   offsets.clear();
   behind.clear();

@@ -72,6 +72,11 @@ struct ExtraRelations {
   size_t bytes() const;
 };
 
+// Sorts relation pairs and removes repeats, as std::sort and std::unique would. Where the
+// ids span at most a few times as many values as there are pairs, by two stable counting
+// passes (second id, then first; ids must then be in [0, cells)); else by std::sort.
+void sort_unique_pairs(std::vector<std::pair<int32_t, int32_t>>& pairs, size_t cells);
+
 // The parameters `renumber` (bool, default true), `curve` (hilbert|morton) and
 // `keep_coherent` (bool, default true) of the plugins that renumber through prepare():
 // declared here once for mpvo, mpvonc and sxmpvo. With keep_coherent, prepare renumbers

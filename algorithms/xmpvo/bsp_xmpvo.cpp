@@ -443,8 +443,7 @@ class BspXmpvoOrderer final : public Orderer {
       cell_stamp_[y.cell] = xi;
       pairs_.emplace_back(x.cell, y.cell);
     }
-    std::sort(pairs_.begin(), pairs_.end());
-    pairs_.erase(std::unique(pairs_.begin(), pairs_.end()), pairs_.end());
+    mpvo::sort_unique_pairs(pairs_, core_.num_cells());
     extra_.build_from_pairs(core_.num_cells(), pairs_);
   }
 

@@ -8,6 +8,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include "algorithms/mpvo/mpvo_core.h"
 #include "algorithms/xmpvo/plane_keys.h"
 #include "algorithms/xmpvo/query_worker.h"
 #include "algorithms/xmpvo/uv_filter.h"
@@ -348,8 +349,9 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     w.stats_.scratch_bytes = w.bytes();
     stats.add(w.stats_);
   }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  int32_t last = -1;  // the largest cell id
+  for (const auto& [front, behind] : pairs) last = std::max({last, front, behind});
+  mpvo::sort_unique_pairs(pairs, static_cast<size_t>(last + 1));
   return pairs;
 }
 

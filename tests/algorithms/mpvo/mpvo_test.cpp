@@ -2,6 +2,8 @@
 // relations, cycles broken and reported, deep searches, and the orders MPVO promises.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <random>
 
 #include "algorithms/mpvo/mpvo_core.h"
@@ -44,6 +46,30 @@ TEST(ExtraRelations, BuildsCsrAndNotSinkFlags) {
   EXPECT_EQ(x.behind, (std::vector<int32_t>{1, 0, 3}));
   EXPECT_EQ(x.not_sink, (std::vector<uint8_t>{1, 1, 0, 1}));
   EXPECT_THROW(x.build_from_pairs(2, {{0, 2}}), std::out_of_range);
+}
+
+// Both ways of sort_unique_pairs (counting passes where the ids' range is small, std::sort
+// where it is large) give std::sort + std::unique's pairs; an id out of range is an error.
+TEST(SortUniquePairs, MatchesSortAndUnique) {
+  std::mt19937 rng(7);
+  for (const size_t cells : {size_t(1), size_t(50), size_t(3000), size_t(1) << 20}) {
+    std::vector<std::pair<int32_t, int32_t>> pairs;
+    for (int i = 0; i < 2000; ++i) {
+      const int32_t a = int32_t(rng() % cells), b = int32_t(rng() % cells);
+      pairs.emplace_back(a, b);
+      if (i % 3 == 0) pairs.emplace_back(a, b);  // a repeat
+    }
+    auto expected = pairs;
+    std::sort(expected.begin(), expected.end());
+    expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+    mpvo::sort_unique_pairs(pairs, cells);
+    EXPECT_EQ(pairs, expected) << cells << " cells";
+  }
+  std::vector<std::pair<int32_t, int32_t>> bad{{0, 1}, {2, 0}};
+  EXPECT_THROW(mpvo::sort_unique_pairs(bad, 2), std::out_of_range);
+  std::vector<std::pair<int32_t, int32_t>> none;
+  mpvo::sort_unique_pairs(none, 0);
+  EXPECT_TRUE(none.empty());
 }
 
 TEST(MpvoCore, ExtraRelationsAreEligibleNeighboursAndCyclesAreBroken) {
