@@ -44,8 +44,9 @@ void ExtraRelations::build_from_pairs(size_t cells,
 }
 
 void sort_unique_pairs(std::vector<std::pair<int32_t, int32_t>>& pairs, size_t cells) {
-  // Two passes cost O(pairs + cells); std::sort O(pairs log pairs): 291k pairs on 200k cells
-  // (XMPVO, 200k-cell helix) took about 4 times as long by std::sort.
+  // Two passes cost O(pairs + cells), std::sort O(pairs log pairs). With 291k pairs on 200k
+  // cells (XMPVO, 200k-cell helix, view 4) the ray queries took 145-149 ms with std::sort,
+  // 130-136 with the passes.
   if (cells > 4 * pairs.size() + 1024) {
     std::sort(pairs.begin(), pairs.end());
   } else {
