@@ -162,14 +162,16 @@ class SxmpvoOrderer final : public Orderer {
       PolygonRaster raster;
       const ExteriorFaces& ext = *ext_;
       int64_t tiny = 0;
+      const int8_t* sign = core_.face_signs().data();
+      constexpr size_t kAhead = 16;  // the signs are a miss a face (scattered face ids): asked ahead
       for (size_t i = b * r / runs, end = b * (r + 1) / runs; i < end; ++i) {
-        const int s = core_.face_sign(ext.face[i]);
+        if (i + kAhead < end) __builtin_prefetch(sign + ext.face[i + kAhead]);
+        const int s = sign[ext.face[i]];
         if (s == 0) continue;  // the eye is in its plane: it covers no sample
         const int n = ext.size[i];
-        ProjectedVertex proj[4];
-        for (int v = 0; v < n; ++v) proj[v] = projected_[ext.vertex[4 * i + v]];
+        const int32_t* ids = &ext.vertex[4 * i];
         SampleRect box;
-        const sxmpvo::BoxKind kind = sxmpvo::sample_box(frame, proj, n, box);
+        const sxmpvo::BoxKind kind = sxmpvo::sample_box(frame, projected_.data(), ids, n, box);
         if (kind == sxmpvo::BoxKind::None) continue;
         const int32_t item = ext.cell[i] * 2 + (s > 0 ? 1 : 0), rank = rank_[i];
         const Vec3* corners = &ext.corners[4 * i];
@@ -177,11 +179,14 @@ class SxmpvoOrderer final : public Orderer {
           room(sxmpvo::kTinyEntrySlots);
           used += tiny_entries(frame, corners, s, box, item, rank, batch.data() + used);
           ++tiny;
-        } else if (raster.setup(frame, corners, n, proj)) {
-          raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
-            room(1);
-            batch[used++] = {t, item, static_cast<int32_t>(int64_t(sy) * cols + sx), rank};
-          });
+        } else {
+          ProjectedVertex proj[4];
+          for (int v = 0; v < n; ++v) proj[v] = projected_[ids[v]];
+          if (raster.setup(frame, corners, n, proj))
+            raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
+              room(1);
+              batch[used++] = {t, item, static_cast<int32_t>(int64_t(sy) * cols + sx), rank};
+            });
         }
       }
       batch.resize(used);

@@ -9,15 +9,15 @@
 
 namespace vob::sxmpvo {
 
-// Built for AVX2 too, chosen at load time: there ceil and floor are one instruction each
-// (the baseline's are a dozen); both are exact, so both builds give the same boxes.
-__attribute__((target_clones("avx2", "default"))) BoxKind sample_box(const SampleFrame& frame,
-                                                                     const ProjectedVertex* q, int n,
-                                                                     SampleRect& box) {
+namespace {
+// sample_box's body, vertex i being q(i).
+template <class Q>
+inline BoxKind box_of(const SampleFrame& frame, int n, SampleRect& box, Q q) {
   double lx = 0, hx = 0, ly = 0, hy = 0;
   for (int i = 0; i < n; ++i) {
-    if (!q[i].in_front) return BoxKind::Large;
-    const double x = q[i].x, y = q[i].y;
+    const ProjectedVertex& p = q(i);
+    if (!p.in_front) return BoxKind::Large;
+    const double x = p.x, y = p.y;
     if (i == 0 || x < lx) lx = x;
     if (i == 0 || x > hx) hx = x;
     if (i == 0 || y < ly) ly = y;
@@ -27,6 +27,22 @@ __attribute__((target_clones("avx2", "default"))) BoxKind sample_box(const Sampl
   if (!sample_centres_in(frame, lx, hx, ly, hy, box)) return BoxKind::None;
   const int64_t samples = int64_t(box.x1 - box.x0 + 1) * (box.y1 - box.y0 + 1);
   return samples <= kTinyMaxSamples ? BoxKind::Tiny : BoxKind::Large;
+}
+}  // namespace
+
+// Built for AVX2 too, chosen at load time: there ceil and floor are one instruction each
+// (the baseline's are a dozen); both are exact, so both builds give the same boxes.
+__attribute__((target_clones("avx2", "default"))) BoxKind sample_box(const SampleFrame& frame,
+                                                                     const ProjectedVertex* q, int n,
+                                                                     SampleRect& box) {
+  return box_of(frame, n, box, [&](int i) -> const ProjectedVertex& { return q[i]; });
+}
+
+__attribute__((target_clones("avx2", "default"))) BoxKind sample_box(const SampleFrame& frame,
+                                                                     const ProjectedVertex* all,
+                                                                     const int32_t* ids, int n,
+                                                                     SampleRect& box) {
+  return box_of(frame, n, box, [&](int i) -> const ProjectedVertex& { return all[ids[i]]; });
 }
 
 namespace {

@@ -38,6 +38,9 @@ enum class BoxKind { None, Tiny, Large };
 // Tiny: `box` holds at most kTinyMaxSamples samples; Large: anything else, including a
 // vertex not in front of the eye (then the projection bounds nothing).
 BoxKind sample_box(const SampleFrame& frame, const ProjectedVertex* q, int n, SampleRect& box);
+// The same for the polygon whose vertex i is all[ids[i]] (no copy of its vertices).
+BoxKind sample_box(const SampleFrame& frame, const ProjectedVertex* all, const int32_t* ids, int n,
+                   SampleRect& box);
 
 // Scans the triangle v[0..3) over `box` (from sample_box, every vertex in front of the eye)
 // and calls emit(sx, sy, t) for each covered sample. `phase1_sign` is MpvoCore's sign of

@@ -40,6 +40,15 @@ Hits by_tiny_path(const SampleFrame& f, const Vec3* v, bool& taken, SampleRect& 
   ProjectedVertex q[3];
   for (int i = 0; i < 3; ++i) q[i] = ProjectedVertex::of(f, v[i]);
   const sxmpvo::BoxKind kind = sxmpvo::sample_box(f, q, 3, box);
+  {  // the form SXMPVO calls, vertices by index into all projected points: the same box
+    const ProjectedVertex all[4] = {ProjectedVertex{}, q[2], q[0], q[1]};
+    const int32_t ids[3] = {2, 3, 1};
+    SampleRect by_ids{-7, -7, -7, -7};
+    EXPECT_EQ(sxmpvo::sample_box(f, all, ids, 3, by_ids), kind);
+    if (kind == sxmpvo::BoxKind::Tiny) {  // (a Large box may be unset: a vertex behind the eye)
+      EXPECT_TRUE(by_ids.x0 == box.x0 && by_ids.y0 == box.y0 && by_ids.x1 == box.x1 && by_ids.y1 == box.y1);
+    }
+  }
   taken = kind == sxmpvo::BoxKind::Tiny;
   const int s = phase1_sign(f, v);
   if (taken && s != 0) {
