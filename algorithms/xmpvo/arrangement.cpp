@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "algorithms/xmpvo/uv_filter.h"
 
@@ -155,14 +156,14 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   return candidates;
 }
 
-// Unique projected edges (an edge shared by two exterior faces is one segment), with the
-// kept faces of each.
-void Arrangement::build_edges(const ExteriorFaces& ext, const Projection& proj) {
+// Unique edges (an edge shared by two exterior faces is one segment), with the faces of
+// each, sorted by their points and then by face (as signed below).
+void Arrangement::set_faces(const ExteriorFaces& ext) {
   // Key: the edge's points (smaller first); value: the face, times -1 - 1 when the face
   // has the edge the other way round.
   std::vector<std::pair<uint64_t, int32_t>> keys;
-  keys.reserve(4 * proj.kept.size());
-  for (int32_t i : proj.kept) {
+  keys.reserve(4 * ext.face.size());
+  for (int32_t i = 0, nf = static_cast<int32_t>(ext.face.size()); i < nf; ++i) {
     const int n = ext.size[i];
     for (int k = 0; k < n; ++k) {
       uint32_t a = ext.vertex[4 * i + k], b = ext.vertex[4 * i + (k + 1) % n];
@@ -172,19 +173,54 @@ void Arrangement::build_edges(const ExteriorFaces& ext, const Projection& proj) 
     }
   }
   std::sort(keys.begin(), keys.end());
-  edges.clear();
-  edge_face_off.assign(1, 0);
-  edge_faces.resize(keys.size());
-  edge_face_dir.resize(keys.size());
+  all_edges_.clear();
+  all_face_off_.assign(1, 0);
+  all_faces_.resize(keys.size());
+  all_face_dir_.resize(keys.size());
   for (size_t k = 0; k < keys.size(); ++k) {
     if (k == 0 || keys[k].first != keys[k - 1].first) {
-      edges.push_back({static_cast<int32_t>(keys[k].first >> 32),
-                       static_cast<int32_t>(keys[k].first & 0xffffffffu)});
-      edge_face_off.push_back(edge_face_off.back());
+      all_edges_.push_back({static_cast<int32_t>(keys[k].first >> 32),
+                            static_cast<int32_t>(keys[k].first & 0xffffffffu)});
+      all_face_off_.push_back(all_face_off_.back());
     }
     const int32_t f = keys[k].second;
-    edge_face_dir[edge_face_off.back()] = f < 0 ? -1 : 1;
-    edge_faces[edge_face_off.back()++] = f < 0 ? -1 - f : f;
+    all_face_dir_[all_face_off_.back()] = f < 0 ? -1 : 1;
+    all_faces_[all_face_off_.back()++] = f < 0 ? -1 - f : f;
+  }
+  faces_of_ = &ext;
+  lists_are_all_ = false;
+}
+
+// The projected edges: set_faces' edges with their kept faces, those with none dropped
+// (the same lists a sort of the kept faces' edge keys gives).
+void Arrangement::build_edges(const ExteriorFaces& ext, const Projection& proj) {
+  if (faces_of_ != &ext)
+    throw std::logic_error("xmpvo::Arrangement: build() before set_faces() of these faces");
+  if (proj.kept.size() == ext.face.size()) {  // every face kept: the lists as they are
+    if (!lists_are_all_) {
+      edges = all_edges_;
+      edge_face_off = all_face_off_;
+      edge_faces = all_faces_;
+      edge_face_dir = all_face_dir_;
+      lists_are_all_ = true;
+    }
+    return;
+  }
+  lists_are_all_ = false;
+  const std::vector<int8_t>& facing = proj.facing;  // kept: facing != 0
+  edges.clear();
+  edge_face_off.assign(1, 0);
+  edge_faces.clear();
+  edge_face_dir.clear();
+  for (size_t e = 0; e < all_edges_.size(); ++e) {
+    for (int32_t x = all_face_off_[e]; x < all_face_off_[e + 1]; ++x) {
+      if (facing[all_faces_[x]] == 0) continue;
+      edge_faces.push_back(all_faces_[x]);
+      edge_face_dir.push_back(all_face_dir_[x]);
+    }
+    if (static_cast<int32_t>(edge_faces.size()) == edge_face_off.back()) continue;  // none kept
+    edges.push_back(all_edges_[e]);
+    edge_face_off.push_back(static_cast<int32_t>(edge_faces.size()));
   }
 }
 

@@ -44,11 +44,21 @@ struct Arrangement {
   // Candidate pairs the double filter decided, and those it left to the exact test.
   int64_t crossings_filtered = 0, crossings_rechecked = 0;
 
-  // Returns the number of candidate edge pairs tested.
+  // The unique edges of all of ext's faces, once per mesh (prepare): a view's edges are
+  // those of its kept faces, the same lists filtered (no sort per view).
+  void set_faces(const ExteriorFaces& ext);
+  // Returns the number of candidate edge pairs tested. After set_faces(ext).
   int64_t build(const ExteriorFaces& ext, const Projection& proj, Signs& signs);
   size_t bytes() const;
 
  private:
+  // set_faces' edge lists (as edges, edge_face_off, edge_faces, edge_face_dir) for every
+  // face, and whether the per-view lists hold them unfiltered now.
+  std::vector<std::pair<int32_t, int32_t>> all_edges_;
+  std::vector<int32_t> all_face_off_, all_faces_;
+  std::vector<int8_t> all_face_dir_;
+  const ExteriorFaces* faces_of_ = nullptr;
+  bool lists_are_all_ = false;
   std::vector<Box> box_;  // per edge, its projected box
   std::vector<std::array<int32_t, 2>> swap_;  // per edge, EdgeCrossing::swap
   BucketGrid grid_;       // of the edges

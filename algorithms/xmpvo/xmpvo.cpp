@@ -33,6 +33,7 @@ class XmpvoOrderer final : public Orderer {
       plane_.resize(ext_->face.size());
       for (size_t i = 0; i < plane_.size(); ++i) plane_[i] = xmpvo::FacePlane::of(&ext_->corners[4 * i]);
     }
+    { auto p = clock.phase("exterior edges"); arr_.set_faces(*ext_); }
     auto p = clock.phase("exterior edge contacts");
     contacts_ = xmpvo::find_edge_contacts(*ext_);
     const Aabb box = scene.mesh().bounds();

@@ -31,6 +31,7 @@ Relations relations(const Scene& s, const Camera& view, bool sweep) {
   const Aabb box = s.mesh().bounds();
   proj.run(ext, view, signs, box.center(), box.radius());
   Arrangement arr;
+  arr.set_faces(ext);
   arr.build(ext, proj, signs);
   Relations r;
   QueryInput in{signs, ext, plane, s.face_planes(), proj, arr, sweep};
