@@ -321,7 +321,9 @@ size_t Arrangement::bytes() const {
   return edges.capacity() * 8 + (edge_off.capacity() + edge_items.capacity()) * 4 +
          (edge_face_off.capacity() + edge_faces.capacity() + edge_vertex_off.capacity()) * 4 +
          edge_face_dir.capacity() + edge_crossings.capacity() * sizeof(EdgeCrossing) +
-         vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box) + swap_.capacity() * 8;
+         vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box) + swap_.capacity() * 8 +
+         all_edges_.capacity() * 8 + (all_face_off_.capacity() + all_faces_.capacity()) * 4 +
+         all_face_dir_.capacity();  // set_faces' lists, held for every view
 }
 
 }  // namespace vob::xmpvo
