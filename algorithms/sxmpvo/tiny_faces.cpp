@@ -131,5 +131,6 @@ int entries_avx2_any(const SampleFrame& fr, const Vec3* v, int phase1_sign, cons
 
 TinyEntriesFn tiny_entries() { return cpu_has_avx2() ? &entries_avx2_any : &entries_scalar; }
 TinyEntriesFn tiny_entries_baseline() { return &entries_scalar; }
+TinyEntriesFn tiny_entries_avx2() { return cpu_has_avx2() ? &entries_avx2_any : nullptr; }
 
 }  // namespace vob::sxmpvo

@@ -58,6 +58,7 @@ using TinyEntriesFn = int (*)(const SampleFrame& fr, const Vec3* v, int phase1_s
                               int32_t item, int32_t rank, ABuffer::Raw* dst);
 TinyEntriesFn tiny_entries();           // AVX2 when the CPU has it, else the scalar loop
 TinyEntriesFn tiny_entries_baseline();  // through scan_tiny_triangle (tests compare the two)
+TinyEntriesFn tiny_entries_avx2();      // the AVX2 kernel alone; nullptr without AVX2 (benchmarks)
 
 // The triangle's edges and depth plane as the rasterizer would set them up (false: seen
 // edge-on in an orthographic view, it covers no sample).

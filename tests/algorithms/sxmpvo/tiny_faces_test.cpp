@@ -167,6 +167,42 @@ TEST(TinyFaces, FanAroundASampleVertexDecidedAlike) {
   for (bool ortho : {false, true}) compare_fan(camera(ortho));
 }
 
+// Boxes of every shape the tiny path takes, 1 to 12 samples wide and high, also cut by the
+// frame's right and bottom edges (AVX2 steps past the last column, masked): each kernel
+// gives the rasterizer's samples, in scan order, with the same t bits.
+TEST(TinyFaces, EveryBoxShapeAlike) {
+  for (bool ortho : {false, true}) {
+    const Camera cam = camera(ortho);
+    const SampleFrame f(cam, 1);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int one_step = 0, more_steps = 0, cut = 0;
+    for (int wide = 1; wide <= 12; ++wide)
+      for (int high = 1; high <= 12; ++high)
+        for (int k = 0; k < 6; ++k) {
+          // k 0-3 inside the frame, 4 over its right edge, 5 over its bottom edge.
+          const double x0 = k == 4 ? f.cols() - 3 + u(rng) : 30 + 40 * u(rng);
+          const double y0 = k == 5 ? f.rows() - 3 + u(rng) : 30 + 30 * u(rng);
+          const Vec3 v[3] = {on_ray(f, cam, x0, y0, 4 + u(rng)),
+                             on_ray(f, cam, x0 + wide - 0.2 + 0.4 * u(rng), y0 + high * u(rng), 4 + u(rng)),
+                             on_ray(f, cam, x0 + wide * u(rng), y0 + high - 0.2 + 0.4 * u(rng), 4 + u(rng))};
+          bool taken = false;
+          SampleRect box;
+          const Hits h = by_tiny_path(f, v, taken, box);  // checks every kernel's entries
+          if (!taken) continue;
+          Hits in_box;  // the rasterizer's samples in the box (outside: rounding noise only)
+          for (const auto& [x, y, t] : by_raster(f, v))
+            if (x >= box.x0 && x <= box.x1 && y >= box.y0 && y <= box.y1) in_box.emplace_back(x, y, t);
+          EXPECT_EQ(h, in_box) << wide << "x" << high;
+          const bool wide_box = box.x1 - box.x0 >= 4;  // more than one step a row
+          one_step += !wide_box, more_steps += wide_box, cut += k >= 4;
+        }
+    EXPECT_GT(one_step, 300);
+    EXPECT_GT(more_steps, 250);
+    EXPECT_GT(cut, 200);
+  }
+}
+
 TEST(TinyFaces, LargeOrBehindTheEyeIsNotTiny) {
   const Camera cam = camera(false);
   const SampleFrame f(cam, 1);
