@@ -27,8 +27,8 @@ nlohmann::json run_sorts(Params& p, const ProbeContext& ctx) {
   for (float& k : src) k = u(rng);
   std::vector<havs::KeyId> pairs(n);
   std::vector<float> keys;
-  std::vector<int32_t> ids(n), scratch_ids;
-  std::vector<uint32_t> scratch_keys;
+  std::vector<int32_t> ids(n);
+  std::vector<uint64_t> scratch;
   // Each run sorts a fresh copy of the same keys; the copy is not timed.
   const auto once = [&] {
     if (sort == "radix") {
@@ -42,7 +42,7 @@ nlohmann::json run_sorts(Params& p, const ProbeContext& ctx) {
     else if (sort == "heap") havs::heapsort(pairs);
     else if (sort == "quick") havs::quicksort(pairs);
     else if (sort == "stable") havs::stable_sort(pairs);
-    else radix_sort_by_key(keys, ids, scratch_keys, scratch_ids);
+    else radix_sort_by_key(keys, ids, scratch);
     return std::chrono::duration<double>(Clock::now() - t0).count();
   };
   if (ctx.progress) ctx.progress("sorting " + std::to_string(n) + " keys with " + sort);

@@ -4,69 +4,49 @@
 
 namespace vob {
 
-void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
-                       std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values) {
+void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values, std::vector<uint64_t>& scratch) {
   const size_t n = keys.size();
-  // The transformed keys live in a per-thread buffer reused across calls: a fresh 4n-byte
-  // allocation per call costs page faults comparable to one pass.
-  thread_local std::vector<uint32_t> k;
-  if (k.size() < n) k.resize(n);
-  scratch_keys.resize(n);
-  scratch_values.resize(n);
-  // One pass transforms the keys and counts all four digit histograms.
-  uint32_t hist[4][256] = {};
+  if (n == 0) return;
+  // Each pair moves as one word (sortable key << 32 | value): one store a move, one array
+  // of write streams instead of two; three 11-bit passes instead of four 8-bit ones
+  // (measured against that: docs/design-notes.md, session 49).
+  constexpr int kBits = 11;
+  constexpr uint32_t kMask = (1u << kBits) - 1;
+  if (scratch.size() < 2 * n) scratch.resize(2 * n);
+  uint64_t* src = scratch.data();
+  uint64_t* dst = src + n;
+  // One pass makes the words and counts all three digits.
+  uint32_t hist[3][1u << kBits] = {};
+  uint32_t *h0 = hist[0], *h1 = hist[1], *h2 = hist[2];
   for (size_t i = 0; i < n; ++i) {
     const uint32_t x = float_sort_key(keys[i]);
-    k[i] = x;
-    ++hist[0][x & 0xff];
-    ++hist[1][(x >> 8) & 0xff];
-    ++hist[2][(x >> 16) & 0xff];
-    ++hist[3][x >> 24];
+    src[i] = (uint64_t(x) << 32) | static_cast<uint32_t>(values[i]);
+    ++h0[x & kMask];
+    ++h1[(x >> kBits) & kMask];
+    ++h2[x >> (2 * kBits)];
   }
-  int passes[4], np = 0;
-  for (int pass = 0; pass < 4; ++pass)
-    if (n > 0 && hist[pass][(k[0] >> (8 * pass)) & 0xff] != n) passes[np++] = pass;  // else constant
-  uint32_t* src_k = k.data();
-  uint32_t* dst_k = scratch_keys.data();
-  int32_t* src_v = values.data();
-  int32_t* dst_v = scratch_values.data();
-  bool in_values = true;
-  for (int q = 0; q < np; ++q) {
-    const int pass = passes[q];
+  for (int pass = 0; pass < 3; ++pass) {
     uint32_t* h = hist[pass];
+    const int shift = 32 + kBits * pass;
+    if (h[(src[0] >> shift) & kMask] == n) continue;  // the digit is constant
     uint32_t sum = 0;
-    for (int d = 0; d < 256; ++d) {
+    for (uint32_t d = 0; d <= kMask; ++d) {
       const uint32_t c = h[d];
       h[d] = sum;
       sum += c;
     }
-    const int shift = 8 * pass;
-    if (q + 1 == np && !in_values) {
-      // Last pass lands in the callers' vectors: values directly, keys as floats again.
-      for (size_t i = 0; i < n; ++i) {
-        const uint32_t x = src_k[i];
-        const uint32_t pos = h[(x >> shift) & 0xff]++;
-        const uint32_t u = (x & 0x80000000u) ? (x & 0x7fffffffu) : ~x;
-        std::memcpy(&keys[pos], &u, 4);
-        values[pos] = src_v[i];
-      }
-      return;
-    }
     for (size_t i = 0; i < n; ++i) {
-      const uint32_t pos = h[(src_k[i] >> shift) & 0xff]++;
-      dst_k[pos] = src_k[i];
-      dst_v[pos] = src_v[i];
+      const uint64_t w = src[i];
+      dst[h[(w >> shift) & kMask]++] = w;
     }
-    std::swap(src_k, dst_k);
-    std::swap(src_v, dst_v);
-    in_values = !in_values;
+    std::swap(src, dst);
   }
-  if (!in_values) std::copy(src_v, src_v + n, values.data());
-  // Keys back to floats in sorted order (inverse transform).
+  // Keys back to floats (inverse transform) and the values, in sorted order.
   for (size_t i = 0; i < n; ++i) {
-    uint32_t u = src_k[i];
+    uint32_t u = static_cast<uint32_t>(src[i] >> 32);
     u = (u & 0x80000000u) ? (u & 0x7fffffffu) : ~u;
     std::memcpy(&keys[i], &u, 4);
+    values[i] = static_cast<int32_t>(static_cast<uint32_t>(src[i]));
   }
 }
 
@@ -114,9 +94,8 @@ std::vector<int32_t> radix_argsort_descending(const std::vector<float>& keys) {
     k[i] = -keys[i];
     v[i] = static_cast<int32_t>(i);
   }
-  std::vector<uint32_t> sk;
-  std::vector<int32_t> sv;
-  radix_sort_by_key(k, v, sk, sv);
+  std::vector<uint64_t> scratch;
+  radix_sort_by_key(k, v, scratch);
   return v;
 }
 

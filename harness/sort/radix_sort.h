@@ -1,7 +1,7 @@
-// LSD radix sort of (float key, int32 value) pairs: four 8-bit passes over the
+// LSD radix sort of (float key, int32 value) pairs: three 11-bit passes over words of the
 // order-preserving transform of the float bits (sign bit flipped for positives, all bits for
-// negatives), all four histograms counted in one pass, passes whose digit is constant
-// skipped. Shared by HAVS, the voxel distance sort and KeySort below.
+// negatives) and the value, all three histograms counted in one pass, passes whose digit is
+// constant skipped. Shared by HAVS's sort probe and KeySort below.
 #pragma once
 #include <cstdint>
 #include <cstring>
@@ -16,9 +16,8 @@ inline uint32_t float_sort_key(float f) {
 }
 
 // Sorts `values` by ascending `keys` (stable). Both vectors are permuted in place;
-// `scratch_keys` / `scratch_values` are reused buffers (resized as needed).
-void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values,
-                       std::vector<uint32_t>& scratch_keys, std::vector<int32_t>& scratch_values);
+// `scratch` is a reused buffer (grown to 2 n words as needed).
+void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values, std::vector<uint64_t>& scratch);
 
 // Ids sorted by float keys with the radix sort, buffers kept from frame to frame: what
 // MPVONC's exterior cells and SXMPVO's exterior faces need per view (the centroid orderers
@@ -39,14 +38,11 @@ class KeySort {
     keys.push_back(key);
     ids.push_back(id);
   }
-  void sort() { radix_sort_by_key(keys, ids, scratch_keys_, scratch_ids_); }
-  size_t bytes() const {
-    return (keys.capacity() + ids.capacity() + scratch_keys_.capacity() + scratch_ids_.capacity()) * 4;
-  }
+  void sort() { radix_sort_by_key(keys, ids, scratch_); }
+  size_t bytes() const { return (keys.capacity() + ids.capacity()) * 4 + scratch_.capacity() * 8; }
 
  private:
-  std::vector<uint32_t> scratch_keys_;
-  std::vector<int32_t> scratch_ids_;
+  std::vector<uint64_t> scratch_;
 };
 
 // Double keys (order-preserving 64-bit transform, six 11-bit passes): for references that

@@ -23,9 +23,8 @@ void expect_matches_stable_sort(std::vector<float> keys) {
   std::vector<int32_t> want = ids;
   std::stable_sort(want.begin(), want.end(), [&](int32_t a, int32_t b) { return keys[a] < keys[b]; });
   std::vector<float> k = keys;
-  std::vector<uint32_t> sk;
-  std::vector<int32_t> sv;
-  radix_sort_by_key(k, ids, sk, sv);
+  std::vector<uint64_t> scratch;
+  radix_sort_by_key(k, ids, scratch);
   ASSERT_EQ(ids, want);
   for (size_t i = 0; i < k.size(); ++i) ASSERT_EQ(k[i], keys[want[i]]) << i;
 }
@@ -57,9 +56,8 @@ TEST(RadixSort, NegativeZeroSortsBeforePositiveZero) {
   // The key transform is a total order on the bits: -0 < +0 (std::sort calls them equal).
   std::vector<float> k = {0.0f, -0.0f};
   std::vector<int32_t> v = {0, 1};
-  std::vector<uint32_t> sk;
-  std::vector<int32_t> sv;
-  radix_sort_by_key(k, v, sk, sv);
+  std::vector<uint64_t> scratch;
+  radix_sort_by_key(k, v, scratch);
   EXPECT_EQ(v, (std::vector<int32_t>{1, 0}));
 }
 
