@@ -17,6 +17,8 @@ struct PixEntry {
   double t;
   int32_t item;
   int32_t next;
+  PixEntry() {}  // left unset: gather() writes every entry of a frame's lists
+  PixEntry(double t_, int32_t item_, int32_t next_) : t(t_), item(item_), next(next_) {}
   int32_t cell() const { return item >> 1; }
   bool front() const { return item & 1; }
 };
@@ -62,7 +64,7 @@ class ABuffer {
     gather();
     order(0, pixels_);
   }
-  void gather();                    // every entry into its pixel's list, by rank
+  void gather();                    // every entry into its pixel's list, by rank (once after reset())
   void order(int64_t p0, int64_t p1);  // the lists of pixels [p0, p1) after gather()
   int64_t pixels() const { return pixels_; }
   // First (farthest) entry of a pixel's list, or -1; entries link to the next nearer one.
