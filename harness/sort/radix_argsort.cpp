@@ -5,6 +5,7 @@
 
 #include <sys/mman.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <new>
 #include <numeric>
@@ -22,10 +23,12 @@ constexpr size_t kMinBlock = size_t(1) << 15;  // below this a block is not wort
 // cross memory twice instead of three times (profile of 1M view depths, 24 bits: the three
 // scatters were 2/3 of the centroid frame). Kept while the top digit has <= kMaxDigitBits.
 constexpr int kLowBits = 16;
-// One thread's fused key pass (rooms): 17 low bits, so a 24-bit range of 1M view depths
-// scatters into 128 rooms, not 256: the scatter's write streams cost more than the rooms'
-// larger in-cache sorts (512 rooms: 6-25% slower a frame; 128: 1-7% faster than 256).
-constexpr int kRoomLowBits = 17;
+// One thread's fused key pass (rooms): 15 low bits, so a 24-bit range of 1M view depths
+// scatters into 512 rooms of about 2k words, each sorted in L1. The best count depends on
+// the host: on an AMD EPYC (session 27) 17 bits, 128 rooms, were fastest (512 rooms 6-25%
+// slower a frame, 256 1-7% slower); on an Intel Xeon (48 KiB L1, 2 MiB L2; session 50) 512
+// rooms gave frames about 5% shorter than 128, in both the key pass and the rooms' sorts.
+constexpr int kRoomLowBits = 15;
 static_assert(kRoomLowBits + RadixArgsort::kChunkBits == 32, "a room word: low key bits and id in chunk");
 constexpr size_t kSmallBucket = 48;  // below this a bucket is insertion sorted
 // Ranges of 17 to 22 bits (two 11-bit digits) take the two-level path too from this many
@@ -34,10 +37,9 @@ constexpr size_t kSmallBucket = 48;  // below this a bucket is insertion sorted
 // binade of float: 22 bits, its sort 7.0-8.2 ms against 4.2-4.5 ms on the two-level path).
 constexpr size_t kTwoLevelMinKeys = size_t(1) << 17;
 constexpr int kTopBits = 7;  // the two-level path's smallest top digit (23 bits: as before)
-// One thread's rooms take the fewest top bits the room word allows, down to 32 rooms: a
-// 22-bit range (view 1 of the 1M helix) went from 128 rooms to 32, 23 bits from 128 to 64.
-// Fewer rooms, fewer changes of room between neighbouring cells in the key pass; the
-// rooms' sorts stay in L2 (31k words at 32). Frame minima 3-6% lower on view 1, equal on 0, 2.
+// One thread's rooms take the fewest top bits the room word allows (the range's bits less
+// kRoomLowBits), at least 5: 32 rooms. (Session 30, AMD, 17 low bits: a 22-bit range, view
+// 1 of the 3-view 1M helix, went from 128 rooms to 32 with frame minima 3-6% lower.)
 constexpr int kRoomTopBits = 5;
 
 // Counts of each of the first kPasses digits of (key - mn): table p at c + p * radix.
@@ -125,7 +127,7 @@ void sort_bucket(const uint64_t* src, size_t m, uint32_t mn, int low, int32_t* o
   }
 }
 
-// Sorts one room of the fused key pass by the low `low` (<= 17) bits of (key - mn),
+// Sorts one room of the fused key pass by the low `low` (<= kRoomLowBits) bits of (key - mn),
 // stably, in two passes, and writes its ids to out[0..m). Its words (low key bits <<
 // kChunkBits | id within its chunk) lie in segments by chunk of ids: chunk j's end at ends[j * stride] (the
 // first begins at `begin`); within a segment they are in id order.
@@ -238,16 +240,20 @@ bool RadixArgsort::plan_counts(uint32_t lo, uint32_t hi) {
 }
 
 void RadixArgsort::plan_room() {
-  // A bucket's count is about kSample times its sample's; runs of neighbouring cells make
-  // the estimate err by a few runs, so a quarter more, two samples' worth and a quarter of
-  // an average bucket more (too little: the key pass starts over, costing time, not order).
+  // A bucket's count is about kSample times its sample's count c; runs of neighbouring
+  // cells make the estimate err by a few runs, and independent keys by about sqrt(c)
+  // samples (binomial), which in small buckets is more than a quarter: so the larger of a
+  // quarter more and five standard errors more, two samples' worth and a quarter of an
+  // average bucket (too little: the key pass starts over, costing time, not order).
   const size_t radix = size_t(pre_mask_) + 1;
   const size_t nchunks = (n_ + (size_t(1) << kChunkBits) - 1) >> kChunkBits;
   next_.resize(radix);
   const uint32_t slack = static_cast<uint32_t>(2 * kSample + n_ / (4 * radix));
   uint32_t sum = 0;
   for (size_t d = 0; d < radix; ++d) {
-    const uint32_t c = room_[d], size = c * kSample + c * kSample / 4 + slack;
+    const uint32_t c = room_[d];
+    const uint32_t more = std::max(c / 4, static_cast<uint32_t>(5 * std::sqrt(double(c))) + 1);
+    const uint32_t size = (c + more) * kSample + slack;
     room_[d] = sum;
     next_[d] = uint64_t(size) << 32 | sum;
     sum += size;

@@ -4,7 +4,7 @@
 // 0..n-1 made in the first scatter and the last pass writing the caller's output (no key
 // transform pass, no keys written back, no copy). Ranges of 23 to 27 bits (1M view depths
 // of a mesh span ~24) take one scatter by their top bits (at least 7) and then sort each
-// bucket by its low (at most 16; one thread's fused key pass 17) bits in cache: two trips
+// bucket by its low (at most 16; one thread's fused key pass 15) bits in cache: two trips
 // through memory instead of three;
 // so do ranges of 17 to 22 bits from 2^17 keys on, instead of two 11-bit scatters.
 // Blocks run in parallel with TBB when the global thread limit allows; per-block counts keep
@@ -71,9 +71,9 @@ class RadixArgsort {
   // e.g. from a compact copy of every kSample-th item (a strided read of the items costs a
   // cache miss a sample when they are not in cache).
   static constexpr size_t kSample = 32;  // the fused key pass sizes its buckets from every 32nd key
-  // The fused key pass's ids travel as 15 bits within a chunk of 2^15 ids, beside the
-  // key's low (<= 17) bits: one 32-bit word per key through memory, not a 64-bit pair.
-  static constexpr int kChunkBits = 15;
+  // The fused key pass's ids travel as 17 bits within a chunk of 2^17 ids, beside the
+  // key's low (<= 15) bits: one 32-bit word per key through memory, not a 64-bit pair.
+  static constexpr int kChunkBits = 17;
   template <class KeyOf, class KeysOf, class SampleOf>
   void make_keys_by_runs(size_t n, KeyOf&& key_of, KeysOf&& keys_of, SampleOf&& sample_of, uint32_t lo, uint32_t hi) {
     plan(n);

@@ -54,7 +54,7 @@ TEST(RadixKeyRange, GuessUsedOnlyWhenEveryKeyFallsInside) {
 TEST(RadixKeyRange, SampleThatMisjudgesTheBucketsStartsOver) {
   // Every 32nd key (so every key of the sample, one in 32 or fewer) is the lowest; the rest
   // fill the top bucket, which the sample gave no room: the scatter overflows and the key pass starts over, counting.
-  // 23 bits: rooms by the low 16 bits; 24: by the low 17 (the fallback's buckets too).
+  // 23 and 24 bits: rooms by the low 15 bits, 256 and 512 of them (the fallback's buckets by the low 16).
   for (const uint32_t span : {(1u << 23) - 1, (1u << 24) - 1}) {
     const uint32_t base = 0x40000000u;
     std::vector<uint32_t> keys(200000);
