@@ -1,7 +1,6 @@
 #include "algorithms/sxmpvo/abuffer.h"
 
 #include <algorithm>
-#include <climits>
 
 namespace vob::sxmpvo {
 
@@ -44,34 +43,34 @@ void ABuffer::gather() {
 
 void ABuffer::order(int64_t p0, int64_t p1) {
   PixEntry* list = list_.data();
-  // Inserting a list's entries one by one in rank order (an entry at least as far as the
-  // head becomes the head, any other goes in front of the entries not farther than itself)
-  // leaves them by decreasing t, equal t by decreasing rank: each list is sorted straight
-  // into that order. The replay's counts follow from it: the entries an entry passed on
-  // arrival are the lower-rank ones farther than itself, which are exactly the lower-rank
-  // ones before it (an equal-t entry before it has a higher rank), and it was a head
-  // insertion when it passed none.
+  // Per pixel, by rank (short lists); then, in rank order, insertion one entry at a time
+  // into increasing t, behind every entry not farther than itself (the mirror of "in front
+  // of every entry farther than itself" in a decreasing list); then reversed. A new entry
+  // passes the entries farther than it.
   for (int64_t p = p0; p < p1; ++p) {
     const int32_t b = offsets_[p], e = offsets_[p + 1];
     if (b == e) continue;
     PixEntry* in = list + b;
     const int32_t k = e - b;
-    for (int32_t i = 1; i < k; ++i) {  // ranks are in `next` until the links are made
+    for (int32_t i = 1; i < k; ++i) {  // by rank (in `next`)
       const PixEntry x = in[i];
       int32_t j = i;
-      for (; j > 0 && (in[j - 1].t < x.t || (in[j - 1].t == x.t && in[j - 1].next < x.next)); --j) in[j] = in[j - 1];
+      for (; j > 0 && in[j - 1].next > x.next; --j) in[j] = in[j - 1];
       in[j] = x;
     }
-    int32_t lowest = INT32_MAX;  // the lowest rank before entry i
-    for (int32_t i = 0; i < k; ++i) {
-      const int32_t r = in[i].next;
-      if (r < lowest) {
-        ++head_insertions_;
-        lowest = r;
-      } else {  // rare (under 0.1% of entries on the helices)
-        for (int32_t j = 0; j < i; ++j) walk_steps_ += in[j].next < r;
+    ++head_insertions_;  // the first entry of a list
+    for (int32_t i = 1; i < k; ++i) {  // in place: in[0, i) is the list so far
+      const PixEntry x = in[i];
+      int32_t j = i;
+      while (j > 0 && in[j - 1].t > x.t) {
+        in[j] = in[j - 1];
+        --j;
       }
+      if (j == i) ++head_insertions_;
+      walk_steps_ += i - j;
+      in[j] = x;
     }
+    std::reverse(in, in + k);
     for (int32_t q = b; q < e; ++q) list[q].next = q + 1 < e ? q + 1 : -1;
   }
 }
