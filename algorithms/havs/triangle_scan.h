@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <limits>
 
+#include "harness/cpu_features.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
 
@@ -25,34 +26,52 @@ namespace vob::havs {
 class TriangleScan {
  public:
   // v: the triangle, every vertex in front of the eye. False when it covers no ray.
-  bool setup(const SampleFrame& frame, const Vec3* v) {
+  // portable: the scalar loop for the rows' forms even where the CPU has AVX2 (the same
+  // bits; tests compare).
+  bool setup(const SampleFrame& frame, const Vec3* v, bool portable = false) {
     frame_ = &frame;
     if (!PolygonRaster::depth_plane(frame, v, 3, plane_)) return false;
     if (!PolygonRaster::triangle_edges(frame, v[0], v[1], v[2], e_)) return false;
     const double ymax = frame.rows() + 1.0;
+    if (cpu_has_avx2() && !portable) {
+      rows_avx2(ymax);
+      return true;
+    }
     special_ = false;
+    Rows& r = row_;
     for (int i = 0; i < 3; ++i) {
       const PolygonRaster::Edge& e = e_[i];
-      Row& r = row_[i];
-      r.flat = e.a == 0;
-      special_ |= r.flat;
-      if (r.flat) continue;
+      r.flat[i] = e.a == 0;
+      special_ |= r.flat[i];
+      if (r.flat[i]) continue;
       // lo(y) = (-eta - b y - k) / a and hi(y) = (eta - b y - k) / a as linear forms in y;
       // the slack bounds their rounding (relative to the terms' magnitudes) many times over.
       const double inv_a = 1.0 / e.a;
-      r.slope = e.b * inv_a;
-      r.lo0 = (-e.eta - e.k) * inv_a;
-      r.hi0 = (e.eta - e.k) * inv_a;
-      r.finite = std::isfinite(r.slope) && std::isfinite(r.lo0) && std::isfinite(r.hi0);
+      r.slope[i] = e.b * inv_a;
+      r.lo0[i] = (-e.eta - e.k) * inv_a;
+      r.hi0[i] = (e.eta - e.k) * inv_a;
+      r.finite[i] = std::isfinite(r.slope[i]) && std::isfinite(r.lo0[i]) && std::isfinite(r.hi0[i]);
       const double slack = 1e-12 * (std::fabs(e.b) * ymax + std::fabs(e.k) + e.eta) * std::fabs(inv_a) + 1e-9;
-      r.slack = e.a > 0 ? slack : -slack;
-      r.sign = e.a > 0 ? 1.0 : -1.0;
-      r.off_pos = e.a > 0 ? 0.0 : std::numeric_limits<double>::infinity();
-      r.off_neg = e.a > 0 ? std::numeric_limits<double>::infinity() : 0.0;
-      special_ |= !r.finite;
+      r.slack[i] = e.a > 0 ? slack : -slack;
+      r.sign[i] = e.a > 0 ? 1.0 : -1.0;
+      r.off_pos[i] = e.a > 0 ? 0.0 : std::numeric_limits<double>::infinity();
+      r.off_neg[i] = e.a > 0 ? std::numeric_limits<double>::infinity() : 0.0;
+      special_ |= !r.finite[i];
     }
     return true;
   }
+
+  // The rows' linear forms, per edge i < 3 (lane 3: room for four-lane stores). The fields
+  // of a flat edge (a = 0) mean nothing and are never read. Public so that a test can compare
+  // setup's two loops.
+  struct Rows {
+    double lo0[4], hi0[4], slope[4], slack[4];  // slack signed as a
+    double sign[4];                             // of a
+    double off_pos[4], off_neg[4];  // 0 for the edge's own kind (a > 0: pos), inf else
+    bool flat[3] = {false, false, false}, finite[3] = {true, true, true};
+  };
+  const Rows& rows() const { return row_; }
+  bool special() const { return special_; }
 
   // emit(sx, sy, t, X) for every covered sample of `clip` (within the frame), row by row
   // bottom up, left to right, as PolygonRaster::scan. len: |X| per sample (perspective).
@@ -108,11 +127,11 @@ class TriangleScan {
       const double y = ya + r + 0.5;
       double u_pos = inf, u_neg = inf, w_pos = -inf, w_neg = -inf;
       for (int i = 0; i < 3; ++i) {
-        const Row& e = row_[i];
-        const double lo = e.lo0 - e.slope * y, hi = e.hi0 - e.slope * y;
-        const double u = -e.sign * (lo - e.slack - 0.5), w = e.sign * (hi + e.slack - 0.5);
-        u_pos = std::min(u_pos, u + e.off_pos), u_neg = std::min(u_neg, u + e.off_neg);
-        w_pos = std::max(w_pos, w - e.off_pos), w_neg = std::max(w_neg, w - e.off_neg);
+        const Rows& e = row_;
+        const double lo = e.lo0[i] - e.slope[i] * y, hi = e.hi0[i] - e.slope[i] * y;
+        const double u = -e.sign[i] * (lo - e.slack[i] - 0.5), w = e.sign[i] * (hi + e.slack[i] - 0.5);
+        u_pos = std::min(u_pos, u + e.off_pos[i]), u_neg = std::min(u_neg, u + e.off_neg[i]);
+        w_pos = std::max(w_pos, w - e.off_pos[i]), w_neg = std::max(w_neg, w - e.off_neg[i]);
       }
       p0[r] = std::max(clip.x0, -floor_near(u_pos, lim));
       p1[r] = std::min(clip.x1, floor_near(u_neg, lim));
@@ -129,26 +148,26 @@ class TriangleScan {
     const int lim = frame_->cols();
     for (int i = 0; i < 3; ++i) {
       const PolygonRaster::Edge& e = e_[i];
-      const Row& w = row_[i];
-      if (w.flat) {
+      const Rows& w = row_;
+      if (w.flat[i]) {
         for (int r = 0; r < ny; ++r) {
           const double base = e.b * (ya + r + 0.5) + e.k;
           if (!(base >= -e.eta)) p0[r] = 1, p1[r] = 0;       // no sample on this row
           else if (!(base > e.eta)) c0[r] = 1, c1[r] = 0;    // within eta: exact tests
         }
-      } else if (!w.finite) {
+      } else if (!w.finite[i]) {
         for (int r = 0; r < ny; ++r) c0[r] = 1, c1[r] = 0;
-      } else if (w.slack > 0) {  // a > 0: x >= lo possible, x > hi certain
+      } else if (w.slack[i] > 0) {  // a > 0: x >= lo possible, x > hi certain
         for (int r = 0; r < ny; ++r) {
-          const double y = ya + r + 0.5, lo = w.lo0 - w.slope * y, hi = w.hi0 - w.slope * y;
-          p0[r] = std::max(p0[r], -floor_near(-(lo - w.slack - 0.5), lim));
-          c0[r] = std::max(c0[r], floor_near(hi + w.slack - 0.5, lim) + 1);
+          const double y = ya + r + 0.5, lo = w.lo0[i] - w.slope[i] * y, hi = w.hi0[i] - w.slope[i] * y;
+          p0[r] = std::max(p0[r], -floor_near(-(lo - w.slack[i] - 0.5), lim));
+          c0[r] = std::max(c0[r], floor_near(hi + w.slack[i] - 0.5, lim) + 1);
         }
       } else {  // a < 0: x <= lo possible, x < hi certain
         for (int r = 0; r < ny; ++r) {
-          const double y = ya + r + 0.5, lo = w.lo0 - w.slope * y, hi = w.hi0 - w.slope * y;
-          p1[r] = std::min(p1[r], floor_near(lo - w.slack - 0.5, lim));
-          c1[r] = std::min(c1[r], -floor_near(-(hi + w.slack - 0.5), lim) - 1);
+          const double y = ya + r + 0.5, lo = w.lo0[i] - w.slope[i] * y, hi = w.hi0[i] - w.slope[i] * y;
+          p1[r] = std::min(p1[r], floor_near(lo - w.slack[i] - 0.5, lim));
+          c1[r] = std::min(c1[r], -floor_near(-(hi + w.slack[i] - 0.5), lim) - 1);
         }
       }
     }
@@ -173,13 +192,10 @@ class TriangleScan {
   const SampleFrame* frame_ = nullptr;
   PolygonRaster::DepthPlane plane_;
   PolygonRaster::Edge e_[3];
-  struct Row {
-    double lo0 = 0, hi0 = 0, slope = 0, slack = 0;  // slack signed as a
-    double sign = 1;                     // of a
-    double off_pos = 0, off_neg = 0;     // 0 for the edge's own kind (a > 0: pos), inf else
-    bool flat = false, finite = true;
-  };
-  Row row_[3];
+  // setup's loop with the three edges in AVX2 lanes: the same operations lane by lane (no
+  // FMA), so the same bits in row_ for every edge that is not flat (triangle_scan.cpp).
+  void rows_avx2(double ymax);
+  Rows row_;
   bool special_ = false;  // some edge flat or not finite: row_ranges_any
 };
 

@@ -134,5 +134,76 @@ TEST(HavsTriangleScanRanges, Avx2KernelMatchesTheScalarLoop) {
   EXPECT_GT(certain, 1000);
 }
 
+// setup's AVX2 loop against its scalar loop, bit for bit: every field of every edge that is
+// not flat, the flags and the choice of row_ranges' loop, on every front triangle of every
+// band item of several views, perspective and orthographic, and on edges made flat or
+// degenerate on purpose. Skipped where the CPU has no AVX2.
+TEST(HavsTriangleScanSetup, Avx2LoopMatchesTheScalarLoop) {
+  if (!vob::cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the scalar loop runs";
+  int64_t edges = 0, negative = 0;
+  const auto compare = [&](const SampleFrame& frame, const Vec3* tri, const std::string& where) {
+    havs::TriangleScan fast, portable;
+    const bool ok = fast.setup(frame, tri);
+    ASSERT_EQ(ok, portable.setup(frame, tri, true)) << where;
+    if (!ok) return;
+    const havs::TriangleScan::Rows &f = fast.rows(), &p = portable.rows();
+    ASSERT_EQ(fast.special(), portable.special()) << where;
+    for (int i = 0; i < 3; ++i) {
+      ASSERT_EQ(f.flat[i], p.flat[i]) << where << " edge " << i;
+      if (p.flat[i]) continue;
+      ASSERT_EQ(f.finite[i], p.finite[i]) << where << " edge " << i;
+      const double* fv[] = {f.lo0, f.hi0, f.slope, f.slack, f.sign, f.off_pos, f.off_neg};
+      const double* pv[] = {p.lo0, p.hi0, p.slope, p.slack, p.sign, p.off_pos, p.off_neg};
+      for (int j = 0; j < 7; ++j)
+        ASSERT_EQ(std::memcmp(&fv[j][i], &pv[j][i], sizeof(double)), 0)
+            << where << " edge " << i << " field " << j << ": " << fv[j][i] << " against " << pv[j][i];
+      ++edges;
+      negative += p.sign[i] < 0;
+    }
+  };
+  for (const char* mesh : {"helix", "zoo"}) {
+    const Scene scene = test::small_mesh(mesh);
+    const havs::FaceData fd = havs::build_face_data(scene);
+    const std::vector<Vec3>& points = scene.mesh().points;
+    for (const bool ortho : {false, true})
+      for (int v = 0; v < test::kHavsViews; v += 4) {
+        ViewOptions o;
+        o.width = 160, o.height = 120, o.ortho = ortho;
+        const SampleFrame frame(fibonacci_view(scene.bounds(), test::kHavsViews, v, o), 1);
+        havs::FaceBins b;
+        havs::bin_faces(fd, frame, test::havs_face_order(fd, frame.camera()), b);
+        for (const havs::BandItem& item : b.items) {
+          if (item.ids[3] != havs::kFrontTriangle) continue;
+          const Vec3 tri[3] = {points[item.ids[0]], points[item.ids[1]], points[item.ids[2]]};
+          compare(frame, tri, std::string(mesh) + " view " + std::to_string(v) + (ortho ? " ortho" : ""));
+        }
+      }
+  }
+  // Edges parallel to the sample rows (a = 0: flat) and to the columns, in an orthographic
+  // 16x16 view where pixel (i, j) is centred at world (i - 7.5, j - 7.5).
+  Camera cam;
+  cam.eye = {0, 0, 10};
+  cam.ortho = true;
+  cam.ortho_height = 16;
+  cam.width = cam.height = 16;
+  const SampleFrame frame(cam, 1);
+  int flat = 0, infinite = 0;
+  for (const std::array<Vec3, 3>& tri : {std::array<Vec3, 3>{Vec3{-3, -3, 0}, {4, -3, 0.5}, {0, 5, 1}},
+                                          {Vec3{-3, -3, 0}, {-3, 4, 0.5}, {5, 0, 1}},
+                                          {Vec3{-3.2, 1, 0}, {4.1, 1, 0}, {4.1, 6, 0.2}},
+                                          {Vec3{1e-300, 0, 0}, {2e-300, 0, 0}, {0, 3, 0}},
+                                          // a edge barely off the rows: b / a overflows (not finite)
+                                          {Vec3{-3, 0, 0}, {4, 1e-309, 0.5}, {0, 5, 1}}}) {
+    compare(frame, tri.data(), "constructed");
+    havs::TriangleScan s;
+    if (s.setup(frame, tri.data(), true))
+      for (int i = 0; i < 3; ++i) flat += s.rows().flat[i], infinite += !s.rows().flat[i] && !s.rows().finite[i];
+  }
+  EXPECT_GT(edges, 10000);  // not vacuous
+  EXPECT_GT(negative, 1000);  // both kinds of edge
+  EXPECT_GT(flat, 0);
+  EXPECT_GT(infinite, 0);
+}
+
 }  // namespace
 }  // namespace vob
