@@ -13,6 +13,7 @@
 // perspective, 1/|D| tabled per sample (the same value as before up to double rounding).
 #pragma once
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "algorithms/havs/havs_frame.h"
@@ -96,11 +97,19 @@ void scan_band(const FaceData& fd, const SampleFrame& frame, const FaceBins& b, 
       if (!ts.setup(frame, v)) continue;
       const FaceData::Linear& l1 = fd.scalar[f];
       const double a1 = ortho ? l1.c : l1.c + dot(l1.g, eye), b1 = ortho ? dot(l1.g, fwd) : 0;
-      ts.scan(item.rect.intersect(band), len, [&](int sx, int sy, double t, const Vec3& x) {
-        const double lam = ortho ? 1.0 : t * inv_len[int64_t(sy) * cols + sx];
-        const double s = a1 + b1 * t + lam * dot(l1.g, x);
-        visit((sy - row0) * cols + sx, KEntry{float(t), clamp01(s), tag});
-      });
+      // One instance of the sample loop per kind of frame (no test of the kind per sample).
+      const auto front_scan = [&](auto kind) __attribute__((always_inline)) {
+        constexpr bool kOrtho = decltype(kind)::value;
+        ts.template scan_as<kOrtho>(item.rect.intersect(band), len, [&](int sx, int sy, double t, const Vec3& x) {
+          const double lam = kOrtho ? 1.0 : t * inv_len[int64_t(sy) * cols + sx];
+          const double s = a1 + b1 * t + lam * dot(l1.g, x);
+          visit((sy - row0) * cols + sx, KEntry{float(t), clamp01(s), tag});
+        });
+      };
+      if (ortho)
+        front_scan(std::true_type{});
+      else
+        front_scan(std::false_type{});
       continue;
     }
     for (int i = 0; i < n; ++i) pv[i] = b.projected[item.ids[i]];

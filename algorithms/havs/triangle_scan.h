@@ -79,8 +79,16 @@ class TriangleScan {
   // edges' kinds, which mispredicted; faces are a few rows tall).
   template <class Emit>
   void scan(const SampleRect& clip, const double* len, Emit&& emit) const {
+    if (frame_->ortho())
+      scan_as<true>(clip, len, emit);
+    else
+      scan_as<false>(clip, len, emit);
+  }
+  // scan() for an orthographic (kOrtho) or perspective frame: no test of the kind per sample.
+  template <bool kOrtho, class Emit>
+  void scan_as(const SampleRect& clip, const double* len, Emit&& emit) const {
     const SampleFrame& fr = *frame_;
-    const bool ortho = fr.ortho();
+    constexpr bool ortho = kOrtho;
     const int cols = fr.cols();
     for (int ya = clip.y0; ya <= clip.y1; ya += kRows) {
       const int ny = std::min(clip.y1 - ya + 1, kRows);
