@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstring>
+#include <ostream>
 #include <vector>
 
 #include "algorithms/havs/face_bins.h"
@@ -59,17 +60,22 @@ TEST_P(HavsTriangleScan, SameFragmentsAsPolygonRaster) {
 
 INSTANTIATE_TEST_SUITE_P(Meshes, HavsTriangleScan, ::testing::Values("gap", "helix", "zoo"));
 
-// Samples exactly on edges (the meshes above never put one there): an orthographic 16x16
-// view of z ~ 0 where pixel (i, j) is centred at world (i - 7.5, j - 7.5), a grid of quads
-// with vertices on pixel centres cut along both diagonals, tilted so depths vary. Every
-// sample on a shared edge must go to the same triangle as PolygonRaster decides it.
-TEST(HavsTriangleScanExact, SamplesOnEdgesDecidedAsPolygonRaster) {
+// An orthographic 16x16 view of z ~ 0 where pixel (i, j) is centred at world (i - 7.5, j - 7.5).
+SampleFrame pixel_grid_frame() {
   Camera cam;
   cam.eye = {0, 0, 10};
   cam.ortho = true;
   cam.ortho_height = 16;
   cam.width = cam.height = 16;
-  const SampleFrame frame(cam, 1);
+  return SampleFrame(cam, 1);
+}
+
+// Samples exactly on edges (the meshes above never put one there): an orthographic 16x16
+// view of z ~ 0 where pixel (i, j) is centred at world (i - 7.5, j - 7.5), a grid of quads
+// with vertices on pixel centres cut along both diagonals, tilted so depths vary. Every
+// sample on a shared edge must go to the same triangle as PolygonRaster decides it.
+TEST(HavsTriangleScanExact, SamplesOnEdgesDecidedAsPolygonRaster) {
+  const SampleFrame frame = pixel_grid_frame();
   const auto pt = [](int i, int j) { return Vec3{i - 7.5, j - 7.5, 0.01 * i - 0.02 * j}; };
   int64_t fragments = 0;
   for (int step : {1, 2, 3})
@@ -90,14 +96,20 @@ TEST(HavsTriangleScanExact, SamplesOnEdgesDecidedAsPolygonRaster) {
   EXPECT_GT(fragments, 1000);
 }
 
-// The row ranges' AVX2 kernel (four rows a step) against the scalar loop, bit for bit, on
-// every front triangle of every band item of several views (the fragments above only show
-// that a difference does not change coverage on these meshes; the ranges are the kernel's
-// whole output). Skipped where the CPU has no AVX2.
-TEST(HavsTriangleScanRanges, Avx2KernelMatchesTheScalarLoop) {
-  if (!vob::cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the scalar loop runs";
-  constexpr int R = havs::TriangleScan::kRows;
-  int64_t rows = 0, certain = 0;
+// Where a front triangle comes from, for failure messages.
+struct Where {
+  const char* mesh;
+  int view;
+  bool ortho;
+};
+std::ostream& operator<<(std::ostream& os, const Where& w) {
+  return os << w.mesh << " view " << w.view << (w.ortho ? " ortho" : "");
+}
+
+// visit(frame, tri, item, where) for every front triangle of every band item of the helix
+// and zoo meshes over several views, perspective and orthographic; stops at a fatal failure.
+template <class Visit>
+void for_each_front_triangle(Visit&& visit) {
   for (const char* mesh : {"helix", "zoo"}) {
     const Scene scene = test::small_mesh(mesh);
     const havs::FaceData fd = havs::build_face_data(scene);
@@ -112,24 +124,38 @@ TEST(HavsTriangleScanRanges, Avx2KernelMatchesTheScalarLoop) {
         for (const havs::BandItem& item : b.items) {
           if (item.ids[3] != havs::kFrontTriangle) continue;
           const Vec3 tri[3] = {points[item.ids[0]], points[item.ids[1]], points[item.ids[2]]};
-          havs::TriangleScan ts;
-          if (!ts.setup(frame, tri)) continue;
-          // Row blocks of every height from the rectangle's bottom (the kernel's last step
-          // is partial unless ny is a multiple of 4).
-          for (int ny = 1; ny <= R; ny += 5) {
-            int s[4][R], a[4][R];
-            ts.row_ranges(item.rect.y0, ny, item.rect, s[0], s[1], s[2], s[3], true);
-            ts.row_ranges(item.rect.y0, ny, item.rect, a[0], a[1], a[2], a[3]);
-            for (int r = 0; r < ny; ++r) {
-              for (int j = 0; j < 4; ++j)
-                ASSERT_EQ(s[j][r], a[j][r]) << mesh << " view " << v << " row " << r << " bound " << j;
-              certain += s[2][r] <= s[3][r];
-            }
-            rows += ny;
-          }
+          visit(frame, tri, item, Where{mesh, v, ortho});
+          if (::testing::Test::HasFatalFailure()) return;
         }
       }
   }
+}
+
+// The row ranges' AVX2 kernel (four rows a step) against the scalar loop, bit for bit, on
+// every front triangle of every band item of several views (the fragments above only show
+// that a difference does not change coverage on these meshes; the ranges are the kernel's
+// whole output). Skipped where the CPU has no AVX2.
+TEST(HavsTriangleScanRanges, Avx2KernelMatchesTheScalarLoop) {
+  if (!vob::cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the scalar loop runs";
+  constexpr int R = havs::TriangleScan::kRows;
+  int64_t rows = 0, certain = 0;
+  for_each_front_triangle([&](const SampleFrame& frame, const Vec3* tri, const havs::BandItem& item,
+                              const Where& where) {
+    havs::TriangleScan ts;
+    if (!ts.setup(frame, tri)) return;
+    // Row blocks of every height from the rectangle's bottom (the kernel's last step is
+    // partial unless ny is a multiple of 4).
+    for (int ny = 1; ny <= R; ny += 5) {
+      int s[4][R], a[4][R];
+      ts.row_ranges(item.rect.y0, ny, item.rect, s[0], s[1], s[2], s[3], true);
+      ts.row_ranges(item.rect.y0, ny, item.rect, a[0], a[1], a[2], a[3]);
+      for (int r = 0; r < ny; ++r) {
+        for (int j = 0; j < 4; ++j) ASSERT_EQ(s[j][r], a[j][r]) << where << " row " << r << " bound " << j;
+        certain += s[2][r] <= s[3][r];
+      }
+      rows += ny;
+    }
+  });
   EXPECT_GT(rows, 100000);  // not vacuous
   EXPECT_GT(certain, 1000);
 }
@@ -141,7 +167,7 @@ TEST(HavsTriangleScanRanges, Avx2KernelMatchesTheScalarLoop) {
 TEST(HavsTriangleScanSetup, Avx2LoopMatchesTheScalarLoop) {
   if (!vob::cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the scalar loop runs";
   int64_t edges = 0, negative = 0;
-  const auto compare = [&](const SampleFrame& frame, const Vec3* tri, const std::string& where) {
+  const auto compare = [&](const SampleFrame& frame, const Vec3* tri, const auto& where) {
     havs::TriangleScan fast, portable;
     const bool ok = fast.setup(frame, tri);
     ASSERT_EQ(ok, portable.setup(frame, tri, true)) << where;
@@ -161,32 +187,12 @@ TEST(HavsTriangleScanSetup, Avx2LoopMatchesTheScalarLoop) {
       negative += p.sign[i] < 0;
     }
   };
-  for (const char* mesh : {"helix", "zoo"}) {
-    const Scene scene = test::small_mesh(mesh);
-    const havs::FaceData fd = havs::build_face_data(scene);
-    const std::vector<Vec3>& points = scene.mesh().points;
-    for (const bool ortho : {false, true})
-      for (int v = 0; v < test::kHavsViews; v += 4) {
-        ViewOptions o;
-        o.width = 160, o.height = 120, o.ortho = ortho;
-        const SampleFrame frame(fibonacci_view(scene.bounds(), test::kHavsViews, v, o), 1);
-        havs::FaceBins b;
-        havs::bin_faces(fd, frame, test::havs_face_order(fd, frame.camera()), b);
-        for (const havs::BandItem& item : b.items) {
-          if (item.ids[3] != havs::kFrontTriangle) continue;
-          const Vec3 tri[3] = {points[item.ids[0]], points[item.ids[1]], points[item.ids[2]]};
-          compare(frame, tri, std::string(mesh) + " view " + std::to_string(v) + (ortho ? " ortho" : ""));
-        }
-      }
-  }
+  for_each_front_triangle([&](const SampleFrame& frame, const Vec3* tri, const havs::BandItem&, const Where& where) {
+    compare(frame, tri, where);
+  });
   // Edges parallel to the sample rows (a = 0: flat) and to the columns, in an orthographic
   // 16x16 view where pixel (i, j) is centred at world (i - 7.5, j - 7.5).
-  Camera cam;
-  cam.eye = {0, 0, 10};
-  cam.ortho = true;
-  cam.ortho_height = 16;
-  cam.width = cam.height = 16;
-  const SampleFrame frame(cam, 1);
+  const SampleFrame frame = pixel_grid_frame();
   int flat = 0, infinite = 0;
   for (const std::array<Vec3, 3>& tri : {std::array<Vec3, 3>{Vec3{-3, -3, 0}, {4, -3, 0.5}, {0, 5, 1}},
                                           {Vec3{-3, -3, 0}, {-3, 4, 0.5}, {5, 0, 1}},
@@ -194,7 +200,7 @@ TEST(HavsTriangleScanSetup, Avx2LoopMatchesTheScalarLoop) {
                                           {Vec3{1e-300, 0, 0}, {2e-300, 0, 0}, {0, 3, 0}},
                                           // a edge barely off the rows: b / a overflows (not finite)
                                           {Vec3{-3, 0, 0}, {4, 1e-309, 0.5}, {0, 5, 1}}}) {
-    compare(frame, tri.data(), "constructed");
+    compare(frame, tri.data(), std::string("constructed"));
     havs::TriangleScan s;
     if (s.setup(frame, tri.data(), true))
       for (int i = 0; i < 3; ++i) flat += s.rows().flat[i], infinite += !s.rows().flat[i] && !s.rows().finite[i];
