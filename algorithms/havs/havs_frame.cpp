@@ -11,6 +11,7 @@
 
 #include <atomic>
 
+#include "harness/cpu_features.h"
 #include "harness/oracle/k_metric.h"
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
@@ -167,13 +168,17 @@ class SegmentBatch {
   }
   void drain() {
     float alpha[kSize];
-    opacities(tau_, s_, dd_, alpha, n_);
+    if (avx2_)
+      opacities_avx2(tau_, s_, dd_, alpha, n_);
+    else
+      opacities(tau_, s_, dd_, alpha, n_);
     for (int i = 0; i < n_; ++i) Shading::accumulate(px_[pixel_[i]].acc, s_[i], alpha[i]);
     n_ = 0;
   }
 
  private:
   float tau_;
+  bool avx2_ = cpu_has_avx2();
   Pair2* px_;
   int n_ = 0;
   int32_t pixel_[kSize];

@@ -33,9 +33,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
 
 namespace vob::havs {
 
@@ -123,10 +120,12 @@ inline float exp_neg(float x) {
   return p * scale;
 }
 
-// alpha[i] = Shading::opacity(tau, s[i], dd[i]) for i < n, four at a time with SSE2 (the
-// same float operations lane by lane, so the same bits; GCC does not vectorise the scalar
-// loop itself under its default -ftrapping-math).
+// alpha[i] = Shading::opacity(tau, s[i], dd[i]) for i < n, four at a time with SSE2, or
+// eight with AVX2 (opacities_avx2, where the CPU has it): the same float operations lane by
+// lane, so the same bits (GCC does not vectorise the scalar loop itself under its default
+// -ftrapping-math).
 inline void opacities(float tau, const float* s, const float* dd, float* alpha, int n);
+inline void opacities_avx2(float tau, const float* s, const float* dd, float* alpha, int n);
 
 // The harness compositor's transfer function (render/compositor.cpp): green-to-pink ramp,
 // extinction tau0 * (0.25 + 0.75 s).
@@ -174,33 +173,51 @@ struct Shading {
   }
 };
 
+namespace detail {
+// alpha[0, lanes) from s and dd, in lanes of GCC's vector types: V holds floats, VI as many
+// int32. Each operator is one lane-wise float operation of Shading::opacity and exp_neg, in
+// their order; max(y, -87) is (y > -87 ? y : -87), as maxps takes it.
+template <class V, class VI>
+__attribute__((always_inline)) inline void opacity_lanes(float tau, const float* sp, const float* ddp, float* alpha) {
+  V s, dd;
+  __builtin_memcpy(&s, sp, sizeof s);
+  __builtin_memcpy(&dd, ddp, sizeof dd);
+  const V x = tau * (0.25f + 0.75f * s) * dd;
+  V y = -x;
+  y = y > -87.f ? y : V{} - 87.f;
+  const float magic = 12582912.f;  // 1.5 * 2^23
+  const V nf = (y * 1.44269504088896341f + magic) - magic;
+  y = y - nf * 0.693359375f;
+  y = y - nf * -2.12194440e-4f;
+  const V z = y * y;
+  V p = V{} + 1.9875691500e-4f;
+  p = p * y + 1.3981999507e-3f;
+  p = p * y + 8.3334519073e-3f;
+  p = p * y + 4.1665795894e-2f;
+  p = p * y + 1.6666665459e-1f;
+  p = p * y + 5.0000001201e-1f;
+  p = p * z + y + 1.f;
+  const VI bits = (__builtin_convertvector(nf, VI) + 127) << 23;
+  const V a = 1.f - p * __builtin_bit_cast(V, bits);
+  __builtin_memcpy(alpha, &a, sizeof a);
+}
+typedef float V4 __attribute__((vector_size(16)));
+typedef int32_t V4i __attribute__((vector_size(16)));
+typedef float V8 __attribute__((vector_size(32)));
+typedef int32_t V8i __attribute__((vector_size(32)));
+}  // namespace detail
+
 inline void opacities(float tau, const float* s, const float* dd, float* alpha, int n) {
   int i = 0;
-#ifdef __SSE2__
-  const __m128 vtau = _mm_set1_ps(tau), magic = _mm_set1_ps(12582912.f);
-  for (; i + 4 <= n; i += 4) {
-    const __m128 x = _mm_mul_ps(
-        _mm_mul_ps(vtau, _mm_add_ps(_mm_set1_ps(0.25f), _mm_mul_ps(_mm_set1_ps(0.75f), _mm_loadu_ps(s + i)))),
-        _mm_loadu_ps(dd + i));
-    // exp_neg, lane by lane.
-    __m128 y = _mm_max_ps(_mm_xor_ps(x, _mm_set1_ps(-0.f)), _mm_set1_ps(-87.f));
-    const __m128 nf = _mm_sub_ps(_mm_add_ps(_mm_mul_ps(y, _mm_set1_ps(1.44269504088896341f)), magic), magic);
-    y = _mm_sub_ps(y, _mm_mul_ps(nf, _mm_set1_ps(0.693359375f)));
-    y = _mm_sub_ps(y, _mm_mul_ps(nf, _mm_set1_ps(-2.12194440e-4f)));
-    const __m128 z = _mm_mul_ps(y, y);
-    __m128 p = _mm_set1_ps(1.9875691500e-4f);
-    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(1.3981999507e-3f));
-    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(8.3334519073e-3f));
-    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(4.1665795894e-2f));
-    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(1.6666665459e-1f));
-    p = _mm_add_ps(_mm_mul_ps(p, y), _mm_set1_ps(5.0000001201e-1f));
-    p = _mm_add_ps(_mm_add_ps(_mm_mul_ps(p, z), y), _mm_set1_ps(1.f));
-    const __m128i bits = _mm_slli_epi32(_mm_add_epi32(_mm_cvttps_epi32(nf), _mm_set1_epi32(127)), 23);
-    const __m128 e = _mm_mul_ps(p, _mm_castsi128_ps(bits));
-    _mm_storeu_ps(alpha + i, _mm_sub_ps(_mm_set1_ps(1.f), e));
-  }
-#endif
+  for (; i + 4 <= n; i += 4) detail::opacity_lanes<detail::V4, detail::V4i>(tau, s + i, dd + i, alpha + i);
   for (; i < n; ++i) alpha[i] = Shading::opacity(tau, s[i], dd[i]);
+}
+
+__attribute__((target("avx2"))) inline void opacities_avx2(float tau, const float* s, const float* dd, float* alpha,
+                                                          int n) {
+  int i = 0;
+  for (; i + 8 <= n; i += 8) detail::opacity_lanes<detail::V8, detail::V8i>(tau, s + i, dd + i, alpha + i);
+  opacities(tau, s + i, dd + i, alpha + i, n - i);
 }
 
 }  // namespace vob::havs
