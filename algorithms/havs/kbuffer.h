@@ -100,20 +100,28 @@ struct PixelAccum {
 // bound below is checked in tests/algorithms/havs/havs_shading_test.cpp); x >= 87 gives
 // exp(-87) ~ 1.6e-38, i.e. opacity 1. The magic constant rounds to nearest (the default
 // mode; no -ffast-math here).
-inline float exp_neg(float x) {
-  float y = std::max(-x, -87.f);
+// exp_neg's steps after the clamp, for a float or lane by lane for a vector of floats (the
+// batch's opacities): the polynomial p for y0 = max(-x, -87), and n. (References only: a
+// vector passed or returned by value changes the ABI where AVX is not enabled.)
+template <class T>
+__attribute__((always_inline)) inline void exp_neg_poly(const T& y0, T& n, T& p) {
   const float magic = 12582912.f;  // 1.5 * 2^23
-  const float n = (y * 1.44269504088896341f + magic) - magic;
-  y = y - n * 0.693359375f;
+  n = (y0 * 1.44269504088896341f + magic) - magic;
+  T y = y0 - n * 0.693359375f;
   y = y - n * -2.12194440e-4f;
-  const float z = y * y;
-  float p = 1.9875691500e-4f;
+  const T z = y * y;
+  p = T{} + 1.9875691500e-4f;  // 0 + c is c exactly
   p = p * y + 1.3981999507e-3f;
   p = p * y + 8.3334519073e-3f;
   p = p * y + 4.1665795894e-2f;
   p = p * y + 1.6666665459e-1f;
   p = p * y + 5.0000001201e-1f;
   p = p * z + y + 1.f;
+}
+
+inline float exp_neg(float x) {
+  float n, p;
+  exp_neg_poly(std::max(-x, -87.f), n, p);
   const int32_t bits = (int32_t(n) + 127) << 23;
   float scale;
   __builtin_memcpy(&scale, &bits, 4);
@@ -183,20 +191,9 @@ __attribute__((always_inline)) inline void opacity_lanes(float tau, const float*
   __builtin_memcpy(&s, sp, sizeof s);
   __builtin_memcpy(&dd, ddp, sizeof dd);
   const V x = tau * (0.25f + 0.75f * s) * dd;
-  V y = -x;
-  y = y > -87.f ? y : V{} - 87.f;
-  const float magic = 12582912.f;  // 1.5 * 2^23
-  const V nf = (y * 1.44269504088896341f + magic) - magic;
-  y = y - nf * 0.693359375f;
-  y = y - nf * -2.12194440e-4f;
-  const V z = y * y;
-  V p = V{} + 1.9875691500e-4f;
-  p = p * y + 1.3981999507e-3f;
-  p = p * y + 8.3334519073e-3f;
-  p = p * y + 4.1665795894e-2f;
-  p = p * y + 1.6666665459e-1f;
-  p = p * y + 5.0000001201e-1f;
-  p = p * z + y + 1.f;
+  const V y = -x, y0 = y > -87.f ? y : V{} - 87.f;
+  V nf, p;
+  exp_neg_poly(y0, nf, p);
   const VI bits = (__builtin_convertvector(nf, VI) + 127) << 23;
   const V a = 1.f - p * __builtin_bit_cast(V, bits);
   __builtin_memcpy(alpha, &a, sizeof a);
