@@ -94,12 +94,6 @@ struct PixelAccum {
   bool inside = false;
 };
 
-// exp(-x) for x >= 0 in float, inline (the libm call and its dependency chain were the
-// shading's cost): Cephes' expf, range reduction by n = round(-x log2 e) with ln 2 split in
-// two, degree-5 polynomial, 2^n from the exponent bits. Relative error about 1 ulp (the
-// bound below is checked in tests/algorithms/havs/havs_shading_test.cpp); x >= 87 gives
-// exp(-87) ~ 1.6e-38, i.e. opacity 1. The magic constant rounds to nearest (the default
-// mode; no -ffast-math here).
 // exp_neg's steps after the clamp, for a float or lane by lane for a vector of floats (the
 // batch's opacities): the polynomial p for y0 = max(-x, -87), and n. (References only: a
 // vector passed or returned by value changes the ABI where AVX is not enabled.)
@@ -119,6 +113,12 @@ __attribute__((always_inline)) inline void exp_neg_poly(const T& y0, T& n, T& p)
   p = p * z + y + 1.f;
 }
 
+// exp(-x) for x >= 0 in float, inline (the libm call and its dependency chain were the
+// shading's cost): Cephes' expf, range reduction by n = round(-x log2 e) with ln 2 split in
+// two, degree-5 polynomial, 2^n from the exponent bits. Relative error about 1 ulp (the
+// bound below is checked in tests/algorithms/havs/havs_shading_test.cpp); x >= 87 gives
+// exp(-87) ~ 1.6e-38, i.e. opacity 1. The magic constant rounds to nearest (the default
+// mode; no -ffast-math here).
 inline float exp_neg(float x) {
   float n, p;
   exp_neg_poly(std::max(-x, -87.f), n, p);
