@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
     const vob::HugePagePolicy hp = vob::huge_page_policy();
     vob::set_allocation_context({{"huge_pages", hp.on},
                                  {"min_bytes", vob::kHugePageMinBytes},
+                                 {"reuse_max_blocks", vob::kHugeReuseBlocks},
+                                 {"reuse_max_bytes", vob::kHugeReuseBytes},
                                  {"kernel_thp", hp.kernel},
                                  {"why_off", hp.why}});
   }

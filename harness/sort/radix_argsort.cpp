@@ -3,12 +3,12 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
-#include <sys/mman.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <new>
 #include <numeric>
+
+#include "harness/huge_mapping.h"
 
 namespace vob {
 namespace {
@@ -197,18 +197,18 @@ void sort_room_bucket(const uint32_t* w, size_t begin, size_t m, const uint32_t*
   }
 }
 
-constexpr size_t kHugePage = size_t(2) << 20;
-
 }  // namespace
 
-void HugeWords::Free::operator()(uint32_t* p) const { std::free(p); }
+void HugeWords::Free::operator()(uint32_t* p) const { unmap_huge(p, bytes); }
 
 void HugeWords::reserve(size_t n) {
   if (n <= cap_) return;
-  const size_t bytes = (n * 4 + kHugePage - 1) / kHugePage * kHugePage;
-  words_.reset(static_cast<uint32_t*>(std::aligned_alloc(kHugePage, bytes)));
-  if (!words_) throw std::bad_alloc();
-  madvise(words_.get(), bytes, MADV_HUGEPAGE);  // a hint: without THP it is a plain buffer
+  const size_t bytes = (n * 4 + kHugeMappingAlign - 1) / kHugeMappingAlign * kHugeMappingAlign;
+  words_.reset();
+  cap_ = 0;
+  uint32_t* p = static_cast<uint32_t*>(map_huge(bytes));
+  if (!p) throw std::bad_alloc();
+  words_ = std::unique_ptr<uint32_t, Free>(p, Free{bytes});
   cap_ = bytes / 4;
 }
 

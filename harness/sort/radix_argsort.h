@@ -22,8 +22,9 @@
 
 namespace vob {
 
-// A buffer of 32-bit words on transparent huge pages where the kernel offers them (madvise):
-// a scatter over 4 MB with thousands of write streams otherwise misses the TLB on most stores.
+// A buffer of 32-bit words on transparent huge pages where the kernel offers them (madvise;
+// a mapping of its own, harness/huge_mapping.h): a scatter over 4 MB with thousands of write
+// streams otherwise misses the TLB on most stores.
 class HugeWords {
  public:
   void reserve(size_t n);  // grows only; contents are not kept
@@ -32,6 +33,7 @@ class HugeWords {
 
  private:
   struct Free {
+    size_t bytes;  // of the mapping (no initializer here: GCC then thinks Free not default-constructible)
     void operator()(uint32_t* p) const;
   };
   std::unique_ptr<uint32_t, Free> words_;

@@ -229,6 +229,8 @@ TEST(Cli, RunContextSaysHowLargeBlocksAreAllocated) {
     EXPECT_EQ(a["huge_pages"], expect_on) << a.dump();
     EXPECT_EQ(a["kernel_thp"], mode.empty() ? "unknown" : mode) << a.dump();
     EXPECT_EQ(a["min_bytes"], 2 << 20) << a.dump();
+    EXPECT_EQ(a["reuse_max_bytes"], 512 << 20) << a.dump();
+    EXPECT_EQ(a["reuse_max_blocks"], 32) << a.dump();
     if (!env.empty()) {
       EXPECT_EQ(a["why_off"], asan ? "not built under AddressSanitizer" : "VOBENCH_HUGE_PAGES=0");
     }
