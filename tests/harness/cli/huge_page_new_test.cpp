@@ -3,8 +3,6 @@
 // reuse when freed, and the advice never on a block below the threshold.
 #include <gtest/gtest.h>
 
-#include <malloc.h>
-
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
