@@ -13,9 +13,11 @@
 #include <cstddef>
 #include <string>
 
+#include "harness/huge_mapping.h"
+
 namespace vob {
 
-inline constexpr size_t kHugePageBytes = size_t(2) << 20;
+inline constexpr size_t kHugePageBytes = kHugeMappingAlign;  // 2 MiB
 inline constexpr size_t kHugePageMinBytes = kHugePageBytes;
 // Freed large blocks kept for reuse, at most (the oldest are unmapped first).
 inline constexpr size_t kHugeReuseBlocks = 32, kHugeReuseBytes = size_t(512) << 20;
