@@ -31,6 +31,10 @@ struct EdgeCrossing {
   int32_t swap[2];
 };
 
+// One edge's n crossings sorted by key, equal keys in their order in p, or in reverse when
+// p's first key exceeds its last (index_crossings; `scratch` is reused storage).
+void sort_edge_crossings(EdgeCrossing* p, int32_t n, std::vector<EdgeCrossing>& scratch);
+
 struct Arrangement {
   std::vector<std::pair<int32_t, int32_t>> edges;  // unique projected edges
   std::vector<int32_t> edge_off, edge_items;       // edges per bucket (CSR)

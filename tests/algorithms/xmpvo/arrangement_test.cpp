@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <tuple>
 #include <utility>
@@ -99,4 +100,82 @@ TEST(XmpvoArrangement, BuildBeforeSetFacesIsRefused) {
   proj.run(s.exterior_faces(), view, signs, box.center(), box.radius());
   Arrangement arr;
   EXPECT_THROW(arr.build(s.exterior_faces(), proj, signs), std::logic_error);
+}
+
+namespace {
+// sort_edge_crossings' contract: by key, equal keys in their order in the input, reversed
+// first when the first key exceeds the last.
+std::vector<EdgeCrossing> reference_sort(std::vector<EdgeCrossing> v) {
+  if (!v.empty() && v.front().key > v.back().key) std::reverse(v.begin(), v.end());
+  std::stable_sort(v.begin(), v.end(), [](const EdgeCrossing& a, const EdgeCrossing& b) { return a.key < b.key; });
+  return v;
+}
+
+std::vector<int32_t> vertices_of(const std::vector<EdgeCrossing>& v) {
+  std::vector<int32_t> out;
+  for (const EdgeCrossing& c : v) out.push_back(c.vertex);
+  return out;
+}
+}  // namespace
+
+// Lists short enough to be sorted by counting places and longer ones, with distinct keys,
+// ties (which the counted places cannot order) and nearly sorted runs either way.
+TEST(XmpvoArrangement, EdgeCrossingsSortLikeAStableSort) {
+  std::vector<EdgeCrossing> scratch;
+  uint64_t seed = 12345;
+  auto next = [&] { return seed = seed * 6364136223846793005ull + 1442695040888963407ull, seed >> 33; };
+  for (int32_t n : {0, 1, 2, 3, 5, 24, 63, 64, 65, 200})
+    for (int kind = 0; kind < 4; ++kind) {
+      std::vector<EdgeCrossing> v(n);
+      for (int32_t i = 0; i < n; ++i) {
+        const double noise = static_cast<double>(next() % 1000) / 100.0;
+        const double key = kind == 0 ? static_cast<double>(next() % 100000)   // distinct, mostly
+                           : kind == 1 ? static_cast<double>(next() % 4)      // many ties
+                           : kind == 2 ? i + noise                            // nearly sorted
+                                       : n - i + noise;                       // nearly reversed
+        v[i] = {key, 0.0, i, 0, {-1, -1}};
+      }
+      std::vector<EdgeCrossing> got = v;
+      sort_edge_crossings(got.data(), n, scratch);
+      EXPECT_EQ(vertices_of(got), vertices_of(reference_sort(v))) << "n " << n << " kind " << kind;
+    }
+}
+
+// A NaN key has no place among the others: the list is still a permutation of its records.
+TEST(XmpvoArrangement, EdgeCrossingsWithANanKeyStayAPermutation) {
+  std::vector<EdgeCrossing> v;
+  for (int32_t i = 0; i < 9; ++i) v.push_back({i == 4 ? NAN : 9.0 - i, 0.0, i, 0, {-1, -1}});
+  std::vector<EdgeCrossing> scratch;
+  sort_edge_crossings(v.data(), static_cast<int32_t>(v.size()), scratch);
+  std::vector<int32_t> ids = vertices_of(v);
+  std::sort(ids.begin(), ids.end());
+  EXPECT_EQ(ids, (std::vector<int32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
+}
+
+// On a helix every crossing sits on both its edges once, each edge's list sorted by key.
+TEST(XmpvoArrangement, EachEdgeHoldsItsCrossingsByKey) {
+  const Scene s = dataset("helix", {{"cells", "20000"}});
+  const Camera view = fibonacci_view(s.bounds(), 6, 1, ViewOptions{256, 256});
+  const ExteriorFaces& ext = s.exterior_faces();
+  Signs signs;
+  signs.g = ViewGeometry::of(view);
+  Projection proj;
+  const Aabb box = s.mesh().bounds();
+  proj.run(ext, view, signs, box.center(), box.radius());
+  Arrangement arr;
+  arr.set_faces(ext);
+  arr.build(ext, proj, signs);
+  const size_t crossings = arr.vertices.size() - arr.projected_vertices;
+  ASSERT_GT(crossings, 1000u);
+  std::vector<int> seen(arr.vertices.size(), 0);
+  for (size_t e = 0; e + 1 < arr.edge_vertex_off.size(); ++e)
+    for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) {
+      const EdgeCrossing& c = arr.edge_crossings[x];
+      const ArrVertex& v = arr.vertices[c.vertex];
+      EXPECT_TRUE(v.e1 == static_cast<int32_t>(e) || v.e2 == static_cast<int32_t>(e));
+      ++seen[c.vertex];
+      if (x > arr.edge_vertex_off[e]) EXPECT_LE(arr.edge_crossings[x - 1].key, c.key) << "edge " << e;
+    }
+  for (size_t v = arr.projected_vertices; v < arr.vertices.size(); ++v) EXPECT_EQ(seen[v], 2) << "vertex " << v;
+  EXPECT_EQ(arr.edge_crossings.size(), 2 * crossings);
 }
