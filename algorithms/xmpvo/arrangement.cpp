@@ -4,17 +4,78 @@
 #include <array>
 #include <cmath>
 #include <stdexcept>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
+
+#include <immintrin.h>
 
 #include "algorithms/xmpvo/uv_filter.h"
+#include "harness/cpu_features.h"
 
 namespace vob::xmpvo {
 namespace {
 // Buckets per mean edge box area. On the 200k-cell helix that makes 6.7k buckets for 67k
 // edges, the fastest pair loop of 0.03 to 1 bucket per edge tried (1: 1.7 times slower).
 constexpr double kEdgeGridScale = 1.0;
+
+// An edge as the pair loop holds it, copied per bucket.
+struct BucketEdge {
+  Box box;
+  Uv ua, ub;
+  int32_t a, b, id;
+};
+
+// The double filter of build() for the candidates cand[0, n) of edge ix, four a step: the
+// four orient2d of each pair in lanes, the same operations as the scalar `sign`, so the
+// same doubles. A pair whose four signs clear +-1.001 `quick` is decided here (apart: 0, else
+// 1); any other is left to `scalar` (build()'s filtered_cross), which reaches the same
+// answer for the quick signs and asks uv_sign for the rest. Writes {candidate, f} to
+// maybe[q] for f != 0, in candidate order; returns q.
+// sign(x, p, q)'s o = (q - p).x * (x - p).y - (q - p).y * (x - p).x against +-1.001 quick,
+// as 4-bit masks.
+__attribute__((target("avx2"), always_inline)) inline void lane_signs(__m256d o, __m256d hi, __m256d lo, int& pos,
+                                                                       int& neg) {
+  pos = _mm256_movemask_pd(_mm256_cmp_pd(o, hi, _CMP_GT_OQ));
+  neg = _mm256_movemask_pd(_mm256_cmp_pd(o, lo, _CMP_LT_OQ));
+}
+
+template <class Scalar>
+__attribute__((target("avx2"))) size_t filter_pairs_avx2(const BucketEdge& ix, const BucketEdge* local,
+                                                         const uint32_t* cand, size_t n, double quick,
+                                                         std::pair<uint32_t, int>* maybe, Scalar&& scalar) {
+  const __m256d hi = _mm256_set1_pd(1.001 * quick), lo = _mm256_set1_pd(-1.001 * quick);
+  const __m256d ax = _mm256_set1_pd(ix.ua.first), ay = _mm256_set1_pd(ix.ua.second);
+  const __m256d bx = _mm256_set1_pd(ix.ub.first), by = _mm256_set1_pd(ix.ub.second);
+  const __m256d abx = _mm256_sub_pd(bx, ax), aby = _mm256_sub_pd(by, ay);
+  size_t q = 0, k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const BucketEdge &e0 = local[cand[k]], &e1 = local[cand[k + 1]], &e2 = local[cand[k + 2]],
+                     &e3 = local[cand[k + 3]];
+    const __m256d cx = _mm256_set_pd(e3.ua.first, e2.ua.first, e1.ua.first, e0.ua.first);
+    const __m256d cy = _mm256_set_pd(e3.ua.second, e2.ua.second, e1.ua.second, e0.ua.second);
+    const __m256d dx = _mm256_set_pd(e3.ub.first, e2.ub.first, e1.ub.first, e0.ub.first);
+    const __m256d dy = _mm256_set_pd(e3.ub.second, e2.ub.second, e1.ub.second, e0.ub.second);
+    const __m256d dcx = _mm256_sub_pd(dx, cx), dcy = _mm256_sub_pd(dy, cy);
+    int pca, nca, pcb, ncb, pac, nac, pad, nad;
+    // ca = sign(a, c, d), cb = sign(b, c, d), ac = sign(c, a, b), ad = sign(d, a, b).
+    lane_signs(_mm256_sub_pd(_mm256_mul_pd(dcx, _mm256_sub_pd(ay, cy)), _mm256_mul_pd(dcy, _mm256_sub_pd(ax, cx))), hi, lo, pca, nca);
+    lane_signs(_mm256_sub_pd(_mm256_mul_pd(dcx, _mm256_sub_pd(by, cy)), _mm256_mul_pd(dcy, _mm256_sub_pd(bx, cx))), hi, lo, pcb, ncb);
+    lane_signs(_mm256_sub_pd(_mm256_mul_pd(abx, _mm256_sub_pd(cy, ay)), _mm256_mul_pd(aby, _mm256_sub_pd(cx, ax))), hi, lo, pac, nac);
+    lane_signs(_mm256_sub_pd(_mm256_mul_pd(abx, _mm256_sub_pd(dy, ay)), _mm256_mul_pd(aby, _mm256_sub_pd(dx, ax))), hi, lo, pad, nad);
+    const int certain = (pca | nca) & (pcb | ncb) & (pac | nac) & (pad | nad);
+    const int apart = (pca & pcb) | (nca & ncb) | (pac & pad) | (nac & nad);
+    for (int j = 0; j < 4; ++j) {
+      const uint32_t y = cand[k + j];
+      const int f = (certain >> j) & 1 ? !((apart >> j) & 1) : scalar(local[y]);
+      maybe[q] = {y, f};
+      q += f != 0;
+    }
+  }
+  for (; k < n; ++k) {
+    const int f = scalar(local[cand[k]]);
+    maybe[q] = {cand[k], f};
+    q += f != 0;
+  }
+  return q;
+}
 }  // namespace
 
 Box Arrangement::edge_box(const Projection& proj, int32_t e) const {
@@ -52,6 +113,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   int64_t candidates = 0;
   crossings_filtered = crossings_rechecked = 0;
   const bool filter = signs.mode == Mode::Exact && proj.uv_filter;
+  const bool avx2 = lanes && cpu_has_avx2();
   edge_vertex_off.assign(edges.size() + 1, 0);  // crossings per edge, at e + 1
   // Proper crossing from the double filter: 1 / 0 when certain, 2 when not. No early exit:
   // its outcomes are unpredictable, all four signs cost less than a mispredicted branch.
@@ -77,11 +139,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   // boxes' common lower corner. The copies are sorted by their boxes' left side, so the
   // pairs overlapping in x are a run after each edge (sweep and prune), and a pair's
   // corner lies left of this bucket's column whenever its later edge starts there.
-  struct Item {
-    Box box;
-    Uv ua, ub;
-    int32_t a, b, id;
-  };
+  using Item = BucketEdge;
   std::vector<Item> local;
   std::vector<uint32_t> near;
   std::vector<std::pair<uint32_t, int>> maybe;
@@ -133,18 +191,35 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           near[m] = static_cast<uint32_t>(y);
           m += keep;
         }
-        size_t q = 0;
+        // The candidates: pairs whose corner lies in this bucket (near its sides, the
+        // bucket's own column and row decide: rare).
+        size_t nc = 0;
         for (size_t k = 0; k < m; ++k) {
           const Item& iy = local[near[k]];
           const double lx = iy.box.x0, ly = std::max(ba.y0, iy.box.y0);  // lx = max(ba.x0, bb.x0): sorted
           const bool inside = (lx > cx0 + tx) & (ly > cy0 + ty);
-          if (!inside && (grid.col(lx) != c || grid.row(ly) != r)) continue;  // rare: near the corner
-          ++candidates;
-          const int f = filter ? filtered_cross(ix.ua, ix.ub, iy.ua, iy.ub) : 2;
-          crossings_filtered += f != 2;
-          crossings_rechecked += filter & (f == 2);
-          maybe[q] = {near[k], f};
-          q += f != 0;
+          near[nc] = near[k];
+          nc += inside || (grid.col(lx) == c && grid.row(ly) == r);
+        }
+        candidates += static_cast<int64_t>(nc);
+        size_t q = 0;
+        if (!filter) {
+          for (size_t k = 0; k < nc; ++k) maybe[q++] = {near[k], 2};
+        } else {
+          auto scalar = [&](const Item& iy) { return filtered_cross(ix.ua, ix.ub, iy.ua, iy.ub); };
+          if (avx2) {
+            q = filter_pairs_avx2(ix, local.data(), near.data(), nc, quick, maybe.data(), scalar);
+          } else {
+            for (size_t k = 0; k < nc; ++k) {
+              const int f = scalar(local[near[k]]);
+              maybe[q] = {near[k], f};
+              q += f != 0;
+            }
+          }
+          int64_t unsure = 0;
+          for (size_t k = 0; k < q; ++k) unsure += maybe[k].second == 2;
+          crossings_filtered += static_cast<int64_t>(nc) - unsure;
+          crossings_rechecked += unsure;
         }
         for (size_t k = 0; k < q; ++k) {
           const Item& iy = local[maybe[k].first];
