@@ -29,6 +29,54 @@ struct BucketEdge {
 // 1); any other is left to `scalar` (build()'s filtered_cross), which reaches the same
 // answer for the quick signs and asks uv_sign for the rest. Writes {candidate, f} to
 // maybe[q] for f != 0, in candidate order; returns q.
+// A bucket's edges as the pair loop's first pass reads them, one array per field, four
+// entries of padding at the end (never read as edges: lanes past n are masked).
+struct BucketLanes {
+  std::vector<double> x0, y0, y1;
+  std::vector<int32_t> a, b;
+  void fill(const std::vector<BucketEdge>& local) {
+    const size_t n = local.size();
+    x0.resize(n + 4), y0.resize(n + 4), y1.resize(n + 4), a.resize(n + 4), b.resize(n + 4);
+    for (size_t i = 0; i < n; ++i)
+      x0[i] = local[i].box.x0, y0[i] = local[i].box.y0, y1[i] = local[i].box.y1, a[i] = local[i].a, b[i] = local[i].b;
+  }
+};
+
+// build()'s first pass for edge ix, four later edges a step: the edges y = y0, y0 + 1, ...
+// while their boxes start at or left of ix's right side (the run; y < n), kept in near
+// (in order) when their boxes overlap in y, they share no point with ix and their corner
+// is not clearly below the bucket's row (r > 0, below `floor`); returns how many. The
+// same comparisons as the scalar loop, lane by lane (std::max(p, q) is max_pd(q, p)).
+__attribute__((target("avx2"))) size_t near_pairs_avx2(const BucketEdge& ix, const BucketLanes& l, size_t y0,
+                                                       size_t n, bool below, double floor, uint32_t* near) {
+  const __m256d ax1 = _mm256_set1_pd(ix.box.x1), ay0 = _mm256_set1_pd(ix.box.y0), ay1 = _mm256_set1_pd(ix.box.y1);
+  const __m256d vfloor = _mm256_set1_pd(floor);
+  const __m128i ia = _mm_set1_epi32(ix.a), ib = _mm_set1_epi32(ix.b);
+  const int below_mask = below ? 0xF : 0;
+  size_t m = 0;
+  for (size_t y = y0; y < n; y += 4) {
+    const __m256d x0 = _mm256_loadu_pd(&l.x0[y]), by0 = _mm256_loadu_pd(&l.y0[y]), by1 = _mm256_loadu_pd(&l.y1[y]);
+    const int valid = n - y >= 4 ? 0xF : (1 << (n - y)) - 1;
+    const int in_run = _mm256_movemask_pd(_mm256_cmp_pd(x0, ax1, _CMP_LE_OQ)) & valid;
+    const int end = __builtin_ctz(~in_run);  // lanes [0, end) are in the run
+    const int overlap = _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(ay0, by1, _CMP_LE_OQ),
+                                                         _mm256_cmp_pd(by0, ay1, _CMP_LE_OQ)));
+    const int low = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_max_pd(by0, ay0), vfloor, _CMP_LT_OQ)) & below_mask;
+    const __m128i pa = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&l.a[y]));
+    const __m128i pb = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&l.b[y]));
+    const __m128i shared = _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi32(ia, pa), _mm_cmpeq_epi32(ia, pb)),
+                                        _mm_or_si128(_mm_cmpeq_epi32(ib, pa), _mm_cmpeq_epi32(ib, pb)));
+    const int apart = ~_mm_movemask_ps(_mm_castsi128_ps(shared)) & 0xF;
+    const int keep = overlap & apart & ~low & ((1 << end) - 1);
+    for (int j = 0; j < 4; ++j) {
+      near[m] = static_cast<uint32_t>(y + j);
+      m += (keep >> j) & 1;
+    }
+    if (end < 4) break;
+  }
+  return m;
+}
+
 // sign(x, p, q)'s o = (q - p).x * (x - p).y - (q - p).y * (x - p).x against +-1.001 quick,
 // as 4-bit masks.
 __attribute__((target("avx2"), always_inline)) inline void lane_signs(__m256d o, __m256d hi, __m256d lo, int& pos,
@@ -143,6 +191,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   std::vector<Item> local;
   std::vector<uint32_t> near;
   std::vector<std::pair<uint32_t, int>> maybe;
+  BucketLanes bucket_lanes;
   const double tx = 1e-9 * grid.cw, ty = 1e-9 * grid.ch;
   // NaN first and never overlapping, as Box::overlaps has it.
   auto left = [](const Item& i) { return std::isnan(i.box.x0) ? -INFINITY : i.box.x0; };
@@ -174,22 +223,27 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
       // them were mispredicted often): the later edges passing the box tests, kept in
       // `near`; of those, the ones the filter does not rule out, with its answer, in
       // `maybe`; then the crossings, in run order.
-      near.resize(n);
+      near.resize(n + 4);  // the lanes' first pass writes up to three past its last
       maybe.resize(n);
+      if (avx2) bucket_lanes.fill(local);
       for (size_t x = 0; x < n; ++x) {
         const Item& ix = local[x];
         const Box& ba = ix.box;
         size_t m = 0;
-        for (size_t y = std::max(x + 1, first); y < n && local[y].box.x0 <= ba.x1; ++y) {
-          const Item& iy = local[y];
-          const Box& bb = iy.box;
-          // Overlap in y, no shared point (no proper crossing), and the corner not clearly
-          // below this bucket's row.
-          const double ly = std::max(ba.y0, bb.y0);
-          const bool keep = (ba.y0 <= bb.y1) & (bb.y0 <= ba.y1) & (ix.a != iy.a) & (ix.a != iy.b) &
-                            (ix.b != iy.a) & (ix.b != iy.b) & !((r > 0) & (ly < cy0 - ty));
-          near[m] = static_cast<uint32_t>(y);
-          m += keep;
+        if (avx2) {
+          m = near_pairs_avx2(ix, bucket_lanes, std::max(x + 1, first), n, r > 0, cy0 - ty, near.data());
+        } else {
+          for (size_t y = std::max(x + 1, first); y < n && local[y].box.x0 <= ba.x1; ++y) {
+            const Item& iy = local[y];
+            const Box& bb = iy.box;
+            // Overlap in y, no shared point (no proper crossing), and the corner not clearly
+            // below this bucket's row.
+            const double ly = std::max(ba.y0, bb.y0);
+            const bool keep = (ba.y0 <= bb.y1) & (bb.y0 <= ba.y1) & (ix.a != iy.a) & (ix.a != iy.b) &
+                              (ix.b != iy.a) & (ix.b != iy.b) & !((r > 0) & (ly < cy0 - ty));
+            near[m] = static_cast<uint32_t>(y);
+            m += keep;
+          }
         }
         // The candidates: pairs whose corner lies in this bucket (near its sides, the
         // bucket's own column and row decide: rare).
