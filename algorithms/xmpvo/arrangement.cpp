@@ -370,7 +370,8 @@ constexpr int32_t kRankedMax = 64;
 // one, about 40% of index_crossings' time. Equal keys share a count, which the places'
 // sum shows (it falls short of 0 + 1 + ... + n - 1); those lists, the longer ones and any
 // with a NaN key go to std::stable_sort.
-void sort_edge_crossings(EdgeCrossing* p, int32_t n, std::vector<EdgeCrossing>& scratch) {
+__attribute__((target_clones("avx2", "default"))) void sort_edge_crossings(EdgeCrossing* p, int32_t n,
+                                                                          std::vector<EdgeCrossing>& scratch) {
   if (n < 2) return;
   auto by_key = [](const EdgeCrossing& a, const EdgeCrossing& b) { return a.key < b.key; };
   auto stable = [&] {
@@ -378,28 +379,24 @@ void sort_edge_crossings(EdgeCrossing* p, int32_t n, std::vector<EdgeCrossing>& 
     std::stable_sort(p, p + n, by_key);
   };
   if (n > kRankedMax) return stable();
-  alignas(16) double key[kRankedMax];
+  // Four keys a compare (GCC's vector types: one AVX2 compare in the avx2 clone, two SSE2
+  // ones otherwise); a true compare is all ones, -1 as an integer.
+  typedef double Keys __attribute__((vector_size(32)));
+  typedef int64_t Counts __attribute__((vector_size(32)));
+  Keys key4[kRankedMax / 4];
+  double* key = reinterpret_cast<double*>(key4);
   bool nan = false;
   for (int32_t i = 0; i < n; ++i) key[i] = p[i].key, nan |= std::isnan(key[i]);
   if (nan) return stable();
-  const int32_t padded = (n + 1) & ~1;
-  if (padded > n) key[n] = INFINITY;  // never smaller than a key
+  const int32_t groups = (n + 3) / 4;
+  for (int32_t i = n; i < 4 * groups; ++i) key[i] = INFINITY;  // never smaller than a key
   int64_t place[kRankedMax], sum = 0;
   bool moved = false;
   for (int32_t i = 0; i < n; ++i) {
-    int64_t r = 0;
-#if defined(__SSE2__)
-    // Two keys a compare; a true compare is all ones, -1 as an integer.
-    const __m128d x = _mm_set1_pd(key[i]);
-    __m128i count = _mm_setzero_si128();
-    for (int32_t j = 0; j < padded; j += 2)
-      count = _mm_sub_epi64(count, _mm_castpd_si128(_mm_cmplt_pd(_mm_load_pd(key + j), x)));
-    alignas(16) int64_t c[2];
-    _mm_store_si128(reinterpret_cast<__m128i*>(c), count);
-    r = c[0] + c[1];
-#else
-    for (int32_t j = 0; j < n; ++j) r += key[j] < key[i];
-#endif
+    const double x = key[i];
+    Counts count = {0, 0, 0, 0};
+    for (int32_t g = 0; g < groups; ++g) count -= key4[g] < x;
+    const int64_t r = count[0] + count[1] + count[2] + count[3];
     place[i] = r;
     sum += r;
     moved |= r != i;
