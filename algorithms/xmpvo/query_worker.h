@@ -5,6 +5,7 @@
 // projected edge from crossing to crossing.
 #pragma once
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <utility>
@@ -27,8 +28,9 @@ struct Wedge {
 class Worker {
  public:
   Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane,
-         const std::vector<int32_t>& point_vertex)
+         const std::vector<int32_t>& point_vertex, double widest_face)
       : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
+        widest_face_(widest_face),
         face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
         key_(in.ext.face.size()), touch_(in.ext.face.size()) {
     signs_.side = signs_.dis_side = 0;
@@ -76,6 +78,7 @@ class Worker {
   void emit_sectors(const ArrVertex& v);
   int orient_at(const ArrVertex& v, int32_t p, int32_t q);
   int orient_raw(const ArrVertex& v, int32_t p, int32_t q);
+  int orient_filtered(const ArrVertex& v, int32_t p, int32_t q);
   int depth(int32_t x, int32_t y);
   void emit(int32_t nearer, int32_t farther);
   bool covers_after(const ArrVertex& v, const Wedge& w, int32_t ray);
@@ -103,6 +106,7 @@ class Worker {
   const QueryInput& in_;
   const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
   const std::vector<int32_t>& point_vertex_;  // per exterior point, its vertex id or -1
+  const double widest_face_;                  // largest side of a kept face's box (face_box)
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
 
@@ -118,6 +122,9 @@ class Worker {
   // The vertex's projected position and radius for the double filter (uv_filter.h);
   // filter_ off in double / compare modes and when the view's uv rounding is too large.
   double xc_ = 0, yc_ = 0, rx_ = 0, ry_ = 0;
+  // A bound on uv_side's own bound for every side test of the query (begin()): beyond it a
+  // side is certain from orient2d's six operations alone (orient_raw). Infinite: none.
+  double quick_ = INFINITY;
   bool filter_ = false, rechecked_ = false;
   bool undecided_ = false;  // a depth comparison returned 0 (the sweep then falls back)
   // The sweep's sorted covering faces of the open segment before the current crossing

@@ -29,7 +29,24 @@ int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
   return orient_raw(v, p, q);
 }
 
+// uv_side's o, against the query's bound first: beyond it the sign is the one uv_side
+// would give (begin()), so only signs near the bound pay for uv_side's own.
 int Worker::orient_raw(const ArrVertex& v, int32_t p, int32_t q) {
+  if (filter_) {
+    const Projection& pr = in_.proj;
+    const Uv up = pr.uv[p], uq = pr.uv[q];
+    const double ax = uq.first - up.first, ay = uq.second - up.second;
+    const double o = ax * (yc_ - up.second) - ay * (xc_ - up.first);
+    const int s = (o > quick_) - (o < -quick_);
+    if (s != 0) {
+      ++stats_.side_filtered;
+      return pr.sign_n * s;
+    }
+  }
+  return orient_filtered(v, p, q);
+}
+
+int Worker::orient_filtered(const ArrVertex& v, int32_t p, int32_t q) {
   if (filter_) {
     const Projection& pr = in_.proj;
     const int s = uv_side(xc_, yc_, rx_, ry_, pr.uv[p], pr.uv[q], pr.slack);
@@ -149,6 +166,19 @@ void Worker::begin(int32_t vi) {
     xc_ = 0.5 * (v.box.x0 + v.box.x1), yc_ = 0.5 * (v.box.y0 + v.box.y1);
     rx_ = 0.5 * (v.box.x1 - v.box.x0) + 1e-15 * std::fabs(xc_) + 1e-300;
     ry_ = 0.5 * (v.box.y1 - v.box.y0) + 1e-15 * std::fabs(yc_) + 1e-300;
+  }
+  // Every side test of a query takes p and q among the vertices of faces whose boxes
+  // overlap the vertex box (its own faces, those gather() classifies, the swept edge's),
+  // so |q - p| and |x - p| are at most D = 2 widest + 4 r per coordinate. uv_sign's bound
+  // is then at most D (ex + ey + 2 ea) + ea (ex + ey) + 2e-15 D^2, and its test 1.001 times
+  // that, taken with 2% to spare for the rounding of both.
+  quick_ = INFINITY;  // no sign beyond it
+  if (filter_ && in_.quick_sides) {
+    const double s = proj.slack, ea = 2 * s, ex = rx_ + s, ey = ry_ + s;
+    const double d = 2 * widest_face_ + 4 * std::max(rx_, ry_);
+    quick_ = 1.02 * (d * (ex + ey + 2 * ea) + ea * (ex + ey) + 2e-15 * d * d);
+    // NaN, or so small that the bound's terms may have underflowed: none.
+    if (!(quick_ > 1e-290)) quick_ = INFINITY;
   }
 }
 
@@ -311,7 +341,12 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   for (int32_t f : in.proj.kept) view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
   std::vector<int32_t> point_vertex(in.ext.points.size(), -1);
   for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex); });
+  double widest = 0;  // NaN boxes never overlap a vertex box: not counted
+  for (int32_t f : in.proj.kept) {
+    const Box& b = in.proj.face_box[f];
+    widest = std::max({widest, b.x1 - b.x0, b.y1 - b.y0});
+  }
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex, widest); });
   auto queries = [&](size_t v0, size_t v1, bool keep_starts) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <string>
+
 #include "algorithms/xmpvo/edge_contacts.h"
 #include "algorithms/xmpvo/ray_queries.h"
 #include "datasets/datasets.h"
@@ -21,7 +23,7 @@ struct Relations {
   QueryStats stats;
 };
 
-Relations relations(const Scene& s, const Camera& view, bool sweep) {
+Relations relations(const Scene& s, const Camera& view, bool sweep, bool quick_sides = true) {
   const ExteriorFaces& ext = s.exterior_faces();
   std::vector<FacePlane> plane;
   for (size_t i = 0; i < ext.face.size(); ++i) plane.push_back(FacePlane::of(&ext.corners[4 * i]));
@@ -37,6 +39,7 @@ Relations relations(const Scene& s, const Camera& view, bool sweep) {
   QueryInput in{signs, ext, plane, s.face_planes(), proj, arr, sweep};
   const EdgeContacts contacts = find_edge_contacts(ext);
   in.conforming = contacts.triangles_only && contacts.touched_edges == 0;  // as the orderer
+  in.quick_sides = quick_sides;
   r.pairs = run_ray_queries(in, r.stats);
   return r;
 }
@@ -105,4 +108,26 @@ TEST(XmpvoEdgeSweep, SameRelationsOnOneAndTwoThreads) {
     swapped += one.stats.sweep_swaps;
   }
   EXPECT_GT(swapped, 0);
+}
+
+// The queries' one bound per query for the projected side tests (Worker::orient_raw)
+// decides only signs uv_side decides the same way: the same relations, and the same counts
+// of side tests decided by the filter and left to the exact predicate, with and without it
+// (one thread: a thread's sweeps reuse its last start, so the counts follow the split).
+TEST(XmpvoEdgeSweep, QuickSidesDecideAsTheFilter) {
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  for (const char* name : {"helix", "zoo", "gap", "touching-shifted", "touching-rotated", "touching-edge", "offset",
+                           "slivers", "edge-on"}) {
+    SCOPED_TRACE(name);
+    const Scene s = std::string(name) == "helix" ? dataset(name, {{"cells", "3000"}}) : dataset(name);
+    for (int v = 0; v < 2; ++v)
+      for (bool sweep : {true, false}) {
+        const Camera view = fibonacci_view(s.bounds(), 5, 2 * v, ViewOptions{160, 160});
+        const Relations quick = relations(s, view, sweep, true), plain = relations(s, view, sweep, false);
+        EXPECT_EQ(quick.pairs, plain.pairs) << "view " << v;
+        EXPECT_EQ(quick.stats.side_filtered, plain.stats.side_filtered) << "view " << v;
+        EXPECT_EQ(quick.stats.side_rechecked, plain.stats.side_rechecked) << "view " << v;
+        EXPECT_GT(quick.stats.side_filtered, 0);
+      }
+  }
 }
