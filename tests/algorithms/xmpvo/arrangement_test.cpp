@@ -58,14 +58,19 @@ Lists sorted_lists(const ExteriorFaces& ext, const Projection& proj) {
   return l;
 }
 
+// The scene's exterior faces projected for `view`, as the orderer projects them.
+void project(const Scene& s, const Camera& view, Signs& signs, Projection& proj) {
+  signs.g = ViewGeometry::of(view);
+  const Aabb box = s.mesh().bounds();
+  proj.run(s.exterior_faces(), view, signs, box.center(), box.radius());
+}
+
 // Builds the arrangement of `view` and compares its edge lists; returns the faces not kept.
 size_t expect_sorted_lists(Arrangement& arr, const Scene& s, const Camera& view) {
   const ExteriorFaces& ext = s.exterior_faces();
   Signs signs;
-  signs.g = ViewGeometry::of(view);
   Projection proj;
-  const Aabb box = s.mesh().bounds();
-  proj.run(ext, view, signs, box.center(), box.radius());
+  project(s, view, signs, proj);
   arr.build(ext, proj, signs);
   const Lists want = sorted_lists(ext, proj);
   EXPECT_EQ(arr.edges, want.edges);
@@ -97,10 +102,8 @@ TEST(XmpvoArrangement, BuildBeforeSetFacesIsRefused) {
   const Scene s = dataset("helix", {{"cells", "600"}});
   const Camera view = fibonacci_view(s.bounds(), 6, 1, ViewOptions{64, 64});
   Signs signs;
-  signs.g = ViewGeometry::of(view);
   Projection proj;
-  const Aabb box = s.mesh().bounds();
-  proj.run(s.exterior_faces(), view, signs, box.center(), box.radius());
+  project(s, view, signs, proj);
   Arrangement arr;
   EXPECT_THROW(arr.build(s.exterior_faces(), proj, signs), std::logic_error);
 }
@@ -161,10 +164,8 @@ TEST(XmpvoArrangement, EachEdgeHoldsItsCrossingsByKey) {
   const Camera view = fibonacci_view(s.bounds(), 6, 1, ViewOptions{256, 256});
   const ExteriorFaces& ext = s.exterior_faces();
   Signs signs;
-  signs.g = ViewGeometry::of(view);
   Projection proj;
-  const Aabb box = s.mesh().bounds();
-  proj.run(ext, view, signs, box.center(), box.radius());
+  project(s, view, signs, proj);
   Arrangement arr;
   arr.set_faces(ext);
   arr.build(ext, proj, signs);
@@ -196,10 +197,8 @@ TEST(XmpvoArrangement, FilterLanesMatchTheScalarFilter) {
     for (int vi : {0, 5, 11}) {
       const Camera view = fibonacci_view(s.bounds(), 14, vi, ViewOptions{256, 256});
       Signs signs;
-      signs.g = ViewGeometry::of(view);
       Projection proj;
-      const Aabb box = s.mesh().bounds();
-      proj.run(ext, view, signs, box.center(), box.radius());
+      project(s, view, signs, proj);
       Arrangement lanes, scalar;
       scalar.lanes = false;
       lanes.set_faces(ext);
