@@ -383,17 +383,16 @@ __attribute__((target_clones("avx2", "default"))) void sort_edge_crossings(EdgeC
   // ones otherwise); a true compare is all ones, -1 as an integer.
   typedef double Keys __attribute__((vector_size(32)));
   typedef int64_t Counts __attribute__((vector_size(32)));
-  Keys key4[kRankedMax / 4];
-  double* key = reinterpret_cast<double*>(key4);
+  Keys key4[kRankedMax / 4];  // key i in lane i % 4 of key4[i / 4]
   bool nan = false;
-  for (int32_t i = 0; i < n; ++i) key[i] = p[i].key, nan |= std::isnan(key[i]);
+  for (int32_t i = 0; i < n; ++i) key4[i / 4][i % 4] = p[i].key, nan |= std::isnan(p[i].key);
   if (nan) return stable();
   const int32_t groups = (n + 3) / 4;
-  for (int32_t i = n; i < 4 * groups; ++i) key[i] = INFINITY;  // never smaller than a key
+  for (int32_t i = n; i < 4 * groups; ++i) key4[i / 4][i % 4] = INFINITY;  // never smaller than a key
   int64_t place[kRankedMax], sum = 0;
   bool moved = false;
   for (int32_t i = 0; i < n; ++i) {
-    const double x = key[i];
+    const double x = p[i].key;
     Counts count = {0, 0, 0, 0};
     for (int32_t g = 0; g < groups; ++g) count -= key4[g] < x;
     const int64_t r = count[0] + count[1] + count[2] + count[3];
