@@ -178,7 +178,9 @@ TEST(XmpvoArrangement, EachEdgeHoldsItsCrossingsByKey) {
       const ArrVertex& v = arr.vertices[c.vertex];
       EXPECT_TRUE(v.e1 == static_cast<int32_t>(e) || v.e2 == static_cast<int32_t>(e));
       ++seen[c.vertex];
-      if (x > arr.edge_vertex_off[e]) EXPECT_LE(arr.edge_crossings[x - 1].key, c.key) << "edge " << e;
+      if (x > arr.edge_vertex_off[e]) {
+        EXPECT_LE(arr.edge_crossings[x - 1].key, c.key) << "edge " << e;
+      }
     }
   for (size_t v = arr.projected_vertices; v < arr.vertices.size(); ++v) EXPECT_EQ(seen[v], 2) << "vertex " << v;
   EXPECT_EQ(arr.edge_crossings.size(), 2 * crossings);
