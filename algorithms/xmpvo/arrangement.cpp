@@ -23,12 +23,6 @@ struct BucketEdge {
   int32_t a, b, id;
 };
 
-// The double filter of build() for the candidates cand[0, n) of edge ix, four a step: the
-// four orient2d of each pair in lanes, the same operations as the scalar `sign`, so the
-// same doubles. A pair whose four signs clear +-1.001 `quick` is decided here (apart: 0, else
-// 1); any other is left to `scalar` (build()'s filtered_cross), which reaches the same
-// answer for the quick signs and asks uv_sign for the rest. Writes {candidate, f} to
-// maybe[q] for f != 0, in candidate order; returns q.
 // A bucket's edges as the pair loop's first pass reads them, one array per field, four
 // entries of padding at the end (never read as edges: lanes past n are masked).
 struct BucketLanes {
@@ -85,6 +79,12 @@ __attribute__((target("avx2"), always_inline)) inline void lane_signs(__m256d o,
   neg = _mm256_movemask_pd(_mm256_cmp_pd(o, lo, _CMP_LT_OQ));
 }
 
+// The double filter of build() for the candidates cand[0, n) of edge ix, four a step: the
+// four orient2d of each pair in lanes, the same operations as the scalar `sign`, so the
+// same doubles. A pair whose four signs clear +-1.001 `quick` is decided here (apart: 0, else
+// 1); any other is left to `scalar` (build()'s filtered_cross), which reaches the same
+// answer for the quick signs and asks uv_sign for the rest. Writes {candidate, f} to
+// maybe[q] for f != 0, in candidate order; returns q.
 template <class Scalar>
 __attribute__((target("avx2"))) size_t filter_pairs_avx2(const BucketEdge& ix, const BucketEdge* local,
                                                          const uint32_t* cand, size_t n, double quick,

@@ -47,8 +47,8 @@ struct Arrangement {
   std::vector<EdgeCrossing> edge_crossings;
   // Candidate pairs the double filter decided, and those it left to the exact test.
   int64_t crossings_filtered = 0, crossings_rechecked = 0;
-  // The filter four pairs a step in AVX2 lanes where the CPU has them (the same answers:
-  // tests compare the two).
+  // The pair loop's first pass and double filter four pairs a step in AVX2 lanes where the
+  // CPU has them (the same answers: tests compare the two).
   bool lanes = true;
 
   // The unique edges of all of ext's faces, once per mesh (prepare): a view's edges are
