@@ -103,7 +103,7 @@ bool Worker::start_list(int32_t e) {
       start_point_ = a;
     } else {
       gather(v);
-      sort_inside(v);
+      sort_inside();
       start_inside_ = inside_;
       start_wedges_ = wedges_;
       if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes

@@ -19,6 +19,10 @@ namespace vob::xmpvo::detail {
 // A face with the query vertex on its projected boundary: it covers the directions from
 // ray s counter-clockwise (in the sign convention of D) to ray t; a half-plane when the
 // vertex is inside an edge, then `ref` is a face vertex strictly inside it.
+// Bit 0: the face with points p (n of them) holds the vertex (a point) or the edge (a, b);
+// bit 1: the edge (c, d). Faces that touch meet the vertex's ray at the same point.
+uint8_t touch_bits(const ArrVertex& v, const int32_t* p, int n);
+
 struct Wedge {
   int32_t face, s, t, ref;
   bool half;
@@ -32,12 +36,13 @@ class Worker {
       : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
         widest_face_(widest_face),
         face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
-        key_(in.ext.face.size()), touch_(in.ext.face.size()) {
+        key_(in.ext.face.size()), touch_stamp_(in.ext.face.size(), -1), touch_(in.ext.face.size()) {
     signs_.side = signs_.dis_side = 0;
   }
   size_t bytes() const {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
-            key_stamp_.capacity() + list_.capacity() + start_inside_.capacity()) * 4 +
+            key_stamp_.capacity() + touch_stamp_.capacity() + list_.capacity() + start_inside_.capacity() +
+            wedge_ray_.capacity()) * 4 + ray_side_.capacity() + before_.capacity() +
            (start_wedges_.capacity() + starts_wedges_.capacity()) * sizeof(Wedge) +
            starts_.capacity() * sizeof(Start) + starts_inside_.capacity() * 4 + plane_memo_key_.capacity() * 9 +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
@@ -81,10 +86,9 @@ class Worker {
   int orient_filtered(const ArrVertex& v, int32_t p, int32_t q);
   int depth(int32_t x, int32_t y);
   void emit(int32_t nearer, int32_t farther);
-  bool covers_after(const ArrVertex& v, const Wedge& w, int32_t ray);
   bool before(int32_t x, int32_t y);
   void classify(const ArrVertex& v, int32_t f);
-  void sort_inside(const ArrVertex& v);
+  void sort_inside();
   const Vec3& pt(int32_t p) const { return in_.ext.points[p]; }
   // Edge sweep (edge_sweep.cpp).
   bool sweep(int32_t e);
@@ -109,10 +113,17 @@ class Worker {
   const double widest_face_;                  // largest side of a kept face's box (face_box)
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
+  // Which of the current vertex's points face f holds (touch_bits), once per query.
+  int touch(int32_t f);
 
   std::vector<int32_t> inside_, rays_, sector_, face_stamp_, key_stamp_;
+  // emit_sectors' memos: per wedge the places of its rays in rays_; per pair of rays
+  // their side, per pair of wedges before() (2: not asked yet).
+  std::vector<int32_t> wedge_ray_;
+  std::vector<int8_t> ray_side_, before_;
   std::vector<PlaneKey> key_;  // per face, valid where key_stamp_ is the current query
-  std::vector<uint8_t> touch_;  // per face, valid with key_: touch bits
+  std::vector<int32_t> touch_stamp_;  // per face: the query touch_ is valid for
+  std::vector<uint8_t> touch_;        // per face: touch() bits
   int32_t vi_ = -1;            // the current query
   int32_t gather_ = 0;         // face_stamp_ of the current gather
   std::vector<std::pair<double, int32_t>> keys_;

@@ -71,11 +71,10 @@ int Worker::orient_filtered(const ArrVertex& v, int32_t p, int32_t q) {
 int Worker::depth(int32_t x, int32_t y) {
   ++stats_.depth_calls;
   const ExteriorFaces& e = in_.ext;
-  const PlaneKey &kx = key(x), &ky = key(y);
   // Faces sharing the vertex (or the crossing edge) meet the ray at the same point.
   int at = 0;
-  if ((touch_[x] & touch_[y]) == 0) {
-    at = compare_keys(kx, ky);
+  if ((touch(x) & touch(y)) == 0) {
+    at = compare_keys(key(x), key(y));
     if (at == 2) {
       ++stats_.depth_rechecked;
       rechecked_ = true;
@@ -94,14 +93,21 @@ const PlaneKey& Worker::key(int32_t f) {
   if (key_stamp_[f] != vi_) {
     key_stamp_[f] = vi_;
     key_[f] = plane_key(signs_.g, terms_, in_.plane[f], view_plane_[f]);
-    // Bit 0: f holds the vertex (a point) or the edge (a, b); bit 1: the edge (c, d).
-    const ArrVertex& v = *current_;
-    const int32_t* p = &in_.ext.vertex[4 * f];
-    const int n = in_.ext.size[f];
-    auto has = [&](int32_t q) { return p[0] == q || p[1] == q || p[2] == q || (n > 3 && p[3] == q); };
-    touch_[f] = v.b < 0 ? has(v.a) : (has(v.a) && has(v.b)) | ((has(v.c) && has(v.d)) << 1);
   }
   return key_[f];
+}
+
+uint8_t touch_bits(const ArrVertex& v, const int32_t* p, int n) {
+  auto has = [&](int32_t q) { return p[0] == q || p[1] == q || p[2] == q || (n > 3 && p[3] == q); };
+  return static_cast<uint8_t>(v.b < 0 ? has(v.a) : (has(v.a) && has(v.b)) | ((has(v.c) && has(v.d)) << 1));
+}
+
+int Worker::touch(int32_t f) {
+  if (touch_stamp_[f] != vi_) {
+    touch_stamp_[f] = vi_;
+    touch_[f] = touch_bits(*current_, &in_.ext.vertex[4 * f], in_.ext.size[f]);
+  }
+  return touch_[f];
 }
 
 void Worker::emit(int32_t nearer, int32_t farther) {
@@ -120,15 +126,6 @@ void Worker::emit(int32_t nearer, int32_t farther) {
   }
 }
 
-bool Worker::covers_after(const ArrVertex& v, const Wedge& w, int32_t ray) {
-  if (ray == w.s) return true;
-  if (ray == w.t) return false;
-  const int os = orient_at(v, w.s, ray);
-  if (!w.half) return os >= 0 && orient_at(v, ray, w.t) > 0;
-  if (os != 0) return os > 0;
-  return orient_at(v, ray, w.ref) > 0;  // along s or opposite it
-}
-
 void Worker::run_query(int32_t vi) {
   begin(vi);
   const ArrVertex& v = *current_;
@@ -136,7 +133,7 @@ void Worker::run_query(int32_t vi) {
   if (wedges_.empty()) return;
   const bool undecided = undecided_;
   undecided_ = false;
-  sort_inside(v);
+  sort_inside();
   if (keep_starts_ && v.b < 0 && !undecided_) {
     starts_.push_back({vi, static_cast<int32_t>(starts_inside_.size()), static_cast<int32_t>(inside_.size()),
                        static_cast<int32_t>(starts_wedges_.size()), static_cast<int32_t>(wedges_.size())});
@@ -205,7 +202,19 @@ void Worker::gather(const ArrVertex& v) {
 // The relations at v from inside_ (sorted front to back) and wedges_.
 void Worker::emit_sectors(const ArrVertex& v) {
   const int32_t ni = static_cast<int32_t>(inside_.size());
+  // A face with the point v as a vertex meets v's ray at v, so each depth() against an
+  // inside face (none holds v) is the sign of that face's depth against v's, the same for
+  // all of them, unless a plane passes through v (0, then the full test, which may differ):
+  // one search serves every such face when it met none.
+  int32_t at_point = -1;
   for (Wedge& w : wedges_) {
+    const int32_t* p = &in_.ext.vertex[4 * w.face];
+    const bool own = v.b < 0 && (p[0] == v.a || p[1] == v.a || p[2] == v.a || (in_.ext.size[w.face] > 3 && p[3] == v.a));
+    if (own && at_point >= 0) {
+      w.pos = at_point;
+      continue;
+    }
+    const int64_t full = stats_.depth_full;
     int32_t lo = 0, hi = ni;
     while (lo < hi) {
       const int32_t mid = (lo + hi) / 2;
@@ -213,16 +222,47 @@ void Worker::emit_sectors(const ArrVertex& v) {
       else lo = mid + 1;
     }
     w.pos = lo;
+    if (own && stats_.depth_full == full) at_point = lo;
   }
   rays_.clear();
+  wedge_ray_.clear();  // per wedge, the places of its s and t in rays_
   for (const Wedge& w : wedges_)
-    for (int32_t r : {w.s, w.t})
-      if (std::find(rays_.begin(), rays_.end(), r) == rays_.end()) rays_.push_back(r);
-  for (int32_t ray : rays_) {
-    // The sector just counter-clockwise of `ray`.
+    for (int32_t r : {w.s, w.t}) {
+      const auto at = std::find(rays_.begin(), rays_.end(), r);
+      wedge_ray_.push_back(static_cast<int32_t>(at - rays_.begin()));
+      if (at == rays_.end()) rays_.push_back(r);
+    }
+  // Every wedge is tested against every ray, and the wedges of a sector meet again in the
+  // next ones: each side and each order is asked once a query. Exact signs are
+  // antisymmetric, so one test gives both sides of a pair of rays.
+  const size_t nr = rays_.size(), nw = wedges_.size();
+  const bool exact = signs_.mode == Mode::Exact;
+  ray_side_.assign(nr * nr, 2);
+  before_.assign(nw * nw, 2);
+  auto side = [&](int32_t i, int32_t j) {
+    int8_t& m = ray_side_[i * nr + j];
+    if (m == 2) {
+      m = static_cast<int8_t>(orient_at(v, rays_[i], rays_[j]));
+      if (exact) ray_side_[j * nr + i] = static_cast<int8_t>(-m);
+    }
+    return int(m);
+  };
+  // Whether wedge k covers the sector just counter-clockwise of ray r.
+  auto covers = [&](size_t k, int32_t r) {
+    const Wedge& w = wedges_[k];
+    const int32_t si = wedge_ray_[2 * k], ti = wedge_ray_[2 * k + 1];
+    if (r == si) return true;
+    if (r == ti) return false;
+    const int os = side(si, r);
+    if (!w.half) return os >= 0 && side(r, ti) > 0;
+    if (os != 0) return os > 0;
+    return orient_at(v, rays_[r], w.ref) > 0;  // along s or opposite it
+  };
+  for (int32_t r = 0; r < static_cast<int32_t>(nr); ++r) {
+    // The sector just counter-clockwise of ray r.
     sector_.clear();
-    for (int32_t k = 0; k < static_cast<int32_t>(wedges_.size()); ++k)
-      if (covers_after(v, wedges_[k], ray)) sector_.push_back(k);
+    for (int32_t k = 0; k < static_cast<int32_t>(nw); ++k)
+      if (covers(k, r)) sector_.push_back(k);
     ++stats_.sectors;
     stats_.sector_faces += ni + static_cast<int64_t>(sector_.size());
     // Insertion sort (terminates whatever the comparator says on invalid input).
@@ -250,7 +290,9 @@ void Worker::emit_sectors(const ArrVertex& v) {
 bool Worker::before(int32_t x, int32_t y) {
   const Wedge &a = wedges_[x], &b = wedges_[y];
   if (a.pos != b.pos) return a.pos < b.pos;
-  return depth(a.face, b.face) < 0;
+  int8_t& m = before_[x * wedges_.size() + y];
+  if (m == 2) m = depth(a.face, b.face) < 0;
+  return m;
 }
 
 void Worker::classify(const ArrVertex& v, int32_t f) {
@@ -263,8 +305,14 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
     if (s < 0) return;
     if (s == 0) zeros |= 1u << k;
   }
+  // depth()'s touch bits, while the face's points are at hand.
+  touch_stamp_[f] = vi_;
+  touch_[f] = touch_bits(v, p, n);
   if (zeros == 0) {
     inside_.push_back(f);
+    // Its plane key is computed next (sort_inside): asked for now.
+    __builtin_prefetch(&in_.plane[f].n);
+    __builtin_prefetch(&view_plane_[f]);
     return;
   }
   // A point on the boundary of a face it is not a vertex of: the edge sweep's premise fails.
@@ -294,19 +342,14 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
   wedges_.push_back(w);
 }
 
-// Inside faces front to back: approximate depth along v's ray, then an insertion pass
-// with the exact order (linear when the keys are right).
-void Worker::sort_inside(const ArrVertex& v) {
-  const Vec3 eye = signs_.g.eye;
-  Vec3 at = pt(v.a);
-  if (v.b >= 0) at = pt(v.a) + (pt(v.b) - pt(v.a)) * v.t;
-  const Vec3 org = signs_.g.ortho ? at : eye;
-  const Vec3 d = signs_.g.ortho ? signs_.g.dir : at - eye;
-  const FacePlanes& planes = in_.face_planes;
+// Inside faces front to back: by the plane keys' approximate ray parameters (the keys are
+// needed for the exact comparisons anyway), then an insertion pass with the exact order
+// (linear when the approximation is right).
+void Worker::sort_inside() {
   keys_.clear();
   for (int32_t f : inside_) {
-    const Vec3 n = planes.normal[in_.ext.face[f]];
-    double t = -(dot(n, org) + planes.offset[in_.ext.face[f]]) / dot(n, d);
+    const PlaneKey& k = key(f);
+    double t = k.num.v / k.den.v;
     if (!(t == t)) t = 0;
     keys_.push_back({t, f});
   }

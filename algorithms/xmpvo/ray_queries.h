@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "algorithms/xmpvo/arrangement.h"
-#include "harness/scene/mesh_faces.h"
+#include "harness/scene/exterior_faces.h"
 
 namespace vob::xmpvo {
 
@@ -22,7 +22,6 @@ struct QueryInput {
   const Signs& signs;  // mode and view geometry
   const ExteriorFaces& ext;
   const std::vector<FacePlane>& plane;  // exact-filter planes of the exterior faces
-  const FacePlanes& face_planes;        // the scene's, for approximate depth keys
   const Projection& proj;
   const Arrangement& arr;
   // Crossings by the edge sweep (edge_sweep.cpp) where the view allows; off: a full query

@@ -91,7 +91,7 @@ Ordering XmpvoOrderer::order(const Camera& view, PhaseClock& clock) {
   }
   {
     auto p = clock.phase("ray queries");
-    xmpvo::QueryInput in{signs_, *ext_, plane_, core_.scene().face_planes(), proj_, arr_};
+    xmpvo::QueryInput in{signs_, *ext_, plane_, proj_, arr_};
     in.conforming = contacts_.triangles_only && contacts_.touched_edges == 0;
     pairs_ = xmpvo::run_ray_queries(in, stats_);
     signs_.side += stats_.side;

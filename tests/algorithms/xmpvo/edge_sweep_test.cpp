@@ -36,7 +36,7 @@ Relations relations(const Scene& s, const Camera& view, bool sweep, bool quick_s
   arr.set_faces(ext);
   arr.build(ext, proj, signs);
   Relations r;
-  QueryInput in{signs, ext, plane, s.face_planes(), proj, arr, sweep};
+  QueryInput in{signs, ext, plane, proj, arr, sweep};
   const EdgeContacts contacts = find_edge_contacts(ext);
   in.conforming = contacts.triangles_only && contacts.touched_edges == 0;  // as the orderer
   in.quick_sides = quick_sides;
