@@ -191,7 +191,9 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
 // find_edge_contacts) no face does, so the place is exact with no depth comparison;
 // otherwise its neighbours in list_ confirm it (place()'s test). Where a face of e is its
 // neighbour, the rays meet e and e' at distinct points (orient3d(c, d, a, b) != 0), so that
-// face keeps its side of it. Returns false, with list_ unchanged, wherever the general path
+// face keeps its side of it. On a conforming surface that needs no test: the two edges
+// cross properly in projection, so coplanar they would meet in space, and each would meet
+// the other's faces. Returns false, with list_ unchanged, wherever the general path
 // must decide instead (which face leaves unknown, a neighbour not confirming).
 bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
@@ -216,7 +218,7 @@ bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
   }
   bool beside = false;
   for (int k = 0; k < n_eface_; ++k) beside |= i == epos_[k] - 1 || i == epos_[k];
-  if (beside) {
+  if (beside && !in_.conforming) {
     const auto [a, b] = arr.edges[e];
     const auto [c, d] = arr.edges[xing.other];
     if (orient3d(pt(c), pt(d), pt(a), pt(b)) == 0) return false;
