@@ -86,28 +86,16 @@ bool Worker::start_list(int32_t e) {
   const auto [a, b] = in_.arr.edges[e];
   const int32_t va = point_vertex_[a];
   if (va < 0) return false;
-  begin(va);
+  if (vi_ != va) begin(va);  // the same context, and its plane keys stay valid
   const ArrVertex& v = *current_;
-  // Edges are numbered by their first point, so consecutive sweeps mostly start at the
-  // same point: its covering faces are found and sorted once.
+  // The sweeps from a follow a's point query, which left its sorted covering faces (unless
+  // undecided; a sweep's fallback queries leave them too).
   if (start_point_ != a) {
-    start_point_ = -1;
-    const std::pair<const Worker*, int32_t> at = start_of_ ? (*start_of_)[va] : std::pair<const Worker*, int32_t>{};
-    if (at.first) {
-      // The point query's, when it kept them.
-      const Start& st = at.first->starts_[at.second];
-      const auto& ins = at.first->starts_inside_;
-      const auto& wed = at.first->starts_wedges_;
-      start_inside_.assign(ins.begin() + st.inside0, ins.begin() + st.inside0 + st.ninside);
-      start_wedges_.assign(wed.begin() + st.wedge0, wed.begin() + st.wedge0 + st.nwedge);
-      start_point_ = a;
-    } else {
-      gather(v);
-      sort_inside();
-      start_inside_ = inside_;
-      start_wedges_ = wedges_;
-      if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes
-    }
+    gather(v);
+    sort_inside();
+    start_inside_ = inside_;
+    start_wedges_ = wedges_;
+    if (!undecided_) start_point_ = a;  // else this sweep falls back, the next recomputes
   }
   list_ = start_inside_;
   for (const Wedge& w : start_wedges_) {

@@ -43,8 +43,7 @@ class Worker {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
             key_stamp_.capacity() + touch_stamp_.capacity() + list_.capacity() + start_inside_.capacity() +
             wedge_ray_.capacity()) * 4 + ray_side_.capacity() + before_.capacity() +
-           (start_wedges_.capacity() + starts_wedges_.capacity()) * sizeof(Wedge) +
-           starts_.capacity() * sizeof(Start) + starts_inside_.capacity() * 4 + plane_memo_key_.capacity() * 9 +
+           start_wedges_.capacity() * sizeof(Wedge) + plane_memo_key_.capacity() * 9 +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
            wedges_.capacity() * sizeof(Wedge) + (pairs_.capacity() + seen_.capacity()) * 8;
   }
@@ -57,17 +56,13 @@ class Worker {
   // cannot decide (edge_sweep.cpp) falls back to full queries of the edge's crossings.
   void sweep_edge(int32_t e);
 
-  // The point queries' sorted covering faces and wedges (kept when keep_starts_), for the
-  // sweeps starting there; start_of_, set between the point queries and the sweeps, gives
-  // per point vertex the worker and index of its entry (run_ray_queries).
-  struct Start {
-    int32_t vi, inside0, ninside, wedge0, nwedge;
-  };
-  bool keep_starts_ = false;
-  std::vector<Start> starts_;
-  std::vector<int32_t> starts_inside_;
-  std::vector<Wedge> starts_wedges_;
-  const std::vector<std::pair<const Worker*, int32_t>>* start_of_ = nullptr;
+  // The full query of point vertex vi, then the sweeps of edges [e0, e1) (those starting
+  // at that point), from its sorted covering faces while they are at hand. The
+  // sweeps are skipped once this worker has seen a degeneracy (the view is then answered
+  // by full queries: run_ray_queries).
+  void query_and_sweep(int32_t vi, const int32_t* e0, const int32_t* e1);
+  // Forget the pairs and counts so far (a degenerate view starts over with full queries).
+  void reset();
 
   QueryStats stats_;
   Signs signs_;

@@ -134,14 +134,34 @@ void Worker::run_query(int32_t vi) {
   const bool undecided = undecided_;
   undecided_ = false;
   sort_inside();
-  if (keep_starts_ && v.b < 0 && !undecided_) {
-    starts_.push_back({vi, static_cast<int32_t>(starts_inside_.size()), static_cast<int32_t>(inside_.size()),
-                       static_cast<int32_t>(starts_wedges_.size()), static_cast<int32_t>(wedges_.size())});
-    starts_inside_.insert(starts_inside_.end(), inside_.begin(), inside_.end());
-    starts_wedges_.insert(starts_wedges_.end(), wedges_.begin(), wedges_.end());
+  if (v.b < 0) {
+    // The sweeps from this point start from its sorted faces (start_list).
+    start_point_ = -1;
+    if (!undecided_) {
+      start_inside_ = inside_;
+      start_wedges_ = wedges_;
+      start_point_ = v.a;
+    }
   }
   undecided_ |= undecided;
   emit_sectors(v);
+}
+
+void Worker::query_and_sweep(int32_t vi, const int32_t* e0, const int32_t* e1) {
+  query(vi);
+  if (degenerate_seen_) return;
+  for (const int32_t* e = e0; e < e1; ++e) sweep_edge(*e);
+  // Only a point query's degeneracy is the view's (a crossing's full query may meet one
+  // in a sweep's fallback without making the other sweeps wrong).
+  degenerate_seen_ = false;
+}
+
+void Worker::reset() {
+  pairs_.clear();
+  std::fill(seen_.begin(), seen_.end(), 0);
+  stats_ = QueryStats{};
+  signs_.side = signs_.dis_side = 0;
+  start_point_ = -1;
 }
 
 // The query context of vertex vi: its ray, depth terms and filter position.
@@ -390,34 +410,40 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     widest = std::max({widest, b.x1 - b.x0, b.y1 - b.y0});
   }
   tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex, widest); });
-  auto queries = [&](size_t v0, size_t v1, bool keep_starts) {
+  auto queries = [&](size_t v0, size_t v1) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
-      w.keep_starts_ = keep_starts;
       for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
     });
   };
-  // Points first: they tell whether the view is free of the degeneracies the sweep
-  // cannot see (a point on another face's projected boundary).
   const bool sweep = in.sweep && in.signs.mode == Mode::Exact;
-  queries(0, arr.projected_vertices, sweep);
   bool degenerate = false;
-  for (const Worker& w : workers) degenerate |= w.degenerate_seen_;
-  std::vector<std::pair<const Worker*, int32_t>> start_of;
-  if (!sweep || degenerate) {
-    queries(arr.projected_vertices, arr.vertices.size(), false);
-  } else {
-    // The sweeps start from the point queries' sorted faces.
-    start_of.assign(arr.projected_vertices, {nullptr, -1});
-    for (Worker& w : workers) {
-      for (size_t k = 0; k < w.starts_.size(); ++k) start_of[w.starts_[k].vi] = {&w, static_cast<int32_t>(k)};
-      w.start_of_ = &start_of;
-    }
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, arr.edges.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+  if (sweep) {
+    // Each point's query, then the sweeps of the edges starting there (CSR by point vertex;
+    // an edge whose first point has none is swept last, and falls back to full queries).
+    const size_t np = arr.projected_vertices;
+    std::vector<int32_t> edge_off(np + 2, 0), edge_ids(arr.edges.size());
+    auto slot = [&](size_t e) {
+      const int32_t va = point_vertex[arr.edges[e].first];
+      return va < 0 ? np : static_cast<size_t>(va);
+    };
+    for (size_t e = 0; e < arr.edges.size(); ++e) ++edge_off[slot(e) + 1];
+    for (size_t v = 0; v <= np; ++v) edge_off[v + 1] += edge_off[v];
+    std::vector<int32_t> fill(edge_off.begin(), edge_off.end() - 1);
+    for (size_t e = 0; e < arr.edges.size(); ++e) edge_ids[fill[slot(e)]++] = static_cast<int32_t>(e);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, np, 256), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
-      for (size_t e = r.begin(); e < r.end(); ++e) w.sweep_edge(static_cast<int32_t>(e));
+      for (size_t v = r.begin(); v < r.end(); ++v)
+        w.query_and_sweep(static_cast<int32_t>(v), &edge_ids[edge_off[v]], &edge_ids[edge_off[v + 1]]);
     });
+    for (int32_t x = edge_off[np]; x < edge_off[np + 1]; ++x) workers.local().sweep_edge(edge_ids[x]);
+    // A point on another face's projected boundary, which the sweeps cannot see: the
+    // view is answered by full queries instead.
+    for (const Worker& w : workers) degenerate |= w.degenerate_seen_;
+    if (degenerate)
+      for (Worker& w : workers) w.reset();
   }
+  if (!sweep || degenerate) queries(0, arr.vertices.size());
   std::vector<std::pair<int32_t, int32_t>> pairs;
   stats = QueryStats{};
   for (Worker& w : workers) {
