@@ -132,9 +132,13 @@ bool Worker::start_list(int32_t e) {
 bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
   const int32_t other = xing.other;
+  xvi_ = xing.vertex, n_psign_ = 0;
+  // A swap on a conforming surface does not read the crossed edge's points (a random read
+  // per crossing): they are looked up after it.
+  if (in_.conforming && swap(e, xing)) return true;
   const auto [c, d] = arr.edges[other];
-  xvi_ = xing.vertex, xc_pt_ = c, xd_pt_ = d, n_psign_ = 0;
-  if (swap(e, xing)) return true;
+  xc_pt_ = c, xd_pt_ = d;
+  if (!in_.conforming && swap(e, xing)) return true;
   const int32_t a = arr.edges[e].first;
   const int sa = point_side(a, c, d);
   if (sa == 0) return false;
