@@ -38,13 +38,16 @@ struct BucketLanes {
 
 // build()'s first pass for edge ix, four later edges a step: the edges y = y0, y0 + 1, ...
 // while their boxes start at or left of ix's right side (the run; y < n), kept in near
-// (in order) when their boxes overlap in y, they share no point with ix and their corner
-// is not clearly below the bucket's row (r > 0, below `floor`); returns how many. The
-// same comparisons as the scalar loop, lane by lane (std::max(p, q) is max_pd(q, p)).
+// (in order) when their boxes overlap in y, they share no point with ix, their corner is
+// not clearly below the bucket's row (r > 0, below `floor`) and it lies in this bucket:
+// clearly inside (beyond x_in and y_in), or `own_corner(y)` says so; returns how many. The
+// same comparisons as the scalar loops, lane by lane (std::max(p, q) is max_pd(q, p)).
+template <class OwnCorner>
 __attribute__((target("avx2"))) size_t near_pairs_avx2(const BucketEdge& ix, const BucketLanes& l, size_t y0,
-                                                       size_t n, bool below, double floor, uint32_t* near) {
+                                                       size_t n, bool below, double floor, double x_in, double y_in,
+                                                       OwnCorner own_corner, uint32_t* near) {
   const __m256d ax1 = _mm256_set1_pd(ix.box.x1), ay0 = _mm256_set1_pd(ix.box.y0), ay1 = _mm256_set1_pd(ix.box.y1);
-  const __m256d vfloor = _mm256_set1_pd(floor);
+  const __m256d vfloor = _mm256_set1_pd(floor), vx_in = _mm256_set1_pd(x_in), vy_in = _mm256_set1_pd(y_in);
   const __m128i ia = _mm_set1_epi32(ix.a), ib = _mm_set1_epi32(ix.b);
   const int below_mask = below ? 0xF : 0;
   size_t m = 0;
@@ -55,13 +58,21 @@ __attribute__((target("avx2"))) size_t near_pairs_avx2(const BucketEdge& ix, con
     const int end = __builtin_ctz(~in_run);  // lanes [0, end) are in the run
     const int overlap = _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(ay0, by1, _CMP_LE_OQ),
                                                          _mm256_cmp_pd(by0, ay1, _CMP_LE_OQ)));
-    const int low = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_max_pd(by0, ay0), vfloor, _CMP_LT_OQ)) & below_mask;
+    const __m256d ly = _mm256_max_pd(by0, ay0);
+    const int low = _mm256_movemask_pd(_mm256_cmp_pd(ly, vfloor, _CMP_LT_OQ)) & below_mask;
+    const int inside = _mm256_movemask_pd(_mm256_and_pd(_mm256_cmp_pd(x0, vx_in, _CMP_GT_OQ),
+                                                        _mm256_cmp_pd(ly, vy_in, _CMP_GT_OQ)));
     const __m128i pa = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&l.a[y]));
     const __m128i pb = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&l.b[y]));
     const __m128i shared = _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi32(ia, pa), _mm_cmpeq_epi32(ia, pb)),
                                         _mm_or_si128(_mm_cmpeq_epi32(ib, pa), _mm_cmpeq_epi32(ib, pb)));
     const int apart = ~_mm_movemask_ps(_mm_castsi128_ps(shared)) & 0xF;
-    const int keep = overlap & apart & ~low & ((1 << end) - 1);
+    int keep = overlap & apart & ~low & ((1 << end) - 1);
+    // Corners near the bucket's sides (rare): the bucket's own column and row decide.
+    for (int edge = keep & ~inside; edge != 0; edge &= edge - 1) {
+      const int j = __builtin_ctz(edge);
+      if (!own_corner(y + j)) keep &= ~(1 << j);
+    }
     for (int j = 0; j < 4; ++j) {
       near[m] = static_cast<uint32_t>(y + j);
       m += (keep >> j) & 1;
@@ -229,10 +240,18 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
       for (size_t x = 0; x < n; ++x) {
         const Item& ix = local[x];
         const Box& ba = ix.box;
-        size_t m = 0;
+        // The candidates: pairs whose corner lies in this bucket (near its sides, the
+        // bucket's own column and row decide: rare).
+        auto own_corner = [&](size_t y) {
+          const double lx = local[y].box.x0, ly = std::max(ba.y0, local[y].box.y0);  // lx = max(ba.x0, bb.x0): sorted
+          return grid.col(lx) == c && grid.row(ly) == r;
+        };
+        size_t nc = 0;
         if (avx2) {
-          m = near_pairs_avx2(ix, bucket_lanes, std::max(x + 1, first), n, r > 0, cy0 - ty, near.data());
+          nc = near_pairs_avx2(ix, bucket_lanes, std::max(x + 1, first), n, r > 0, cy0 - ty, cx0 + tx, cy0 + ty,
+                               own_corner, near.data());
         } else {
+          size_t m = 0;
           for (size_t y = std::max(x + 1, first); y < n && local[y].box.x0 <= ba.x1; ++y) {
             const Item& iy = local[y];
             const Box& bb = iy.box;
@@ -244,16 +263,13 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
             near[m] = static_cast<uint32_t>(y);
             m += keep;
           }
-        }
-        // The candidates: pairs whose corner lies in this bucket (near its sides, the
-        // bucket's own column and row decide: rare).
-        size_t nc = 0;
-        for (size_t k = 0; k < m; ++k) {
-          const Item& iy = local[near[k]];
-          const double lx = iy.box.x0, ly = std::max(ba.y0, iy.box.y0);  // lx = max(ba.x0, bb.x0): sorted
-          const bool inside = (lx > cx0 + tx) & (ly > cy0 + ty);
-          near[nc] = near[k];
-          nc += inside || (grid.col(lx) == c && grid.row(ly) == r);
+          for (size_t k = 0; k < m; ++k) {
+            const Item& iy = local[near[k]];
+            const double lx = iy.box.x0, ly = std::max(ba.y0, iy.box.y0);
+            const bool inside = (lx > cx0 + tx) & (ly > cy0 + ty);
+            near[nc] = near[k];
+            nc += inside || own_corner(near[k]);
+          }
         }
         candidates += static_cast<int64_t>(nc);
         size_t q = 0;
