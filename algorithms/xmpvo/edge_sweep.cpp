@@ -61,7 +61,9 @@ bool Worker::sweep(int32_t e) {
   if (!order_crossings(e) || !start_list(e)) return false;
   emit_segment();
   for (int32_t x = in_.arr.edge_vertex_off[e]; x < in_.arr.edge_vertex_off[e + 1]; ++x) {
-    if (!cross(e, in_.arr.edge_crossings[x])) return false;
+    const EdgeCrossing& xing = in_.arr.edge_crossings[x];
+    // Nearly every crossing of a conforming surface is a swap: tried here, inline.
+    if (!(in_.conforming && swap(e, xing)) && !cross(e, xing)) return false;
     // The pairs next to e's faces change only where a face leaves or enters beside them.
     if (beside_) emit_segment();
   }
@@ -187,7 +189,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
 // cross properly in projection, so coplanar they would meet in space, and each would meet
 // the other's faces. Returns false, with list_ unchanged, wherever the general path
 // must decide instead (which face leaves unknown, a neighbour not confirming).
-bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
+inline bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
   const int32_t g0 = xing.swap[0], g1 = xing.swap[1];
   if (g0 < 0) return false;
