@@ -62,7 +62,8 @@ bool Worker::sweep(int32_t e) {
   emit_segment();
   for (int32_t x = in_.arr.edge_vertex_off[e]; x < in_.arr.edge_vertex_off[e + 1]; ++x) {
     const EdgeCrossing& xing = in_.arr.edge_crossings[x];
-    // Nearly every crossing of a conforming surface is a swap: tried here, inline.
+    // Nearly every crossing of a conforming surface is a swap, which reads neither depths
+    // nor the crossed edge's points (a random read): tried here, inline.
     if (!(in_.conforming && swap(e, xing)) && !cross(e, xing)) return false;
     // The pairs next to e's faces change only where a face leaves or enters beside them.
     if (beside_) emit_segment();
@@ -128,18 +129,15 @@ bool Worker::start_list(int32_t e) {
   return !undecided_;
 }
 
-// Crossing `xing` of e with e' = (c, d): the faces of e' leave or enter list_. The faces of e
-// keep their positions in list_ (epos_); an entering face goes where the leaving face of
-// the same edge was when its neighbours confirm it, else by binary search.
+// Crossing `xing` of e with e' = (c, d): the faces of e' leave or enter list_ (on a
+// conforming surface sweep() has tried swap() first). The faces of e keep their positions
+// in list_ (epos_); an entering face goes where the leaving face of the same edge was when
+// its neighbours confirm it, else by binary search.
 bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
   const int32_t other = xing.other;
-  xvi_ = xing.vertex, n_psign_ = 0;
-  // A swap on a conforming surface does not read the crossed edge's points (a random read
-  // per crossing): they are looked up after it.
-  if (in_.conforming && swap(e, xing)) return true;
   const auto [c, d] = arr.edges[other];
-  xc_pt_ = c, xd_pt_ = d;
+  xvi_ = xing.vertex, xc_pt_ = c, xd_pt_ = d, n_psign_ = 0;
   if (!in_.conforming && swap(e, xing)) return true;
   const int32_t a = arr.edges[e].first;
   const int sa = point_side(a, c, d);
