@@ -31,7 +31,7 @@ struct EdgeCrossing {
   int32_t swap[2];
 };
 
-// One edge's n crossings sorted by key, equal keys in their order in p, or in reverse when
+// One edge's n crossings sorted by key (edge_crossings.cpp), equal keys in their order in p, or in reverse when
 // p's first key exceeds its last (index_crossings; `scratch` is reused storage).
 void sort_edge_crossings(EdgeCrossing* p, int32_t n, std::vector<EdgeCrossing>& scratch);
 

@@ -228,8 +228,7 @@ void Worker::emit_sectors(const ArrVertex& v) {
   // one search serves every such face when it met none.
   int32_t at_point = -1;
   for (Wedge& w : wedges_) {
-    const int32_t* p = &in_.ext.vertex[4 * w.face];
-    const bool own = v.b < 0 && (p[0] == v.a || p[1] == v.a || p[2] == v.a || (in_.ext.size[w.face] > 3 && p[3] == v.a));
+    const bool own = v.b < 0 && (touch(w.face) & 1);
     if (own && at_point >= 0) {
       w.pos = at_point;
       continue;
