@@ -135,6 +135,38 @@ __attribute__((target("avx2"))) size_t filter_pairs_avx2(const BucketEdge& ix, c
   }
   return q;
 }
+// Where the crossing of the edges e = (a, b) and f = (c, d) lies in projected doubles: the
+// computed point with a generous error radius, inside both edges' boxes; their whole
+// common box when the doubles are too close to call. From the bucket's copies (the
+// projected points at hand).
+ArrVertex crossing_vertex(const BucketEdge& e, const BucketEdge& f, double slack) {
+  const Box &ba = e.box, &bb = f.box;
+  const Box common{std::max(ba.x0, bb.x0), std::max(ba.y0, bb.y0), std::min(ba.x1, bb.x1),
+                   std::min(ba.y1, bb.y1)};
+  ArrVertex v{e.a, e.b, f.a, f.b, 0.5, common, e.id, f.id};
+  const auto [ax, ay] = e.ua;
+  const auto [bx, by] = e.ub;
+  const auto [cx, cy] = f.ua;
+  const auto [dx, dy] = f.ub;
+  auto orient = [](double ox, double oy, double px, double py, double qx, double qy) {
+    return (px - ox) * (qy - oy) - (py - oy) * (qx - ox);
+  };
+  const double oa = orient(cx, cy, dx, dy, ax, ay), ob = orient(cx, cy, dx, dy, bx, by);
+  if (!(oa * ob < 0)) return v;
+  const double t = oa / (oa - ob);
+  const double mag = std::max({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by),
+                               std::fabs(cx), std::fabs(cy), std::fabs(dx), std::fabs(dy)});
+  // Edge lengths bounded from above by their L1 norms (cheaper than hypot).
+  const double lcd = std::fabs(dx - cx) + std::fabs(dy - cy), lab = std::fabs(bx - ax) + std::fabs(by - ay);
+  const double err = 1e-12 * mag * (lcd + 2 * lab + 2 * mag) / std::fabs(oa - ob) * lab + slack;
+  const double x = ax + t * (bx - ax), y = ay + t * (by - ay);
+  v.t = t;
+  v.box = {std::max(common.x0, x - err), std::max(common.y0, y - err),
+           std::min(common.x1, x + err), std::min(common.y1, y + err)};
+  if (!(v.box.x0 <= v.box.x1 && v.box.y0 <= v.box.y1)) v.box = common;
+  return v;
+}
+
 }  // namespace
 
 Box Arrangement::edge_box(const Projection& proj, int32_t e) const {
@@ -295,9 +327,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           const Item& iy = local[maybe[k].first];
           const int32_t a = ix.a, b = ix.b, cc = iy.a, d = iy.b;
           if (maybe[k].second == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])) continue;
-          vertices.push_back(crossing_vertex(proj, a, b, cc, d, ba, iy.box));
-          vertices.back().e1 = ix.id;
-          vertices.back().e2 = iy.id;
+          vertices.push_back(crossing_vertex(ix, iy, slack));
           ++edge_vertex_off[ix.id + 1];
           ++edge_vertex_off[iy.id + 1];
         }
@@ -373,37 +403,6 @@ void Arrangement::build_edges(const ExteriorFaces& ext, const Projection& proj) 
     edges.push_back(all_edges_[e]);
     edge_face_off.push_back(static_cast<int32_t>(edge_faces.size()));
   }
-}
-
-// Where the crossing of (a, b) and (c, d) lies in projected doubles: the computed point
-// with a generous error radius, inside both edges' boxes; their whole common box when
-// the doubles are too close to call.
-ArrVertex Arrangement::crossing_vertex(const Projection& proj, int32_t a, int32_t b, int32_t c,
-                                       int32_t d, const Box& ba, const Box& bb) const {
-  const Box common{std::max(ba.x0, bb.x0), std::max(ba.y0, bb.y0), std::min(ba.x1, bb.x1),
-                   std::min(ba.y1, bb.y1)};
-  ArrVertex v{a, b, c, d, 0.5, common};
-  const auto [ax, ay] = proj.uv[a];
-  const auto [bx, by] = proj.uv[b];
-  const auto [cx, cy] = proj.uv[c];
-  const auto [dx, dy] = proj.uv[d];
-  auto orient = [](double ox, double oy, double px, double py, double qx, double qy) {
-    return (px - ox) * (qy - oy) - (py - oy) * (qx - ox);
-  };
-  const double oa = orient(cx, cy, dx, dy, ax, ay), ob = orient(cx, cy, dx, dy, bx, by);
-  if (!(oa * ob < 0)) return v;
-  const double t = oa / (oa - ob);
-  const double mag = std::max({std::fabs(ax), std::fabs(ay), std::fabs(bx), std::fabs(by),
-                               std::fabs(cx), std::fabs(cy), std::fabs(dx), std::fabs(dy)});
-  // Edge lengths bounded from above by their L1 norms (cheaper than hypot).
-  const double lcd = std::fabs(dx - cx) + std::fabs(dy - cy), lab = std::fabs(bx - ax) + std::fabs(by - ay);
-  const double err = 1e-12 * mag * (lcd + 2 * lab + 2 * mag) / std::fabs(oa - ob) * lab + proj.slack;
-  const double x = ax + t * (bx - ax), y = ay + t * (by - ay);
-  v.t = t;
-  v.box = {std::max(common.x0, x - err), std::max(common.y0, y - err),
-           std::min(common.x1, x + err), std::min(common.y1, y + err)};
-  if (!(v.box.x0 <= v.box.x1 && v.box.y0 <= v.box.y1)) v.box = common;
-  return v;
 }
 
 size_t Arrangement::bytes() const {

@@ -1,5 +1,5 @@
-// XMPVO's crossings indexed along each edge for the edge sweep (Arrangement::index_crossings),
-// each edge's list sorted by its position along the edge.
+// XMPVO's crossings indexed along each edge (Arrangement::index_crossings), and one edge's list
+// sorted by its position along the edge for the sweep (sort_edge_crossings).
 #include "algorithms/xmpvo/arrangement.h"
 
 #include <algorithm>
@@ -20,15 +20,14 @@ constexpr int32_t kRankedMax = 64;
 // one, about 40% of index_crossings' time. Equal keys share a count, which the places'
 // sum shows (it falls short of 0 + 1 + ... + n - 1); those lists, the longer ones and any
 // with a NaN key go to std::stable_sort.
-__attribute__((target_clones("avx2", "default"))) void sort_edge_crossings(EdgeCrossing* p, int32_t n,
-                                                                          std::vector<EdgeCrossing>& scratch) {
-  if (n < 2) return;
-  auto by_key = [](const EdgeCrossing& a, const EdgeCrossing& b) { return a.key < b.key; };
+__attribute__((target_clones("avx2", "default"))) void sort_edge_crossings(const EdgeCrossing* p, int32_t n,
+                                                                          std::vector<EdgeCrossing>& out) {
   auto stable = [&] {
-    if (p[0].key > p[n - 1].key) std::reverse(p, p + n);
-    std::stable_sort(p, p + n, by_key);
+    out.assign(p, p + n);
+    if (n > 1 && p[0].key > p[n - 1].key) std::reverse(out.begin(), out.end());
+    std::stable_sort(out.begin(), out.end(), [](const EdgeCrossing& a, const EdgeCrossing& b) { return a.key < b.key; });
   };
-  if (n > kRankedMax) return stable();
+  if (n < 2 || n > kRankedMax) return stable();
   // Four keys a compare (GCC's vector types: one AVX2 compare in the avx2 clone, two SSE2
   // ones otherwise); a true compare is all ones, -1 as an integer.
   typedef double Keys __attribute__((vector_size(32)));
@@ -40,7 +39,6 @@ __attribute__((target_clones("avx2", "default"))) void sort_edge_crossings(EdgeC
   const int32_t groups = (n + 3) / 4;
   for (int32_t i = n; i < 4 * groups; ++i) key4[i / 4][i % 4] = INFINITY;  // never smaller than a key
   int64_t place[kRankedMax], sum = 0;
-  bool moved = false;
   for (int32_t i = 0; i < n; ++i) {
     const double x = p[i].key;
     Counts count = {0, 0, 0, 0};
@@ -48,12 +46,10 @@ __attribute__((target_clones("avx2", "default"))) void sort_edge_crossings(EdgeC
     const int64_t r = count[0] + count[1] + count[2] + count[3];
     place[i] = r;
     sum += r;
-    moved |= r != i;
   }
   if (sum != int64_t(n) * (n - 1) / 2) return stable();
-  if (!moved) return;
-  scratch.assign(p, p + n);
-  for (int32_t i = 0; i < n; ++i) p[place[i]] = scratch[i];
+  out.resize(static_cast<size_t>(n));
+  for (int32_t i = 0; i < n; ++i) out[place[i]] = p[i];
 }
 
 // The crossings on each edge, for the edge sweep of ray_queries: each exact crossing lies
@@ -84,13 +80,9 @@ void Arrangement::index_crossings(const Projection& proj) {
       const double ext = std::fabs(dx) * hw + std::fabs(dy) * hh +
                          1e-14 * (std::fabs(dx) * (std::fabs(xc) + std::fabs(ax)) + std::fabs(dy) * (std::fabs(yc) + std::fabs(ay))) +
                          1e-300;
-      edge_crossings[slot] = {dx * (xc - ax) + dy * (yc - ay), ext, static_cast<int32_t>(v), other,
-                              {swap_[other][0], swap_[other][1]}};
+      edge_crossings[slot] = {dx * (xc - ax) + dy * (yc - ay), ext, static_cast<int32_t>(v), other};
     }
   }
-  std::vector<EdgeCrossing> scratch;
-  for (size_t e = 0; e < edges.size(); ++e)
-    sort_edge_crossings(edge_crossings.data() + edge_vertex_off[e], edge_vertex_off[e + 1] - edge_vertex_off[e], scratch);
 }
 
 }  // namespace vob::xmpvo

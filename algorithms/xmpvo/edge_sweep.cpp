@@ -45,6 +45,8 @@ void Worker::sweep_edge(int32_t e) {
   const size_t mark = pairs_.size();
   const int64_t answered = stats_.sweep_crossings;
   rechecked_ = false;
+  const int32_t x0 = arr.edge_vertex_off[e];
+  sort_edge_crossings(&arr.edge_crossings[x0], arr.edge_vertex_off[e + 1] - x0, xings_);
   const bool ok = sweep(e);
   stats_.queries_rechecked += rechecked_;
   if (ok) return;
@@ -52,16 +54,15 @@ void Worker::sweep_edge(int32_t e) {
   std::fill(seen_.begin(), seen_.end(), 0);
   stats_.sweep_crossings = answered;
   ++stats_.sweep_fallbacks;
-  for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) query(arr.edge_crossings[x].vertex);
+  for (const EdgeCrossing& xing : xings_) query(xing.vertex);
 }
 
 bool Worker::sweep(int32_t e) {
   undecided_ = false;
   swept_ = e;
-  if (!order_crossings(e) || !start_list(e)) return false;
+  if (!order_crossings() || !start_list(e)) return false;
   emit_segment();
-  for (int32_t x = in_.arr.edge_vertex_off[e]; x < in_.arr.edge_vertex_off[e + 1]; ++x) {
-    const EdgeCrossing& xing = in_.arr.edge_crossings[x];
+  for (const EdgeCrossing& xing : xings_) {
     // Nearly every crossing of a conforming surface is a swap, which reads neither depths
     // nor the crossed edge's points (a random read): tried here, inline.
     if (!(in_.conforming && swap(e, xing)) && !cross(e, xing)) return false;
@@ -71,14 +72,11 @@ bool Worker::sweep(int32_t e) {
   return !undecided_;
 }
 
-// The crossings on e from a to b (Arrangement::index_crossings sorts them by key), when
-// their order is certain: their extents along e are disjoint.
-bool Worker::order_crossings(int32_t e) {
-  const Arrangement& arr = in_.arr;
-  for (int32_t x = arr.edge_vertex_off[e] + 1; x < arr.edge_vertex_off[e + 1]; ++x) {
-    const EdgeCrossing &p = arr.edge_crossings[x - 1], &q = arr.edge_crossings[x];
-    if (!(p.key + p.ext < q.key - q.ext)) return false;
-  }
+// Whether the swept edge's crossings (xings_, sorted by key) are certainly in order from a
+// to b: their extents along the edge are disjoint.
+bool Worker::order_crossings() const {
+  for (size_t x = 1; x < xings_.size(); ++x)
+    if (!(xings_[x - 1].key + xings_[x - 1].ext < xings_[x].key - xings_[x].ext)) return false;
   return true;
 }
 
@@ -189,7 +187,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
 // must decide instead (which face leaves unknown, a neighbour not confirming).
 inline bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
   const Arrangement& arr = in_.arr;
-  const int32_t g0 = xing.swap[0], g1 = xing.swap[1];
+  const auto [g0, g1] = arr.swap_faces(xing.other);
   if (g0 < 0) return false;
   // Where g0 and g1 are in list_ (n: not there), both in one pass with no jump on the
   // faces: where std::find stopped was a coin toss, a mispredicted exit per search.

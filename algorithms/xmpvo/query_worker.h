@@ -88,7 +88,7 @@ class Worker {
   // Edge sweep (edge_sweep.cpp).
   bool sweep(int32_t e);
   bool start_list(int32_t e);
-  bool order_crossings(int32_t e);
+  bool order_crossings() const;
   bool cross(int32_t e, const EdgeCrossing& xing);
   bool swap(int32_t e, const EdgeCrossing& xing);
   void emit_segment();
@@ -136,6 +136,7 @@ class Worker {
   // The sweep's sorted covering faces of the open segment before the current crossing
   // (faces of the swept edge excluded), and the edge's crossings in order.
   std::vector<int32_t> list_;
+  std::vector<EdgeCrossing> xings_;
   bool beside_ = false;         // the last crossing changed a neighbour of e's faces
   // The last sweep start: its point, covering faces sorted, and wedges.
   int32_t start_point_ = -1;

@@ -127,7 +127,6 @@ std::vector<int32_t> vertices_of(const std::vector<EdgeCrossing>& v) {
 // Lists short enough to be sorted by counting places and longer ones, with distinct keys,
 // ties (which the counted places cannot order) and nearly sorted runs either way.
 TEST(XmpvoArrangement, EdgeCrossingsSortLikeAStableSort) {
-  std::vector<EdgeCrossing> scratch;
   uint64_t seed = 12345;
   auto next = [&] { return seed = seed * 6364136223846793005ull + 1442695040888963407ull, seed >> 33; };
   for (int32_t n : {0, 1, 2, 3, 5, 24, 63, 64, 65, 200})
@@ -139,10 +138,10 @@ TEST(XmpvoArrangement, EdgeCrossingsSortLikeAStableSort) {
                            : kind == 1 ? static_cast<double>(next() % 4)      // many ties
                            : kind == 2 ? i + noise                            // nearly sorted
                                        : n - i + noise;                       // nearly reversed
-        v[i] = {key, 0.0, i, 0, {-1, -1}};
+        v[i] = {key, 0.0, i, 0};
       }
-      std::vector<EdgeCrossing> got = v;
-      sort_edge_crossings(got.data(), n, scratch);
+      std::vector<EdgeCrossing> got;
+      sort_edge_crossings(v.data(), n, got);
       EXPECT_EQ(vertices_of(got), vertices_of(reference_sort(v))) << "n " << n << " kind " << kind;
     }
 }
@@ -150,15 +149,16 @@ TEST(XmpvoArrangement, EdgeCrossingsSortLikeAStableSort) {
 // A NaN key has no place among the others: the list is still a permutation of its records.
 TEST(XmpvoArrangement, EdgeCrossingsWithANanKeyStayAPermutation) {
   std::vector<EdgeCrossing> v;
-  for (int32_t i = 0; i < 9; ++i) v.push_back({i == 4 ? NAN : 9.0 - i, 0.0, i, 0, {-1, -1}});
-  std::vector<EdgeCrossing> scratch;
-  sort_edge_crossings(v.data(), static_cast<int32_t>(v.size()), scratch);
-  std::vector<int32_t> ids = vertices_of(v);
+  for (int32_t i = 0; i < 9; ++i) v.push_back({i == 4 ? NAN : 9.0 - i, 0.0, i, 0});
+  std::vector<EdgeCrossing> got;
+  sort_edge_crossings(v.data(), static_cast<int32_t>(v.size()), got);
+  std::vector<int32_t> ids = vertices_of(got);
   std::sort(ids.begin(), ids.end());
   EXPECT_EQ(ids, (std::vector<int32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
 }
 
-// On a helix every crossing sits on both its edges once, each edge's list sorted by key.
+// On a helix every crossing sits on both its edges once; each edge's list, sorted, is in
+// order along the edge (keys increasing).
 TEST(XmpvoArrangement, EachEdgeHoldsItsCrossingsByKey) {
   const Scene s = dataset("helix", {{"cells", "20000"}});
   const Camera view = fibonacci_view(s.bounds(), 6, 1, ViewOptions{256, 256});
@@ -172,16 +172,21 @@ TEST(XmpvoArrangement, EachEdgeHoldsItsCrossingsByKey) {
   const size_t crossings = arr.vertices.size() - arr.projected_vertices;
   ASSERT_GT(crossings, 1000u);
   std::vector<int> seen(arr.vertices.size(), 0);
-  for (size_t e = 0; e + 1 < arr.edge_vertex_off.size(); ++e)
-    for (int32_t x = arr.edge_vertex_off[e]; x < arr.edge_vertex_off[e + 1]; ++x) {
-      const EdgeCrossing& c = arr.edge_crossings[x];
+  std::vector<EdgeCrossing> sorted;
+  for (size_t e = 0; e + 1 < arr.edge_vertex_off.size(); ++e) {
+    const int32_t x0 = arr.edge_vertex_off[e];
+    sort_edge_crossings(&arr.edge_crossings[x0], arr.edge_vertex_off[e + 1] - x0, sorted);
+    for (size_t x = 0; x < sorted.size(); ++x) {
+      const EdgeCrossing& c = sorted[x];
       const ArrVertex& v = arr.vertices[c.vertex];
       EXPECT_TRUE(v.e1 == static_cast<int32_t>(e) || v.e2 == static_cast<int32_t>(e));
+      EXPECT_TRUE(c.other == (v.e1 == static_cast<int32_t>(e) ? v.e2 : v.e1));
       ++seen[c.vertex];
-      if (x > arr.edge_vertex_off[e]) {
-        EXPECT_LE(arr.edge_crossings[x - 1].key, c.key) << "edge " << e;
+      if (x > 0) {
+        EXPECT_LE(sorted[x - 1].key, c.key) << "edge " << e;
       }
     }
+  }
   for (size_t v = arr.projected_vertices; v < arr.vertices.size(); ++v) EXPECT_EQ(seen[v], 2) << "vertex " << v;
   EXPECT_EQ(arr.edge_crossings.size(), 2 * crossings);
 }
