@@ -45,7 +45,8 @@ class Worker {
             wedge_ray_.capacity()) * 4 + ray_side_.capacity() + before_.capacity() +
            start_wedges_.capacity() * sizeof(Wedge) + plane_memo_key_.capacity() * 9 +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
-           wedges_.capacity() * sizeof(Wedge) + (pairs_.capacity() + seen_.capacity()) * 8;
+           wedges_.capacity() * sizeof(Wedge) + xings_.capacity() * sizeof(EdgeCrossing) +
+           (pairs_.capacity() + seen_.capacity()) * 8;
   }
   void query(int32_t vi) {
     rechecked_ = false;
