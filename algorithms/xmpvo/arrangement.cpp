@@ -204,6 +204,16 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   int64_t candidates = 0;
   crossings_filtered = crossings_rechecked = 0;
   const bool filter = signs.mode == Mode::Exact && proj.uv_filter;
+  // Every pair with a point on the other's line reaches the exact test: the filter cannot
+  // certify a zero sign, and a point on the other edge leaves the pair not apart.
+  lines_marked = filter;
+  point_on_line.assign(points.size(), 0);
+  auto mark_on_line = [&](int32_t a, int32_t b, int32_t c, int32_t d) {
+    auto on = [&](int32_t x, int32_t p, int32_t q) {
+      if (edge_side(signs.g, points[p], points[q], points[x]) == 0) point_on_line[x] = 1;
+    };
+    on(a, c, d), on(b, c, d), on(c, a, b), on(d, a, b);
+  };
   const bool avx2 = lanes && cpu_has_avx2();
   edge_vertex_off.assign(edges.size() + 1, 0);  // crossings per edge, at e + 1
   // Proper crossing from the double filter: 1 / 0 when certain, 2 when not. No early exit:
@@ -326,7 +336,10 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
         for (size_t k = 0; k < q; ++k) {
           const Item& iy = local[maybe[k].first];
           const int32_t a = ix.a, b = ix.b, cc = iy.a, d = iy.b;
-          if (maybe[k].second == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])) continue;
+          if (maybe[k].second == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])) {
+            if (lines_marked) mark_on_line(a, b, cc, d);
+            continue;
+          }
           vertices.push_back(crossing_vertex(ix, iy, slack));
           ++edge_vertex_off[ix.id + 1];
           ++edge_vertex_off[iy.id + 1];
@@ -411,7 +424,7 @@ size_t Arrangement::bytes() const {
          edge_face_dir.capacity() + edge_crossings.capacity() * sizeof(EdgeCrossing) +
          vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box) + swap_.capacity() * 8 +
          all_edges_.capacity() * 8 + (all_face_off_.capacity() + all_faces_.capacity()) * 4 +
-         all_face_dir_.capacity();  // set_faces' lists, held for every view
+         all_face_dir_.capacity() + point_on_line.capacity();  // set_faces' lists, held for every view
 }
 
 }  // namespace vob::xmpvo

@@ -47,6 +47,13 @@ struct Arrangement {
   std::vector<EdgeCrossing> edge_crossings;
   // Candidate pairs the double filter decided, and those it left to the exact test.
   int64_t crossings_filtered = 0, crossings_rechecked = 0;
+  // Per exterior point: 1 where an exact re-check of a pair that does not cross properly
+  // found the point on the other edge's projected line (it may lie on that edge: a point
+  // on a face's boundary it is not a vertex of). Such a point's query gathers its faces in
+  // full (ray_queries.cpp). Marked only when `lines_marked` (exact signs behind the double
+  // filter); otherwise no point's query may rely on it.
+  std::vector<uint8_t> point_on_line;
+  bool lines_marked = false;
   // The pair loop's first pass and double filter four pairs a step in AVX2 lanes where the
   // CPU has them (the same answers: tests compare the two).
   bool lanes = true;

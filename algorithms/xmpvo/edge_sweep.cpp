@@ -49,7 +49,10 @@ void Worker::sweep_edge(int32_t e) {
   sort_edge_crossings(&arr.edge_crossings[x0], arr.edge_vertex_off[e + 1] - x0, xings_);
   const bool ok = sweep(e);
   stats_.queries_rechecked += rechecked_;
-  if (ok) return;
+  if (ok) {
+    keep_end_list(e);
+    return;
+  }
   pairs_.resize(mark);
   std::fill(seen_.begin(), seen_.end(), 0);
   stats_.sweep_crossings = answered;

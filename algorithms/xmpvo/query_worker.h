@@ -29,14 +29,21 @@ struct Wedge {
   int32_t pos;  // number of inside faces in front of it
 };
 
+// Per projected point (its vertex id; CSR): the kept faces it is a vertex of. Empty when
+// no point query takes its covering faces from a sweep.
+struct PointFaces {
+  std::vector<int32_t> off, faces;
+};
+
 class Worker {
  public:
   Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane,
-         const std::vector<int32_t>& point_vertex, double widest_face)
+         const std::vector<int32_t>& point_vertex, const PointFaces& point_faces, double widest_face)
       : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
-        widest_face_(widest_face),
+        point_faces_(point_faces), widest_face_(widest_face),
         face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
-        key_(in.ext.face.size()), touch_stamp_(in.ext.face.size(), -1), touch_(in.ext.face.size()) {
+        key_(in.ext.face.size()), touch_stamp_(in.ext.face.size(), -1), touch_(in.ext.face.size()),
+        ended_at_(point_faces.off.empty() ? 0 : point_faces.off.size() - 1, -1) {
     signs_.side = signs_.dis_side = 0;
   }
   size_t bytes() const {
@@ -46,6 +53,7 @@ class Worker {
            start_wedges_.capacity() * sizeof(Wedge) + plane_memo_key_.capacity() * 9 +
            touch_.capacity() + key_.capacity() * sizeof(PlaneKey) + keys_.capacity() * 16 +
            wedges_.capacity() * sizeof(Wedge) + xings_.capacity() * sizeof(EdgeCrossing) +
+           (ended_at_.capacity() + ended_.capacity()) * 4 +
            (pairs_.capacity() + seen_.capacity()) * 8;
   }
   void query(int32_t vi) {
@@ -74,6 +82,10 @@ class Worker {
 
  private:
   void run_query(int32_t vi);
+  // Point vertex vi's query from the covering faces a sweep ending there kept (ended_).
+  void run_query_after_sweep(int32_t vi);
+  void keep_end_list(int32_t e);
+  void emit_at_point(const ArrVertex& v);
   void begin(int32_t vi);
   void gather(const ArrVertex& v);
   void emit_sectors(const ArrVertex& v);
@@ -106,6 +118,7 @@ class Worker {
   const QueryInput& in_;
   const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
   const std::vector<int32_t>& point_vertex_;  // per exterior point, its vertex id or -1
+  const PointFaces& point_faces_;
   const double widest_face_;                  // largest side of a kept face's box (face_box)
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
@@ -138,6 +151,9 @@ class Worker {
   // (faces of the swept edge excluded), and the edge's crossings in order.
   std::vector<int32_t> list_;
   std::vector<EdgeCrossing> xings_;
+  // Per point vertex, where ended_ holds its sorted strictly covering faces (a count, then
+  // the faces) as the first sweep ending there left them, or -1 (keep_end_list).
+  std::vector<int32_t> ended_at_, ended_;
   bool beside_ = false;         // the last crossing changed a neighbour of e's faces
   // The last sweep start: its point, covering faces sorted, and wedges.
   int32_t start_point_ = -1;

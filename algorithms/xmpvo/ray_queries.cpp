@@ -134,21 +134,66 @@ void Worker::run_query(int32_t vi) {
   const bool undecided = undecided_;
   undecided_ = false;
   sort_inside();
-  if (v.b < 0) {
-    // The sweeps from this point start from its sorted faces (start_list).
-    start_point_ = -1;
-    if (!undecided_) {
-      start_inside_ = inside_;
-      start_wedges_ = wedges_;
-      start_point_ = v.a;
-    }
-  }
+  const bool start = v.b < 0 && !undecided_;
+  if (v.b < 0) start_point_ = -1;
   undecided_ |= undecided;
+  if (start) emit_at_point(v);
+  else emit_sectors(v);
+}
+
+// The sweeps from point v start from its sorted faces (start_list); then its relations.
+void Worker::emit_at_point(const ArrVertex& v) {
+  start_inside_ = inside_;
+  start_wedges_ = wedges_;
+  start_point_ = v.a;
   emit_sectors(v);
 }
 
+// The strictly covering faces of a point are those of the last segment of a sweep ending
+// there but the faces having it as a vertex, in the same depth order: on a conforming
+// surface no two of them meet on the point's ray, and a face with the point on its boundary
+// but not as a vertex would lie on the line of an edge the arrangement tested against the
+// swept one, or (sharing the sweep's first point) fail the sweep's start (start_list).
+// Only the faces around the point are classified, as gather() would.
+void Worker::run_query_after_sweep(int32_t vi) {
+  rechecked_ = false;
+  ++stats_.sweep_end_queries;
+  begin(vi);
+  const ArrVertex& v = *current_;
+  const int32_t* ended = &ended_[static_cast<size_t>(ended_at_[vi])];
+  inside_.assign(ended + 1, ended + 1 + ended[0]);
+  wedges_.clear();
+  for (int32_t x = point_faces_.off[vi]; x < point_faces_.off[vi + 1]; ++x) {
+    const int32_t f = point_faces_.faces[x];
+    if (in_.proj.face_box[f].overlaps(v.box)) classify(v, f);
+  }
+  undecided_ = false;
+  if (!wedges_.empty()) emit_at_point(v);
+  stats_.queries_rechecked += rechecked_;
+}
+
+// After a sweep of e = (a, b) that decided every crossing: b's covering faces for its own
+// query (run_query_after_sweep), kept once per point, unless the arrangement marked b.
+void Worker::keep_end_list(int32_t e) {
+  if (ended_at_.empty()) return;
+  const int32_t b = in_.arr.edges[e].second, vb = point_vertex_[b];
+  if (vb < 0 || ended_at_[vb] >= 0 || in_.arr.point_on_line[b]) return;
+  const size_t at = ended_.size();
+  ended_at_[vb] = static_cast<int32_t>(at);
+  ended_.push_back(0);
+  for (int32_t f : list_) {
+    const int32_t* p = &in_.ext.vertex[4 * f];
+    if (p[0] != b && p[1] != b && p[2] != b && (in_.ext.size[f] < 4 || p[3] != b)) ended_.push_back(f);
+  }
+  ended_[at] = static_cast<int32_t>(ended_.size() - at - 1);
+}
+
 void Worker::query_and_sweep(int32_t vi, const int32_t* e0, const int32_t* e1) {
-  query(vi);
+  if (!ended_at_.empty() && ended_at_[vi] >= 0) {
+    run_query_after_sweep(vi);
+  } else {
+    query(vi);
+  }
   if (degenerate_seen_) return;
   for (const int32_t* e = e0; e < e1; ++e) sweep_edge(*e);
   // Only a point query's degeneracy is the view's (a crossing's full query may meet one
@@ -162,6 +207,8 @@ void Worker::reset() {
   stats_ = QueryStats{};
   signs_.side = signs_.dis_side = 0;
   start_point_ = -1;
+  std::fill(ended_at_.begin(), ended_at_.end(), -1);
+  ended_.clear();
 }
 
 // The query context of vertex vi: its ray, depth terms and filter position.
@@ -391,6 +438,7 @@ void QueryStats::add(const QueryStats& x) {
   sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
   sweep_fallbacks += x.sweep_fallbacks, depth_plane_sides += x.depth_plane_sides;
   sweep_swaps += x.sweep_swaps, depth_edge_orders += x.depth_edge_orders;
+  sweep_end_queries += x.sweep_end_queries;
   scratch_bytes += x.scratch_bytes;
 }
 
@@ -408,14 +456,29 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     const Box& b = in.proj.face_box[f];
     widest = std::max({widest, b.x1 - b.x0, b.y1 - b.y0});
   }
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view_plane, point_vertex, widest); });
+  // The kept faces around each point, for the queries that follow a sweep ending there.
+  detail::PointFaces point_faces;
+  const bool sweep = in.sweep && in.signs.mode == Mode::Exact;
+  if (sweep && in.sweep_ends && in.conforming && arr.lines_marked) {
+    const size_t np = arr.projected_vertices;
+    std::vector<int32_t>& off = point_faces.off;
+    off.assign(np + 2, 0);
+    for (int32_t f : in.proj.kept)
+      for (int k = 0; k < in.ext.size[f]; ++k) ++off[point_vertex[in.ext.vertex[4 * f + k]] + 2];
+    for (size_t v = 2; v < off.size(); ++v) off[v] += off[v - 1];
+    point_faces.faces.resize(static_cast<size_t>(off.back()));
+    for (int32_t f : in.proj.kept)
+      for (int k = 0; k < in.ext.size[f]; ++k) point_faces.faces[off[point_vertex[in.ext.vertex[4 * f + k]] + 1]++] = f;
+    off.pop_back();
+  }
+  tbb::enumerable_thread_specific<Worker> workers(
+      [&] { return Worker(in, view_plane, point_vertex, point_faces, widest); });
   auto queries = [&](size_t v0, size_t v1) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();
       for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
     });
   };
-  const bool sweep = in.sweep && in.signs.mode == Mode::Exact;
   bool degenerate = false;
   if (sweep) {
     // Each point's query, then the sweeps of the edges starting there (CSR by point vertex;

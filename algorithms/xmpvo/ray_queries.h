@@ -33,6 +33,11 @@ struct QueryInput {
   // Projected side tests first against one bound for the whole query (ray_queries.cpp,
   // Worker::orient_raw); off: uv_side's own bound at every test (the same signs, for tests).
   bool quick_sides = true;
+  // A point query after a sweep that ended at the point takes the point's strictly covering
+  // faces, sorted, from that sweep (edge_sweep.cpp, keep_end_list) instead of gathering and
+  // sorting them; only on conforming surfaces whose arrangement marked the points on other
+  // edges' lines. Off: every point gathers (the same relations, for tests).
+  bool sweep_ends = true;
 };
 
 struct QueryStats {
@@ -51,6 +56,8 @@ struct QueryStats {
   // Sweep depth comparisons of a face of the swept edge with an entering face decided by
   // the orientation of the two edges (edge_sweep.cpp, depth_edges).
   int64_t depth_edge_orders = 0;
+  // Point queries that took their covering faces from a sweep ending at the point.
+  int64_t sweep_end_queries = 0;
   size_t scratch_bytes = 0;        // the query threads' scratch
   void add(const QueryStats& o);
 };

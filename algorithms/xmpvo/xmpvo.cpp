@@ -139,6 +139,7 @@ void XmpvoOrderer::add_counters(Ordering& out, int64_t candidates) const {
   k["touched_exterior_edges"] = contacts_.triangles_only ? static_cast<double>(contacts_.touched_edges) : -1.0;
   k["sweep_swaps"] = static_cast<double>(stats_.sweep_swaps);
   k["depth_edge_orders"] = static_cast<double>(stats_.depth_edge_orders);
+  k["sweep_end_queries"] = static_cast<double>(stats_.sweep_end_queries);
   k["degenerate_coverage"] = static_cast<double>(stats_.degenerate);
   k["relations"] = static_cast<double>(pairs_.size());
   k["grid_buckets"] = static_cast<double>(proj_.grid.buckets());

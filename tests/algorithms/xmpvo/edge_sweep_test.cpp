@@ -4,11 +4,14 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <map>
 #include <string>
+#include <vector>
 
 #include "algorithms/xmpvo/edge_contacts.h"
 #include "algorithms/xmpvo/ray_queries.h"
 #include "datasets/datasets.h"
+#include "datasets/generators/view_cases.h"
 #include "harness/view/view_set.h"
 #include "tests/support/test_util.h"
 
@@ -23,7 +26,8 @@ struct Relations {
   QueryStats stats;
 };
 
-Relations relations(const Scene& s, const Camera& view, bool sweep, bool quick_sides = true) {
+Relations relations(const Scene& s, const Camera& view, bool sweep, bool quick_sides = true,
+                    bool sweep_ends = true) {
   const ExteriorFaces& ext = s.exterior_faces();
   std::vector<FacePlane> plane;
   for (size_t i = 0; i < ext.face.size(); ++i) plane.push_back(FacePlane::of(&ext.corners[4 * i]));
@@ -40,6 +44,7 @@ Relations relations(const Scene& s, const Camera& view, bool sweep, bool quick_s
   const EdgeContacts contacts = find_edge_contacts(ext);
   in.conforming = contacts.triangles_only && contacts.touched_edges == 0;  // as the orderer
   in.quick_sides = quick_sides;
+  in.sweep_ends = sweep_ends;
   r.pairs = run_ray_queries(in, r.stats);
   return r;
 }
@@ -130,4 +135,73 @@ TEST(XmpvoEdgeSweep, QuickSidesDecideAsTheFilter) {
         EXPECT_GT(quick.stats.side_filtered, 0);
       }
   }
+}
+
+// A point query after a sweep that ended at the point takes the sweep's last covering faces
+// (Worker::run_query_after_sweep): the same relations, and the same sweeps and fallbacks,
+// as gathering at every point. On generated meshes most points do; the views along the axes
+// and from eyes in face planes put points on other faces' projected edges, which the
+// arrangement marks so that those points gather, see the degeneracy and send the view to
+// full queries as before (one thread: which points follow a sweep depends on the split).
+TEST(XmpvoEdgeSweep, PointsAfterASweepAsGathered) {
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  struct Case {
+    const char* name;
+    std::map<std::string, std::string> params;
+    std::vector<Camera> (*views)(const Scene&, int, int);
+  };
+  auto fibonacci = [](const Scene& s, int w, int h) {
+    std::vector<Camera> v;
+    for (int i = 0; i < 4; ++i) v.push_back(fibonacci_view(s.bounds(), 4, i, ViewOptions{w, h}));
+    return v;
+  };
+  int64_t after_sweep = 0, fallen_back = 0;
+  for (const Case& c : std::vector<Case>{{"helix", {{"cells", "3000"}}, fibonacci},
+                                         {"zoo", {}, fibonacci},
+                                         {"gap", {}, fibonacci},
+                                         {"touching-conforming", {}, fibonacci},
+                                         {"edge-on", {{"n", "6"}}, edge_on_views},
+                                         {"eye-in-plane", {}, eye_in_plane_views}}) {
+    SCOPED_TRACE(c.name);
+    const Scene s = dataset(c.name, c.params);
+    const std::vector<Camera> views = c.views(s, 160, 160);
+    for (size_t v = 0; v < views.size(); ++v) {
+      const Relations ends = relations(s, views[v], true, true, true), gathered = relations(s, views[v], true, true, false);
+      EXPECT_EQ(ends.pairs, gathered.pairs) << "view " << v;
+      EXPECT_EQ(ends.stats.sweep_edges, gathered.stats.sweep_edges) << "view " << v;
+      EXPECT_EQ(ends.stats.sweep_crossings, gathered.stats.sweep_crossings) << "view " << v;
+      EXPECT_EQ(ends.stats.sweep_fallbacks, gathered.stats.sweep_fallbacks) << "view " << v;
+      EXPECT_EQ(ends.stats.degenerate, gathered.stats.degenerate) << "view " << v;
+      EXPECT_EQ(gathered.stats.sweep_end_queries, 0);
+      after_sweep += ends.stats.sweep_end_queries;
+      fallen_back += gathered.stats.sweep_crossings == 0 && gathered.stats.vertex_queries > 0;
+    }
+  }
+  EXPECT_GT(after_sweep, 0);
+  EXPECT_GT(fallen_back, 0);
+}
+
+// Point b of a front tetrahedron projects exactly onto the edge (c, d) of one behind it,
+// and b's edge from a crosses an edge of a third one, so a sweep ends at b. Only b's own
+// query can see the degeneracy: the arrangement marks b on (c, d)'s line, b gathers, and
+// the view falls back to full queries as it does without the sweeps' end lists.
+TEST(XmpvoEdgeSweep, PointOnAnotherEdgeAfterASweepStillGathers) {
+  CellMesh m;
+  m.points = {{0, 0, 0},  {4, 0, 0},  {2.3, 3, 0},   {1.7, 1, -2},     // c, d and two more
+              {0, -1, -3}, {4, -1, -3}, {2.4, -1.6, -4}, {1.6, -0.5, -3.5},  // crossing (a, b) at y = -1
+              {2, -2, 1.5}, {1, -0.7, 2}, {3, -1.3, 2.5}, {2, 0, 1}};      // a, two more, b
+  m.add_cell(CellType::Tetra, {0, 1, 2, 3});
+  m.add_cell(CellType::Tetra, {4, 5, 6, 7});
+  m.add_cell(CellType::Tetra, {8, 9, 10, 11});
+  const Scene s = Scene::from_mesh("point-on-edge", m);
+  Camera view;
+  view.ortho = true;
+  view.eye = {2, -0.5, 10}, view.target = {2, -0.5, 0}, view.up = {0, 1, 0};
+  view.ortho_height = 8, view.width = view.height = 64;
+  tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+  const Relations ends = relations(s, view, true, true, true), gathered = relations(s, view, true, true, false);
+  EXPECT_EQ(gathered.stats.sweep_crossings, 0);  // b's full query saw the degeneracy
+  EXPECT_EQ(ends.stats.sweep_crossings, 0);
+  EXPECT_EQ(ends.pairs, gathered.pairs);
+  EXPECT_EQ(ends.stats.vertex_queries, gathered.stats.vertex_queries);
 }
