@@ -28,6 +28,10 @@
 // certainly ordered (their boxes' extents along e are disjoint, which also rules out
 // three edges through one point); a leaving face is in list_; no depth comparison is
 // undecided. All signs are the exact ones (filtered as in full queries).
+//
+// A sweep that decided every crossing leaves in list_ the faces covering e's last segment;
+// but those having b as a vertex, they are b's strictly covering faces in depth order, which
+// b's own query then takes instead of gathering them (ray_queries.cpp, keep_end_list).
 #include <algorithm>
 #include <cmath>
 
@@ -88,7 +92,7 @@ bool Worker::order_crossings() const {
 // of e: their positions, the side of e they cover, their order where on one side.
 bool Worker::start_list(int32_t e) {
   const auto [a, b] = in_.arr.edges[e];
-  const int32_t va = point_vertex_[a];
+  const int32_t va = view_.point_vertex[a];
   if (va < 0) return false;
   if (vi_ != va) begin(va);  // the same context, and its plane keys stay valid
   const ArrVertex& v = *current_;

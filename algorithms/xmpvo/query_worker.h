@@ -29,21 +29,27 @@ struct Wedge {
   int32_t pos;  // number of inside faces in front of it
 };
 
-// Per projected point (its vertex id; CSR): the kept faces it is a vertex of. Empty when
-// no point query takes its covering faces from a sweep.
-struct PointFaces {
-  std::vector<int32_t> off, faces;
+// What every worker reads of a view besides QueryInput, made once per view
+// (run_ray_queries).
+struct ViewTables {
+  std::vector<ViewPlane> view_plane;   // per exterior face
+  std::vector<int32_t> point_vertex;   // per exterior point, its vertex id or -1
+  // Per exterior face: its cell + 1 when front-facing, -(cell + 1) when back-facing, 0
+  // when not kept: emit()'s test in one read.
+  std::vector<int32_t> facing_cell;
+  // Per projected point (its vertex id; CSR): the kept faces it is a vertex of. Empty when
+  // no point query takes its covering faces from a sweep.
+  std::vector<int32_t> point_face_off, point_faces;
+  double widest_face = 0;  // largest side of a kept face's box (face_box)
 };
 
 class Worker {
  public:
-  Worker(const QueryInput& in, const std::vector<ViewPlane>& view_plane,
-         const std::vector<int32_t>& point_vertex, const PointFaces& point_faces, double widest_face)
-      : signs_(in.signs), in_(in), view_plane_(view_plane), point_vertex_(point_vertex),
-        point_faces_(point_faces), widest_face_(widest_face),
+  Worker(const QueryInput& in, const ViewTables& view)
+      : signs_(in.signs), in_(in), view_(view),
         face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
         key_(in.ext.face.size()), touch_stamp_(in.ext.face.size(), -1), touch_(in.ext.face.size()),
-        ended_at_(point_faces.off.empty() ? 0 : point_faces.off.size() - 1, -1) {
+        ended_at_(view.point_face_off.empty() ? 0 : view.point_face_off.size() - 1, -1) {
     signs_.side = signs_.dis_side = 0;
   }
   size_t bytes() const {
@@ -116,10 +122,7 @@ class Worker {
   int depth_edges(int32_t g, int m);
 
   const QueryInput& in_;
-  const std::vector<ViewPlane>& view_plane_;  // per exterior face, this view
-  const std::vector<int32_t>& point_vertex_;  // per exterior point, its vertex id or -1
-  const PointFaces& point_faces_;
-  const double widest_face_;                  // largest side of a kept face's box (face_box)
+  const ViewTables& view_;
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
   // Which of the current vertex's points face f holds (touch_bits), once per query.

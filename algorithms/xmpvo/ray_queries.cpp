@@ -92,7 +92,7 @@ int Worker::depth(int32_t x, int32_t y) {
 const PlaneKey& Worker::key(int32_t f) {
   if (key_stamp_[f] != vi_) {
     key_stamp_[f] = vi_;
-    key_[f] = plane_key(signs_.g, terms_, in_.plane[f], view_plane_[f]);
+    key_[f] = plane_key(signs_.g, terms_, in_.plane[f], view_.view_plane[f]);
   }
   return key_[f];
 }
@@ -112,10 +112,9 @@ int Worker::touch(int32_t f) {
 
 void Worker::emit(int32_t nearer, int32_t farther) {
   // Leaving the mesh through `nearer`, entering it again through `farther`.
-  const std::vector<int8_t>& facing = in_.proj.facing;
-  const std::vector<int32_t>& cell = in_.ext.cell;
-  if (facing[nearer] < 0 && facing[farther] > 0 && cell[nearer] != cell[farther]) {
-    const std::pair<int32_t, int32_t> p{cell[nearer], cell[farther]};
+  const int32_t n = view_.facing_cell[nearer], f = view_.facing_cell[farther];
+  if (n < 0 && f > 0 && -n != f) {
+    const std::pair<int32_t, int32_t> p{-n - 1, f - 1};
     // Neighbouring vertices repeat pairs: a direct-mapped table of recent ones keeps most
     // repeats out of the final sort.
     const uint64_t key = (uint64_t(uint32_t(p.first)) << 32 | uint32_t(p.second)) + 1;
@@ -160,13 +159,15 @@ void Worker::run_query_after_sweep(int32_t vi) {
   ++stats_.sweep_end_queries;
   begin(vi);
   const ArrVertex& v = *current_;
+  const int32_t* around = &view_.point_faces[static_cast<size_t>(view_.point_face_off[vi])];
+  const int32_t n_around = view_.point_face_off[vi + 1] - view_.point_face_off[vi];
   const int32_t* ended = &ended_[static_cast<size_t>(ended_at_[vi])];
-  inside_.assign(ended + 1, ended + 1 + ended[0]);
+  inside_.clear();
+  for (const int32_t* f = ended + 1; f < ended + 1 + ended[0]; ++f)
+    if (std::find(around, around + n_around, *f) == around + n_around) inside_.push_back(*f);
   wedges_.clear();
-  for (int32_t x = point_faces_.off[vi]; x < point_faces_.off[vi + 1]; ++x) {
-    const int32_t f = point_faces_.faces[x];
-    if (in_.proj.face_box[f].overlaps(v.box)) classify(v, f);
-  }
+  for (int32_t x = 0; x < n_around; ++x)
+    if (in_.proj.face_box[around[x]].overlaps(v.box)) classify(v, around[x]);
   undecided_ = false;
   if (!wedges_.empty()) emit_at_point(v);
   stats_.queries_rechecked += rechecked_;
@@ -176,16 +177,12 @@ void Worker::run_query_after_sweep(int32_t vi) {
 // query (run_query_after_sweep), kept once per point, unless the arrangement marked b.
 void Worker::keep_end_list(int32_t e) {
   if (ended_at_.empty()) return;
-  const int32_t b = in_.arr.edges[e].second, vb = point_vertex_[b];
+  const int32_t b = in_.arr.edges[e].second, vb = view_.point_vertex[b];
   if (vb < 0 || ended_at_[vb] >= 0 || in_.arr.point_on_line[b]) return;
   const size_t at = ended_.size();
   ended_at_[vb] = static_cast<int32_t>(at);
-  ended_.push_back(0);
-  for (int32_t f : list_) {
-    const int32_t* p = &in_.ext.vertex[4 * f];
-    if (p[0] != b && p[1] != b && p[2] != b && (in_.ext.size[f] < 4 || p[3] != b)) ended_.push_back(f);
-  }
-  ended_[at] = static_cast<int32_t>(ended_.size() - at - 1);
+  ended_.push_back(static_cast<int32_t>(list_.size()));
+  ended_.insert(ended_.end(), list_.begin(), list_.end());
 }
 
 void Worker::query_and_sweep(int32_t vi, const int32_t* e0, const int32_t* e1) {
@@ -239,7 +236,7 @@ void Worker::begin(int32_t vi) {
   quick_ = INFINITY;  // no sign beyond it
   if (filter_ && in_.quick_sides) {
     const double s = proj.slack, ea = 2 * s, ex = rx_ + s, ey = ry_ + s;
-    const double d = 2 * widest_face_ + 4 * std::max(rx_, ry_);
+    const double d = 2 * view_.widest_face + 4 * std::max(rx_, ry_);
     quick_ = 1.02 * (d * (ex + ey + 2 * ea) + ea * (ex + ey) + 2e-15 * d * d);
     // NaN, or so small that the bound's terms may have underflowed: none.
     if (!(quick_ > 1e-290)) quick_ = INFINITY;
@@ -378,7 +375,7 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
     inside_.push_back(f);
     // Its plane key is computed next (sort_inside): asked for now.
     __builtin_prefetch(&in_.plane[f].n);
-    __builtin_prefetch(&view_plane_[f]);
+    __builtin_prefetch(&view_.view_plane[f]);
     return;
   }
   // A point on the boundary of a face it is not a vertex of: the edge sweep's premise fails.
@@ -447,32 +444,34 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   // Queries are independent: threads take runs of vertices (or edges); the relation set,
   // sorted and deduplicated, does not depend on the split.
   const Arrangement& arr = in.arr;
-  std::vector<ViewPlane> view_plane(in.plane.size());
-  for (int32_t f : in.proj.kept) view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
-  std::vector<int32_t> point_vertex(in.ext.points.size(), -1);
-  for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
-  double widest = 0;  // NaN boxes never overlap a vertex box: not counted
+  detail::ViewTables view;
+  view.view_plane.resize(in.plane.size());
+  view.facing_cell.assign(in.ext.face.size(), 0);
   for (int32_t f : in.proj.kept) {
+    view.view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
+    view.facing_cell[f] = in.proj.facing[f] * (in.ext.cell[f] + 1);
+    // NaN boxes never overlap a vertex box: not counted.
     const Box& b = in.proj.face_box[f];
-    widest = std::max({widest, b.x1 - b.x0, b.y1 - b.y0});
+    view.widest_face = std::max({view.widest_face, b.x1 - b.x0, b.y1 - b.y0});
   }
+  std::vector<int32_t>& point_vertex = view.point_vertex;
+  point_vertex.assign(in.ext.points.size(), -1);
+  for (size_t v = 0; v < arr.projected_vertices; ++v) point_vertex[arr.vertices[v].a] = static_cast<int32_t>(v);
   // The kept faces around each point, for the queries that follow a sweep ending there.
-  detail::PointFaces point_faces;
   const bool sweep = in.sweep && in.signs.mode == Mode::Exact;
   if (sweep && in.sweep_ends && in.conforming && arr.lines_marked) {
     const size_t np = arr.projected_vertices;
-    std::vector<int32_t>& off = point_faces.off;
+    std::vector<int32_t>& off = view.point_face_off;
     off.assign(np + 2, 0);
     for (int32_t f : in.proj.kept)
       for (int k = 0; k < in.ext.size[f]; ++k) ++off[point_vertex[in.ext.vertex[4 * f + k]] + 2];
     for (size_t v = 2; v < off.size(); ++v) off[v] += off[v - 1];
-    point_faces.faces.resize(static_cast<size_t>(off.back()));
+    view.point_faces.resize(static_cast<size_t>(off.back()));
     for (int32_t f : in.proj.kept)
-      for (int k = 0; k < in.ext.size[f]; ++k) point_faces.faces[off[point_vertex[in.ext.vertex[4 * f + k]] + 1]++] = f;
+      for (int k = 0; k < in.ext.size[f]; ++k) view.point_faces[off[point_vertex[in.ext.vertex[4 * f + k]] + 1]++] = f;
     off.pop_back();
   }
-  tbb::enumerable_thread_specific<Worker> workers(
-      [&] { return Worker(in, view_plane, point_vertex, point_faces, widest); });
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view); });
   auto queries = [&](size_t v0, size_t v1) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
       Worker& w = workers.local();

@@ -5,8 +5,9 @@
 // plus the boundary ones covering it, in depth order. Consecutive (back-facing nearer,
 // front-facing farther) pairs give "cell of the nearer in front of cell of the farther".
 // Points get a full query, the crossings of each projected edge a sweep along it
-// (edge_sweep.cpp). Queries run in parallel (TBB); the relation set does not depend on the
-// thread split (some counters do: a thread reuses its last sweep start).
+// (edge_sweep.cpp); a point that a sweep ended at takes its covering faces from that
+// sweep. Queries run in parallel (TBB); the relation set does not depend on the thread
+// split (some counters do: a thread reuses its last sweep start and its sweeps' ends).
 #pragma once
 #include <cstdint>
 #include <utility>
