@@ -186,4 +186,21 @@ class Worker {
   std::vector<uint64_t> seen_ = std::vector<uint64_t>(size_t{1} << kSeenBits, 0);
 };
 
+// In this header: the sweeps (edge_sweep.cpp) and point queries call it millions of times
+// a view.
+inline void Worker::emit(int32_t nearer, int32_t farther) {
+  // Leaving the mesh through `nearer`, entering it again through `farther`.
+  const int32_t n = view_.facing_cell[nearer], f = view_.facing_cell[farther];
+  if (n < 0 && f > 0 && -n != f) {
+    const std::pair<int32_t, int32_t> p{-n - 1, f - 1};
+    // Neighbouring vertices repeat pairs: a direct-mapped table of recent ones keeps most
+    // repeats out of the final sort.
+    const uint64_t key = (uint64_t(uint32_t(p.first)) << 32 | uint32_t(p.second)) + 1;
+    uint64_t& slot = seen_[(key * 0x9E3779B97F4A7C15ull) >> (64 - kSeenBits)];
+    if (slot == key) return;
+    slot = key;
+    pairs_.push_back(p);
+  }
+}
+
 }  // namespace vob::xmpvo::detail
