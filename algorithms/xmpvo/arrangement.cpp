@@ -169,6 +169,16 @@ ArrVertex crossing_vertex(const BucketEdge& e, const BucketEdge& f, double slack
 
 }  // namespace
 
+// Out of the pair loop (rare: only pairs the exact test found not crossing come here), so
+// that it does not weigh on the loop's registers and code.
+void Arrangement::mark_on_line(const ViewGeometry& g, const std::vector<Vec3>& points, int32_t a, int32_t b,
+                               int32_t c, int32_t d) {
+  auto on = [&](int32_t x, int32_t p, int32_t q) {
+    if (edge_side(g, points[p], points[q], points[x]) == 0) point_on_line[x] = 1;
+  };
+  on(a, c, d), on(b, c, d), on(c, a, b), on(d, a, b);
+}
+
 Box Arrangement::edge_box(const Projection& proj, int32_t e) const {
   const Box a = proj.point_box(edges[e].first), b = proj.point_box(edges[e].second);
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
@@ -208,12 +218,6 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   // certify a zero sign, and a point on the other edge leaves the pair not apart.
   lines_marked = filter;
   point_on_line.assign(points.size(), 0);
-  auto mark_on_line = [&](int32_t a, int32_t b, int32_t c, int32_t d) {
-    auto on = [&](int32_t x, int32_t p, int32_t q) {
-      if (edge_side(signs.g, points[p], points[q], points[x]) == 0) point_on_line[x] = 1;
-    };
-    on(a, c, d), on(b, c, d), on(c, a, b), on(d, a, b);
-  };
   const bool avx2 = lanes && cpu_has_avx2();
   edge_vertex_off.assign(edges.size() + 1, 0);  // crossings per edge, at e + 1
   // Proper crossing from the double filter: 1 / 0 when certain, 2 when not. No early exit:
@@ -337,7 +341,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           const Item& iy = local[maybe[k].first];
           const int32_t a = ix.a, b = ix.b, cc = iy.a, d = iy.b;
           if (maybe[k].second == 2 && !signs.crosses(points[a], points[b], points[cc], points[d])) {
-            if (lines_marked) mark_on_line(a, b, cc, d);
+            if (lines_marked) mark_on_line(signs.g, points, a, b, cc, d);
             continue;
           }
           vertices.push_back(crossing_vertex(ix, iy, slack));

@@ -82,6 +82,9 @@ struct Arrangement {
   Box edge_box(const Projection& proj, int32_t e) const;
   void build_edges(const ExteriorFaces& ext, const Projection& proj);
   void index_crossings(const Projection& proj);
+  // point_on_line for the four points of a pair that does not cross properly.
+  [[gnu::noinline, gnu::cold]] void mark_on_line(const ViewGeometry& g, const std::vector<Vec3>& points, int32_t a,
+                                                 int32_t b, int32_t c, int32_t d);
 };
 
 }  // namespace vob::xmpvo
