@@ -31,7 +31,7 @@
 //
 // A sweep that decided every crossing leaves in list_ the faces covering e's last segment;
 // but those having b as a vertex, they are b's strictly covering faces in depth order, which
-// b's own query then takes instead of gathering them (ray_queries.cpp, keep_end_list).
+// b's own query then takes instead of gathering them (sweep_ends.cpp).
 #include <algorithm>
 #include <cmath>
 

@@ -43,6 +43,9 @@ struct ViewTables {
   double widest_face = 0;  // largest side of a kept face's box (face_box)
 };
 
+// view.point_face_off and point_faces from the kept faces (sweep_ends.cpp).
+void index_point_faces(const QueryInput& in, ViewTables& view);
+
 class Worker {
  public:
   Worker(const QueryInput& in, const ViewTables& view)

@@ -35,7 +35,7 @@ struct QueryInput {
   // Worker::orient_raw); off: uv_side's own bound at every test (the same signs, for tests).
   bool quick_sides = true;
   // A point query after a sweep that ended at the point takes the point's strictly covering
-  // faces, sorted, from that sweep (edge_sweep.cpp, keep_end_list) instead of gathering and
+  // faces, sorted, from that sweep (sweep_ends.cpp) instead of gathering and
   // sorting them; only on conforming surfaces whose arrangement marked the points on other
   // edges' lines. Off: every point gathers (the same relations, for tests).
   bool sweep_ends = true;
