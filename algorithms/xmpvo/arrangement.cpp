@@ -21,6 +21,7 @@ struct BucketEdge {
   Box box;
   Uv ua, ub;
   int32_t a, b, id;
+  bool unswept;  // Arrangement::unswept(id)
 };
 
 // A bucket's edges as the pair loop's first pass reads them, one array per field, four
@@ -193,6 +194,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   build_edges(ext, proj);
   std::vector<int32_t> ids(edges.size());
   for (size_t e = 0; e < edges.size(); ++e) ids[e] = static_cast<int32_t>(e);
+  mark_edges(proj);
   box_.resize(edges.size());
   for (size_t e = 0; e < edges.size(); ++e) box_[e] = edge_box(proj, static_cast<int32_t>(e));
   // The edges' own grid, buckets about the size of a mean edge box: each edge then lies in
@@ -259,7 +261,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
       for (int32_t x = edge_off[cell]; x < edge_off[cell + 1]; ++x) {
         const int32_t id = edge_items[x];
         const auto [a, b] = edges[id];
-        local.push_back({box_[id], proj.uv[a], proj.uv[b], a, b, id});
+        local.push_back({box_[id], proj.uv[a], proj.uv[b], a, b, id, unswept_[id] != 0});
       }
       std::sort(local.begin(), local.end(), [&](const Item& p, const Item& q) { return left(p) < left(q); });
       const double cx0 = grid.gx0 + c * grid.cw, cy0 = grid.gy0 + r * grid.ch;
@@ -317,6 +319,15 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
             nc += inside || own_corner(near[k]);
           }
         }
+        // Crossings of two inner edges of the unswept sheet: read by no sweep.
+        if (ix.unswept) {
+          size_t m = 0;
+          for (size_t k = 0; k < nc; ++k) {
+            near[m] = near[k];
+            m += !local[near[k]].unswept;
+          }
+          nc = m;
+        }
         candidates += static_cast<int64_t>(nc);
         size_t q = 0;
         if (!filter) {
@@ -345,8 +356,8 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
             continue;
           }
           vertices.push_back(crossing_vertex(ix, iy, slack));
-          ++edge_vertex_off[ix.id + 1];
-          ++edge_vertex_off[iy.id + 1];
+          edge_vertex_off[ix.id + 1] += !ix.unswept;  // unswept edges get no lists
+          edge_vertex_off[iy.id + 1] += !iy.unswept;
         }
       }
     }
@@ -426,7 +437,7 @@ size_t Arrangement::bytes() const {
   return edges.capacity() * 8 + (edge_off.capacity() + edge_items.capacity()) * 4 +
          (edge_face_off.capacity() + edge_faces.capacity() + edge_vertex_off.capacity()) * 4 +
          edge_face_dir.capacity() + edge_crossings.capacity() * sizeof(EdgeCrossing) +
-         vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box) + swap_.capacity() * 8 +
+         vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box) + swap_.capacity() * 8 + unswept_.capacity() +
          all_edges_.capacity() * 8 + (all_face_off_.capacity() + all_faces_.capacity()) * 4 +
          all_face_dir_.capacity() + point_on_line.capacity();  // set_faces' lists, held for every view
 }

@@ -57,6 +57,12 @@ struct Arrangement {
   // The pair loop's first pass and double filter four pairs a step in AVX2 lanes where the
   // CPU has them (the same answers: tests compare the two).
   bool lanes = true;
+  // The sheet whose inner edges the sweeps leave out (edge_sweep.cpp; +1 front, -1 back, 0
+  // none), set before build(): an edge with two kept faces on either side of it, both
+  // facing this way. Such edges get no crossing lists, and a pair of two of them is not
+  // tested (no sweep would read its crossing), so `vertices` then lacks those crossings:
+  // full queries at every vertex need a build with 0.
+  int unswept_sheet = 0;
 
   // The unique edges of all of ext's faces, once per mesh (prepare): a view's edges are
   // those of its kept faces, the same lists filtered (no sort per view).
@@ -67,6 +73,8 @@ struct Arrangement {
   // Edge e's two faces when it has one on each side (else -1: a silhouette edge, or not
   // two kept faces), for the sweep's swaps. After build().
   const std::array<int32_t, 2>& swap_faces(int32_t e) const { return swap_[e]; }
+  // Whether edge e is an inner edge of the unswept sheet. After build().
+  bool unswept(int32_t e) const { return unswept_[e] != 0; }
 
  private:
   // set_faces' edge lists (as edges, edge_face_off, edge_faces, edge_face_dir) for every
@@ -78,9 +86,11 @@ struct Arrangement {
   bool lists_are_all_ = false;
   std::vector<Box> box_;  // per edge, its projected box
   std::vector<std::array<int32_t, 2>> swap_;  // per edge, swap_faces()
+  std::vector<uint8_t> unswept_;              // per edge, unswept()
   BucketGrid grid_;       // of the edges
   Box edge_box(const Projection& proj, int32_t e) const;
   void build_edges(const ExteriorFaces& ext, const Projection& proj);
+  void mark_edges(const Projection& proj);  // swap_ and unswept_
   void index_crossings(const Projection& proj);
   // point_on_line for the four points of a pair that does not cross properly.
   [[gnu::noinline, gnu::cold]] void mark_on_line(const ViewGeometry& g, const std::vector<Vec3>& points, int32_t a,

@@ -52,19 +52,28 @@ __attribute__((target_clones("avx2", "default"))) void sort_edge_crossings(const
   for (int32_t i = 0; i < n; ++i) out[place[i]] = p[i];
 }
 
-// The crossings on each edge, for the edge sweep of ray_queries: each exact crossing lies
-// in its vertex box, so its position along the edge (a dot product with the edge's
-// projected direction, monotone along the exact edge) lies within the box's extent,
-// widened by the rounding.
-void Arrangement::index_crossings(const Projection& proj) {
+// Per edge: its two faces when it has one on each side (the sweep's swaps), and whether it
+// is an inner edge of the unswept sheet (both faces facing that way).
+void Arrangement::mark_edges(const Projection& proj) {
   swap_.resize(edges.size());
+  unswept_.assign(edges.size(), 0);
   for (size_t e = 0; e < edges.size(); ++e) {
     const int32_t x = edge_face_off[e];
     const bool two_sides = edge_face_off[e + 1] - x == 2 &&
                            edge_face_dir[x] * proj.facing[edge_faces[x]] == -edge_face_dir[x + 1] * proj.facing[edge_faces[x + 1]];
     swap_[e] = two_sides ? std::array<int32_t, 2>{edge_faces[x], edge_faces[x + 1]} : std::array<int32_t, 2>{-1, -1};
+    unswept_[e] = unswept_sheet != 0 && two_sides && proj.facing[edge_faces[x]] == unswept_sheet &&
+                  proj.facing[edge_faces[x + 1]] == unswept_sheet;
   }
-  // edge_vertex_off holds each edge's crossing count (build() counted them as it found them).
+}
+
+// The crossings on each edge, for the edge sweep of ray_queries: each exact crossing lies
+// in its vertex box, so its position along the edge (a dot product with the edge's
+// projected direction, monotone along the exact edge) lies within the box's extent,
+// widened by the rounding.
+void Arrangement::index_crossings(const Projection& proj) {
+  // edge_vertex_off holds each edge's crossing count (build() counted them as it found them;
+  // none for the unswept edges).
   for (size_t e = 1; e < edge_vertex_off.size(); ++e) edge_vertex_off[e] += edge_vertex_off[e - 1];
   edge_crossings.resize(edge_vertex_off.back());
   std::vector<int32_t> fill(edge_vertex_off.begin(), edge_vertex_off.end() - 1);
@@ -72,8 +81,10 @@ void Arrangement::index_crossings(const Projection& proj) {
     const Box& b = vertices[v].box;
     const double xc = 0.5 * (b.x0 + b.x1), yc = 0.5 * (b.y0 + b.y1);
     const double hw = 0.5 * (b.x1 - b.x0), hh = 0.5 * (b.y1 - b.y0);
-    const int32_t e1 = vertices[v].e1, e2 = vertices[v].e2, s1 = fill[e1]++, s2 = fill[e2]++;
-    for (const auto& [e, other, slot] : {std::array{e1, e2, s1}, std::array{e2, e1, s2}}) {
+    const int32_t e1 = vertices[v].e1, e2 = vertices[v].e2;
+    for (const auto& [e, other] : {std::array{e1, e2}, std::array{e2, e1}}) {
+      if (unswept_[e]) continue;
+      const int32_t slot = fill[e]++;
       const auto [ax, ay] = proj.uv[edges[e].first];
       const auto [bx, by] = proj.uv[edges[e].second];
       const double dx = bx - ax, dy = by - ay;

@@ -17,6 +17,19 @@
 // arrangement vertex find (the segments next to a and b also touch a and b). Crossings
 // themselves get no query.
 //
+// One sheet's inner edges need no sweep (Arrangement::unswept_sheet, on conforming
+// surfaces): an edge whose two faces lie on either side of it and both face the same way.
+// Only pairs (b, f) of a back face b and a front face f behind it are emitted (emit()).
+// Across such an edge of a third face, that face gives way to its neighbour at the same
+// depth, so the pair stays consecutive: the region where (b, f) is consecutive is bounded
+// by edges of b, edges of f and silhouette edges (one-sided: a face entering or leaving
+// between them). Leave out the front sheet's inner edges: b's edges and the silhouettes are
+// still swept, so a region with any of them on its boundary is found there; a region
+// bounded by f's inner edges alone is all of f, and the queries at f's points find it.
+// (Leaving out both sheets would lose regions bounded by inner edges of b and f alone.) So
+// the relations are the same. A crossing of two such edges is then read by no sweep, and
+// the arrangement does not look for it.
+//
 // Depth at a crossing: an entering face g holds e', so the crossing's ray meets g's plane
 // on the segment (c, d). Where c and d lie strictly on one side of a face h's plane
 // (orient3d, filtered), so does that point, and g is in front of h exactly when that is
@@ -44,6 +57,10 @@ namespace vob::xmpvo::detail {
 void Worker::sweep_edge(int32_t e) {
   const Arrangement& arr = in_.arr;
   // Without crossings the regions along e touch a and b: the point queries see them.
+  if (arr.unswept(e)) {  // an inner edge of the sheet left out (Arrangement::unswept_sheet)
+    ++stats_.sheet_edges_unswept;
+    return;
+  }
   if (arr.edge_vertex_off[e] == arr.edge_vertex_off[e + 1]) return;
   ++stats_.sweep_edges;
   const size_t mark = pairs_.size();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <tuple>
 
 #include <tbb/blocked_range.h>
@@ -383,7 +384,8 @@ void QueryStats::add(const QueryStats& x) {
   sweep_edges += x.sweep_edges, sweep_crossings += x.sweep_crossings;
   sweep_fallbacks += x.sweep_fallbacks, depth_plane_sides += x.depth_plane_sides;
   sweep_swaps += x.sweep_swaps, depth_edge_orders += x.depth_edge_orders;
-  sweep_end_queries += x.sweep_end_queries;
+  sweep_end_queries += x.sweep_end_queries, sheet_edges_unswept += x.sheet_edges_unswept;
+  arrangement_rebuilt += x.arrangement_rebuilt;
   scratch_bytes += x.scratch_bytes;
 }
 
@@ -441,7 +443,14 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     if (degenerate)
       for (Worker& w : workers) w.reset();
   }
-  if (!sweep || degenerate) queries(0, arr.vertices.size());
+  if (!sweep || degenerate) {
+    if (arr.unswept_sheet != 0) {  // crossings left out: the caller builds again
+      stats = QueryStats{};
+      stats.needs_every_crossing = true;
+      return {};
+    }
+    queries(0, arr.vertices.size());
+  }
   std::vector<std::pair<int32_t, int32_t>> pairs;
   stats = QueryStats{};
   for (Worker& w : workers) {
@@ -454,6 +463,19 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   int32_t last = -1;  // the largest cell id
   for (const auto& [front, behind] : pairs) last = std::max({last, front, behind});
   mpvo::sort_unique_pairs(pairs, static_cast<size_t>(last + 1));
+  return pairs;
+}
+
+std::vector<std::pair<int32_t, int32_t>> view_relations(QueryInput in, Arrangement& arr, Signs& signs,
+                                                        QueryStats& stats, int64_t& candidates) {
+  if (&in.arr != &arr) throw std::logic_error("xmpvo::view_relations: QueryInput of another arrangement");
+  std::vector<std::pair<int32_t, int32_t>> pairs = run_ray_queries(in, stats);
+  if (!stats.needs_every_crossing) return pairs;
+  arr.unswept_sheet = 0;
+  candidates = arr.build(in.ext, in.proj, signs);
+  in.sweep = false;
+  pairs = run_ray_queries(in, stats);
+  stats.arrangement_rebuilt = 1;
   return pairs;
 }
 

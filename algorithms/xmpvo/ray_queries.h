@@ -59,11 +59,24 @@ struct QueryStats {
   int64_t depth_edge_orders = 0;
   // Point queries that took their covering faces from a sweep ending at the point.
   int64_t sweep_end_queries = 0;
+  int64_t sheet_edges_unswept = 0;  // edges left out by Arrangement::unswept_sheet
+  // The view needs full queries at every vertex (no sweeps, or a degeneracy) but the
+  // arrangement left out crossings (Arrangement::unswept_sheet): no relations were made;
+  // build it again with 0 and ask once more (view_relations does).
+  bool needs_every_crossing = false;
+  int64_t arrangement_rebuilt = 0;  // view_relations built the arrangement again
   size_t scratch_bytes = 0;        // the query threads' scratch
   void add(const QueryStats& o);
 };
 
 // The relation pairs (front cell, back cell), sorted and without duplicates.
 std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, QueryStats& stats);
+
+// run_ray_queries, and where the view needs full queries at every vertex but the
+// arrangement left out crossings, the arrangement built again with none left out and the
+// full queries (so a caller's ray-query time includes the second build). `candidates`
+// takes the second build's count of tested edge pairs.
+std::vector<std::pair<int32_t, int32_t>> view_relations(QueryInput in, Arrangement& arr, Signs& signs,
+                                                        QueryStats& stats, int64_t& candidates);
 
 }  // namespace vob::xmpvo

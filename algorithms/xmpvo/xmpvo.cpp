@@ -85,15 +85,19 @@ Ordering XmpvoOrderer::order(const Camera& view, PhaseClock& clock) {
     proj_.run(*ext_, view, signs_, centre_, radius_);
   }
   int64_t candidates = 0;
+  const bool conforming = contacts_.triangles_only && contacts_.touched_edges == 0;
   {
     auto p = clock.phase("arrangement vertices");
+    // On a conforming surface the sweeps leave out the front sheet's inner edges, and the
+    // arrangement their crossings with each other (edge_sweep.cpp).
+    arr_.unswept_sheet = conforming && mode_ == xmpvo::Mode::Exact ? 1 : 0;
     candidates = arr_.build(*ext_, proj_, signs_);
   }
   {
     auto p = clock.phase("ray queries");
     xmpvo::QueryInput in{signs_, *ext_, plane_, proj_, arr_};
-    in.conforming = contacts_.triangles_only && contacts_.touched_edges == 0;
-    pairs_ = xmpvo::run_ray_queries(in, stats_);
+    in.conforming = conforming;
+    pairs_ = xmpvo::view_relations(in, arr_, signs_, stats_, candidates);
     signs_.side += stats_.side;
     signs_.dis_side += stats_.dis_side;
     extra_.build_from_pairs(core_.num_cells(), pairs_);
@@ -140,6 +144,8 @@ void XmpvoOrderer::add_counters(Ordering& out, int64_t candidates) const {
   k["sweep_swaps"] = static_cast<double>(stats_.sweep_swaps);
   k["depth_edge_orders"] = static_cast<double>(stats_.depth_edge_orders);
   k["sweep_end_queries"] = static_cast<double>(stats_.sweep_end_queries);
+  k["sheet_edges_unswept"] = static_cast<double>(stats_.sheet_edges_unswept);
+  k["arrangement_rebuilt"] = static_cast<double>(stats_.arrangement_rebuilt);
   k["degenerate_coverage"] = static_cast<double>(stats_.degenerate);
   k["relations"] = static_cast<double>(pairs_.size());
   k["grid_buckets"] = static_cast<double>(proj_.grid.buckets());

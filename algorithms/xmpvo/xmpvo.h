@@ -31,7 +31,11 @@
 //       projected edge with crossings a sweep along it that keeps the covering faces sorted
 //       and emits the pairs next to its own faces on each segment (edge_sweep.cpp;
 //       crossings get no query of their own), with full queries wherever its premises
-//       fail. Queries run in parallel (TBB); the relation set does not depend on the
+//       fail. On a conforming surface in exact mode the front sheet's inner edges (two
+//       front faces on either side) are not swept, and the arrangement leaves out their
+//       crossings with each other: the same relations (edge_sweep.cpp); a view that needs
+//       full queries at every vertex builds the arrangement again, in this phase.
+//       Queries run in parallel (TBB); the relation set does not depend on the
 //       thread split.
 //       Consecutive (back-facing nearer, front-facing farther)
 //       pairs give "cell of the nearer in front of cell of the farther". Only pairs next to
@@ -73,8 +77,11 @@
 // exterior face not having them meets, found in prepare; -1 with quadrilaterals: on 0 the
 // swaps compare no depths), depth_edge_orders
 // (sweep depth comparisons of a face of the swept edge with an entering face, decided by the
-// orientation of the two edges); vertex_queries
-// counts every vertex ray a query or the sweep built.
+// orientation of the two edges), sweep_end_queries (point queries that took their faces
+// from a sweep ending there), sheet_edges_unswept (inner edges of the front sheet left
+// out), arrangement_rebuilt (1: the view needed every crossing); vertex_queries
+// counts every vertex ray a query or the sweep built. edge_crossings and
+// candidate_edge_pairs leave out the pairs of two unswept edges.
 #pragma once
 #include "harness/bench/registry.h"
 
