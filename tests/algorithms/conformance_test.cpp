@@ -9,7 +9,10 @@
 //     other view is skipped, saying so);
 //   - object_exact: none at S = 4 either;
 //   - detects_cycles: the cycle scenes report a cycle (for an orderer that is not exact,
-//     those whose cycle runs through shared faces; see face_connected).
+//     those whose cycle runs through shared faces; see face_connected);
+//   - the views before do not matter: the first view, ordered again after the others by
+//     the same prepared orderer, gets the same order (storage kept from frame to frame
+//     must not carry a view's state into the next).
 // No orderer or dataset is named here: a new registration is tested as soon as it exists.
 // A configuration whose claims differ from the default's (a choice parameter such as
 // backend=software) is tested as an orderer of its own.
@@ -138,11 +141,13 @@ TEST_P(Conformance, CompleteAndTrueToItsClaims) {
   ASSERT_FALSE(views.empty());
   int64_t cycles = 0, covered = 0;
   int unjudged = 0;  // gl rule: views whose snapped cells overlap (no order is exact there)
+  std::vector<int32_t> first_order;
   std::string unjudged_why;
   for (const auto& [vi, cam] : views) {
     const std::string where = c.spec + " on " + c.dataset.label() + " view " + std::to_string(vi);
     FrameMeasurement m = measure_frame(*p, cam, 0, 1);
     ASSERT_NO_THROW(check_complete(scene, m.ordering, c.spec)) << where;
+    if (first_order.empty()) first_order = m.ordering.order;
     EXPECT_FALSE(m.repeats.back().empty()) << where << ": no timed phase";
     for (int32_t id : m.ordering.cycles.primitives)
       EXPECT_TRUE(id >= 0 && size_t(id) < scene.num_primitives()) << where;
@@ -182,6 +187,10 @@ TEST_P(Conformance, CompleteAndTrueToItsClaims) {
       EXPECT_EQ(r.violating_fragments, 0) << where << " S=4: " << r.to_json().dump();
     }
   }
+  const FrameMeasurement again = measure_frame(*p, views.front().second, 0, 1);
+  EXPECT_TRUE(again.ordering.order == first_order)
+      << c.spec << " on " << c.dataset.label() << " view " << views.front().first
+      << ": a different order when ordered again after the other views";
   EXPECT_GT(p->orderer->bytes(), 0u) << c.spec;
   if (acyclic && exact && unjudged == int(views.size()))
     GTEST_SKIP() << c.spec << " on " << c.dataset.label() << ": no view at " << kSize << "x" << kSize
