@@ -39,19 +39,29 @@ void ExtraRelations::build_from_pairs(size_t cells,
   }
   for (size_t c = 0; c < cells; ++c) offsets[c + 1] += offsets[c];
   behind.resize(pairs.size());
-  std::vector<int32_t> fill(offsets.begin(), offsets.end() - 1);
-  for (const auto& [front, behind_cell] : pairs) behind[fill[front]++] = behind_cell;
+  // Placed from each list's end backwards (the pairs' order kept within a list, no cursor
+  // array to allocate every frame): offsets[c + 1] ends as c's start, then moves to c.
+  for (auto p = pairs.rbegin(); p != pairs.rend(); ++p) behind[--offsets[p->first + 1]] = p->second;
+  std::copy(offsets.begin() + 1, offsets.end(), offsets.begin());
+  offsets[cells] = static_cast<int32_t>(pairs.size());
 }
 
 void sort_unique_pairs(std::vector<std::pair<int32_t, int32_t>>& pairs, size_t cells) {
+  PairSortScratch scratch;
+  sort_unique_pairs(pairs, cells, scratch);
+}
+
+void sort_unique_pairs(std::vector<std::pair<int32_t, int32_t>>& pairs, size_t cells, PairSortScratch& scratch) {
   // Two passes cost O(pairs + cells), std::sort O(pairs log pairs). With 291k pairs on 200k
   // cells (XMPVO, 200k-cell helix, view 4) the ray queries took 145-149 ms with std::sort,
   // 130-136 with the passes.
   if (cells > 4 * pairs.size() + 1024) {
     std::sort(pairs.begin(), pairs.end());
   } else {
-    std::vector<std::pair<int32_t, int32_t>> by_second(pairs.size());
-    std::vector<int32_t> start(cells + 1);
+    std::vector<std::pair<int32_t, int32_t>>& by_second = scratch.by_second;
+    std::vector<int32_t>& start = scratch.start;
+    by_second.resize(pairs.size());
+    start.resize(cells + 1);
     const auto pass = [&](const std::vector<std::pair<int32_t, int32_t>>& from,
                           std::vector<std::pair<int32_t, int32_t>>& to, auto id) {
       std::fill(start.begin(), start.end(), 0);

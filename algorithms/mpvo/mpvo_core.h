@@ -76,6 +76,13 @@ struct ExtraRelations {
 // ids span at most a few times as many values as there are pairs, by two stable counting
 // passes (second id, then first; ids must then be in [0, cells)); else by std::sort.
 void sort_unique_pairs(std::vector<std::pair<int32_t, int32_t>>& pairs, size_t cells);
+// The counting passes' buffers, kept by a caller that sorts every frame.
+struct PairSortScratch {
+  std::vector<std::pair<int32_t, int32_t>> by_second;
+  std::vector<int32_t> start;
+  size_t bytes() const { return by_second.capacity() * 8 + start.capacity() * 4; }
+};
+void sort_unique_pairs(std::vector<std::pair<int32_t, int32_t>>& pairs, size_t cells, PairSortScratch& scratch);
 
 // The parameters `renumber` (bool, default true), `curve` (hilbert|morton) and
 // `keep_coherent` (bool, default true) of the plugins that renumber through prepare():

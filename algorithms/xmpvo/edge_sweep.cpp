@@ -55,7 +55,7 @@
 namespace vob::xmpvo::detail {
 
 void Worker::sweep_edge(int32_t e) {
-  const Arrangement& arr = in_.arr;
+  const Arrangement& arr = in_->arr;
   // Without crossings the regions along e touch a and b: the point queries see them.
   if (arr.unswept(e)) {  // an inner edge of the sheet left out (Arrangement::unswept_sheet)
     ++stats_.sheet_edges_unswept;
@@ -89,7 +89,7 @@ bool Worker::sweep(int32_t e) {
   for (const EdgeCrossing& xing : xings_) {
     // Nearly every crossing of a conforming surface is a swap, which reads neither depths
     // nor the crossed edge's points (a random read): tried here, inline.
-    if (!(in_.conforming && swap(e, xing)) && !cross(e, xing)) return false;
+    if (!(in_->conforming && swap(e, xing)) && !cross(e, xing)) return false;
     // The pairs next to e's faces change only where a face leaves or enters beside them.
     if (beside_) emit_segment();
   }
@@ -108,8 +108,8 @@ bool Worker::order_crossings() const {
 // as a corner whose angle holds the direction of b strictly; sorted at a's ray. The faces
 // of e: their positions, the side of e they cover, their order where on one side.
 bool Worker::start_list(int32_t e) {
-  const auto [a, b] = in_.arr.edges[e];
-  const int32_t va = view_.point_vertex[a];
+  const auto [a, b] = in_->arr.edges[e];
+  const int32_t va = view_->point_vertex[a];
   if (va < 0) return false;
   if (vi_ != va) begin(va);  // the same context, and its plane keys stay valid
   const ArrVertex& v = *current_;
@@ -134,14 +134,14 @@ bool Worker::start_list(int32_t e) {
     if (os == 0 || ot == 0) return false;
     list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(insert_at(w.face)), w.face);
   }
-  const Arrangement& arr = in_.arr;
+  const Arrangement& arr = in_->arr;
   n_eface_ = 0;
   for (int32_t x = arr.edge_face_off[e]; x < arr.edge_face_off[e + 1]; ++x) {
     if (n_eface_ == 4) return false;
     const int32_t f = arr.edge_faces[x];
     const int dir = arr.edge_face_dir[x];
     eface_[n_eface_] = f;
-    eside_[n_eface_] = static_cast<int8_t>(dir * -in_.proj.facing[f]);
+    eside_[n_eface_] = static_cast<int8_t>(dir * -in_->proj.facing[f]);
     epos_[n_eface_++] = static_cast<int32_t>(insert_at(f));
   }
   // Faces of e on one side (a fold of the surface) keep their depth order along e.
@@ -156,11 +156,11 @@ bool Worker::start_list(int32_t e) {
 // in list_ (epos_); an entering face goes where the leaving face of the same edge was when
 // its neighbours confirm it, else by binary search.
 bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
-  const Arrangement& arr = in_.arr;
+  const Arrangement& arr = in_->arr;
   const int32_t other = xing.other;
   const auto [c, d] = arr.edges[other];
   xvi_ = xing.vertex, xc_pt_ = c, xd_pt_ = d, n_psign_ = 0;
-  if (!in_.conforming && swap(e, xing)) return true;
+  if (!in_->conforming && swap(e, xing)) return true;
   const int32_t a = arr.edges[e].first;
   const int sa = point_side(a, c, d);
   if (sa == 0) return false;
@@ -171,7 +171,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
   for (int32_t x = arr.edge_face_off[other]; x < arr.edge_face_off[other + 1]; ++x) {
     const int32_t g = arr.edge_faces[x];
     const int dir = arr.edge_face_dir[x];
-    if (sa * dir * -in_.proj.facing[g] > 0) {
+    if (sa * dir * -in_->proj.facing[g] > 0) {
       const auto it = std::find(list_.begin(), list_.end(), g);
       if (it == list_.end()) return false;
       const int32_t i = static_cast<int32_t>(it - list_.begin());
@@ -201,7 +201,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
 // the crossing's ray at the same point of (c, d), so the entering face takes the leaving
 // face's place unless another face h of list_ holds that point: h would lie at the same
 // depth there, and might be on the other side of the entering face. On a conforming
-// surface (no exterior face meets an exterior edge it does not have: in_.conforming, from
+// surface (no exterior face meets an exterior edge it does not have: in_->conforming, from
 // find_edge_contacts) no face does, so the place is exact with no depth comparison;
 // otherwise its neighbours in list_ confirm it (place()'s test). Where a face of e is its
 // neighbour, the rays meet e and e' at distinct points (orient3d(c, d, a, b) != 0), so that
@@ -210,7 +210,7 @@ bool Worker::cross(int32_t e, const EdgeCrossing& xing) {
 // the other's faces. Returns false, with list_ unchanged, wherever the general path
 // must decide instead (which face leaves unknown, a neighbour not confirming).
 inline bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
-  const Arrangement& arr = in_.arr;
+  const Arrangement& arr = in_->arr;
   const auto [g0, g1] = arr.swap_faces(xing.other);
   if (g0 < 0) return false;
   // Where g0 and g1 are in list_ (n: not there), both in one pass with no jump on the
@@ -226,13 +226,13 @@ inline bool Worker::swap(int32_t e, const EdgeCrossing& xing) {
   const bool first_leaves = i0 != n;
   const int32_t i = first_leaves ? i0 : i1;
   const int32_t enter = first_leaves ? g1 : g0;
-  if (!in_.conforming && ((i > 0 && depth_x(enter, list_[i - 1]) <= 0) || (i + 1 < n && depth_x(enter, list_[i + 1]) >= 0))) {
+  if (!in_->conforming && ((i > 0 && depth_x(enter, list_[i - 1]) <= 0) || (i + 1 < n && depth_x(enter, list_[i + 1]) >= 0))) {
     undecided_ = false;  // depth_x's undecided answers are the general path's to give
     return false;
   }
   bool beside = false;
   for (int k = 0; k < n_eface_; ++k) beside |= i == epos_[k] - 1 || i == epos_[k];
-  if (beside && !in_.conforming) {
+  if (beside && !in_->conforming) {
     const auto [a, b] = arr.edges[e];
     const auto [c, d] = arr.edges[xing.other];
     if (orient3d(pt(c), pt(d), pt(a), pt(b)) == 0) return false;
@@ -291,7 +291,7 @@ int32_t Worker::track(int32_t f, int m, int32_t j) {
 // crossing (cross()): so P is nearer (b's face in front) exactly when orient3d(c, d, a, b)
 // has the sign -sa. Zero (the edges meet in space): the faces touch on the ray, depth_x.
 int Worker::depth_edges(int32_t g, int m) {
-  const auto [a, b] = in_.arr.edges[swept_];
+  const auto [a, b] = in_->arr.edges[swept_];
   const int o = orient3d(pt(xc_pt_), pt(xd_pt_), pt(a), pt(b));
   if (o == 0) return depth_x(g, eface_[m]);
   ++stats_.depth_edge_orders;
@@ -318,7 +318,7 @@ int Worker::depth_x(int32_t g, int32_t h) {
   }
   if (psign_[k] != 0) {
     ++stats_.depth_plane_sides;
-    return psign_[k] == in_.proj.facing[h] ? -1 : 1;
+    return psign_[k] == in_->proj.facing[h] ? -1 : 1;
   }
   if (vi_ != xvi_) begin(xvi_);
   return depth(g, h);
@@ -339,15 +339,15 @@ int Worker::plane_side(int32_t h, int32_t p) {
 }
 
 int Worker::plane_side_raw(int32_t h, int32_t p) {
-  const FacePlane& f = in_.plane[h];
+  const FacePlane& f = in_->plane[h];
   const Vec3& q = pt(p);
   const Fd s = Fd{f.n[0][0], f.n[0][1]} * (Fd{q.x, 0} - Fd{f.f[0].x, 0}) +
                Fd{f.n[1][0], f.n[1][1]} * (Fd{q.y, 0} - Fd{f.f[0].y, 0}) +
                Fd{f.n[2][0], f.n[2][1]} * (Fd{q.z, 0} - Fd{f.f[0].z, 0});
   const int r = fd_sign(s);
   if (r != 2) return r;
-  const int32_t* hv = &in_.ext.vertex[4 * h];
-  if (hv[0] == p || hv[1] == p || hv[2] == p || (in_.ext.size[h] > 3 && hv[3] == p)) return 0;
+  const int32_t* hv = &in_->ext.vertex[4 * h];
+  if (hv[0] == p || hv[1] == p || hv[2] == p || (in_->ext.size[h] > 3 && hv[3] == p)) return 0;
   ++stats_.depth_rechecked;
   rechecked_ = true;
   return orient3d(f.f[0], f.f[1], f.f[2], q);
@@ -355,7 +355,7 @@ int Worker::plane_side_raw(int32_t h, int32_t p) {
 
 // Sign of D(x, p, q) for a projected point x, as orient_at gives it at a point vertex.
 int Worker::point_side(int32_t x, int32_t p, int32_t q) {
-  const Projection& pr = in_.proj;
+  const Projection& pr = in_->proj;
   if (filter_) {
     const int s = uv_side(pr.uv[x], pr.uv[p], pr.uv[q], pr.slack);
     if (s != 2) {

@@ -48,13 +48,13 @@ void index_point_faces(const QueryInput& in, ViewTables& view);
 
 class Worker {
  public:
-  Worker(const QueryInput& in, const ViewTables& view)
-      : signs_(in.signs), in_(in), view_(view),
-        face_stamp_(in.ext.face.size(), -1), key_stamp_(in.ext.face.size(), -1),
-        key_(in.ext.face.size()), touch_stamp_(in.ext.face.size(), -1), touch_(in.ext.face.size()),
-        ended_at_(view.point_face_off.empty() ? 0 : view.point_face_off.size() - 1, -1) {
-    signs_.side = signs_.dis_side = 0;
-  }
+  // A worker keeps its scratch from one view to the next (ray_queries.h's QueryScratch):
+  // start_view() binds it to a view and resets its state, keeping the storage, so a frame
+  // neither allocates nor faults in the per-face tables again.
+  Worker() = default;
+  void start_view(const QueryInput& in, const ViewTables& view);
+  // The view start_view() last bound (QueryScratch's count of views).
+  int64_t view_serial_ = -1;
   size_t bytes() const {
     return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
             key_stamp_.capacity() + touch_stamp_.capacity() + list_.capacity() + start_inside_.capacity() +
@@ -106,7 +106,7 @@ class Worker {
   bool before(int32_t x, int32_t y);
   void classify(const ArrVertex& v, int32_t f);
   void sort_inside();
-  const Vec3& pt(int32_t p) const { return in_.ext.points[p]; }
+  const Vec3& pt(int32_t p) const { return in_->ext.points[p]; }
   // Edge sweep (edge_sweep.cpp).
   bool sweep(int32_t e);
   bool start_list(int32_t e);
@@ -124,8 +124,8 @@ class Worker {
   int32_t track(int32_t f, int m, int32_t j);
   int depth_edges(int32_t g, int m);
 
-  const QueryInput& in_;
-  const ViewTables& view_;
+  const QueryInput* in_ = nullptr;
+  const ViewTables* view_ = nullptr;
   RayTerms terms_;                            // the current vertex's ray
   const PlaneKey& key(int32_t f);
   // Which of the current vertex's points face f holds (touch_bits), once per query.
@@ -193,7 +193,7 @@ class Worker {
 // a view.
 inline void Worker::emit(int32_t nearer, int32_t farther) {
   // Leaving the mesh through `nearer`, entering it again through `farther`.
-  const int32_t n = view_.facing_cell[nearer], f = view_.facing_cell[farther];
+  const int32_t n = view_->facing_cell[nearer], f = view_->facing_cell[farther];
   if (n < 0 && f > 0 && -n != f) {
     const std::pair<int32_t, int32_t> p{-n - 1, f - 1};
     // Neighbouring vertices repeat pairs: a direct-mapped table of recent ones keeps most

@@ -34,7 +34,7 @@ int Worker::orient_at(const ArrVertex& v, int32_t p, int32_t q) {
 // would give (begin()), so only signs near the bound pay for uv_side's own.
 int Worker::orient_raw(const ArrVertex& v, int32_t p, int32_t q) {
   if (filter_) {
-    const Projection& pr = in_.proj;
+    const Projection& pr = in_->proj;
     const Uv up = pr.uv[p], uq = pr.uv[q];
     const double ax = uq.first - up.first, ay = uq.second - up.second;
     const double o = ax * (yc_ - up.second) - ay * (xc_ - up.first);
@@ -49,7 +49,7 @@ int Worker::orient_raw(const ArrVertex& v, int32_t p, int32_t q) {
 
 int Worker::orient_filtered(const ArrVertex& v, int32_t p, int32_t q) {
   if (filter_) {
-    const Projection& pr = in_.proj;
+    const Projection& pr = in_->proj;
     const int s = uv_side(xc_, yc_, rx_, ry_, pr.uv[p], pr.uv[q], pr.slack);
     if (s != 2) {
       ++stats_.side_filtered;
@@ -71,7 +71,7 @@ int Worker::orient_filtered(const ArrVertex& v, int32_t p, int32_t q) {
 // holds over the whole overlap; otherwise (faces touching on that ray) the full test.
 int Worker::depth(int32_t x, int32_t y) {
   ++stats_.depth_calls;
-  const ExteriorFaces& e = in_.ext;
+  const ExteriorFaces& e = in_->ext;
   // Faces sharing the vertex (or the crossing edge) meet the ray at the same point.
   int at = 0;
   if ((touch(x) & touch(y)) == 0) {
@@ -79,7 +79,7 @@ int Worker::depth(int32_t x, int32_t y) {
     if (at == 2) {
       ++stats_.depth_rechecked;
       rechecked_ = true;
-      at = vertex_plane_order(ray_, in_.plane[x], in_.plane[y]);
+      at = vertex_plane_order(ray_, in_->plane[x], in_->plane[y]);
     }
   }
   if (at != 0) return at;
@@ -93,7 +93,7 @@ int Worker::depth(int32_t x, int32_t y) {
 const PlaneKey& Worker::key(int32_t f) {
   if (key_stamp_[f] != vi_) {
     key_stamp_[f] = vi_;
-    key_[f] = plane_key(signs_.g, terms_, in_.plane[f], view_.view_plane[f]);
+    key_[f] = plane_key(signs_.g, terms_, in_->plane[f], view_->view_plane[f]);
   }
   return key_[f];
 }
@@ -106,7 +106,7 @@ uint8_t touch_bits(const ArrVertex& v, const int32_t* p, int n) {
 int Worker::touch(int32_t f) {
   if (touch_stamp_[f] != vi_) {
     touch_stamp_[f] = vi_;
-    touch_[f] = touch_bits(*current_, &in_.ext.vertex[4 * f], in_.ext.size[f]);
+    touch_[f] = touch_bits(*current_, &in_->ext.vertex[4 * f], in_->ext.size[f]);
   }
   return touch_[f];
 }
@@ -147,6 +147,40 @@ void Worker::query_and_sweep(int32_t vi, const int32_t* e0, const int32_t* e1) {
   degenerate_seen_ = false;
 }
 
+void Worker::start_view(const QueryInput& in, const ViewTables& view) {
+  // The state a newly made worker has, in the storage this one already holds.
+  in_ = &in;
+  view_ = &view;
+  signs_ = in.signs;
+  degenerate_seen_ = false;
+  const size_t faces = in.ext.face.size();
+  face_stamp_.assign(faces, -1);
+  key_stamp_.assign(faces, -1);
+  key_.resize(faces);
+  touch_stamp_.assign(faces, -1);
+  touch_.assign(faces, 0);
+  ended_at_.assign(view.point_face_off.empty() ? 0 : view.point_face_off.size() - 1, -1);
+  for (std::vector<int32_t>* v : {&inside_, &rays_, &sector_, &wedge_ray_, &list_, &start_inside_}) v->clear();
+  ray_side_.clear(), before_.clear(), keys_.clear(), wedges_.clear(), xings_.clear(), start_wedges_.clear();
+  vi_ = -1, gather_ = 0;
+  current_ = nullptr;
+  ray_ = VertexRay{}, terms_ = RayTerms{};
+  xc_ = yc_ = rx_ = ry_ = 0;
+  quick_ = INFINITY;
+  filter_ = rechecked_ = undecided_ = beside_ = false;
+  std::fill(std::begin(eface_), std::end(eface_), 0), std::fill(std::begin(epos_), std::end(epos_), 0);
+  std::fill(std::begin(eside_), std::end(eside_), 0);
+  for (auto& row : ebefore_) std::fill(std::begin(row), std::end(row), false);
+  n_eface_ = 0;
+  xvi_ = xc_pt_ = xd_pt_ = swept_ = -1;
+  xsa_ = 0;
+  std::fill(plane_memo_key_.begin(), plane_memo_key_.end(), 0);
+  std::fill(plane_memo_sign_.begin(), plane_memo_sign_.end(), 0);
+  n_psign_ = 0;
+  std::fill(std::begin(psign_face_), std::end(psign_face_), 0), std::fill(std::begin(psign_), std::end(psign_), 0);
+  reset();  // pairs, recent pairs, counters, the last start, the end lists
+}
+
 void Worker::reset() {
   pairs_.clear();
   std::fill(seen_.begin(), seen_.end(), 0);
@@ -159,8 +193,8 @@ void Worker::reset() {
 
 // The query context of vertex vi: its ray, depth terms and filter position.
 void Worker::begin(int32_t vi) {
-  const ArrVertex& v = in_.arr.vertices[vi];
-  const Projection& proj = in_.proj;
+  const ArrVertex& v = in_->arr.vertices[vi];
+  const Projection& proj = in_->proj;
   current_ = &v;
   vi_ = vi;
   ray_ = v.b < 0 ? VertexRay::at_point(signs_.g, pt(v.a))
@@ -183,9 +217,9 @@ void Worker::begin(int32_t vi) {
   // is then at most D (ex + ey + 2 ea) + ea (ex + ey) + 2e-15 D^2, and its test 1.001 times
   // that, taken with 2% to spare for the rounding of both.
   quick_ = INFINITY;  // no sign beyond it
-  if (filter_ && in_.quick_sides) {
+  if (filter_ && in_->quick_sides) {
     const double s = proj.slack, ea = 2 * s, ex = rx_ + s, ey = ry_ + s;
-    const double d = 2 * view_.widest_face + 4 * std::max(rx_, ry_);
+    const double d = 2 * view_->widest_face + 4 * std::max(rx_, ry_);
     quick_ = 1.02 * (d * (ex + ey + 2 * ea) + ea * (ex + ey) + 2e-15 * d * d);
     // NaN, or so small that the bound's terms may have underflowed: none.
     if (!(quick_ > 1e-290)) quick_ = INFINITY;
@@ -194,7 +228,7 @@ void Worker::begin(int32_t vi) {
 
 // The faces whose closed projection holds v: inside_ (unsorted) and wedges_.
 void Worker::gather(const ArrVertex& v) {
-  const Projection& proj = in_.proj;
+  const Projection& proj = in_->proj;
   inside_.clear();
   wedges_.clear();
   ++gather_;
@@ -308,9 +342,9 @@ bool Worker::before(int32_t x, int32_t y) {
 }
 
 void Worker::classify(const ArrVertex& v, int32_t f) {
-  const int n = in_.ext.size[f];
-  const int32_t* p = &in_.ext.vertex[4 * f];
-  const int inner = -in_.proj.facing[f];  // edge_side of the projection's inside, every edge
+  const int n = in_->ext.size[f];
+  const int32_t* p = &in_->ext.vertex[4 * f];
+  const int inner = -in_->proj.facing[f];  // edge_side of the projection's inside, every edge
   unsigned zeros = 0;
   for (int k = 0; k < n; ++k) {
     const int s = orient_at(v, p[k], p[k + 1 < n ? k + 1 : 0]) * inner;
@@ -323,8 +357,8 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
   if (zeros == 0) {
     inside_.push_back(f);
     // Its plane key is computed next (sort_inside): asked for now.
-    __builtin_prefetch(&in_.plane[f].n);
-    __builtin_prefetch(&view_.view_plane[f]);
+    __builtin_prefetch(&in_->plane[f].n);
+    __builtin_prefetch(&view_->view_plane[f]);
     return;
   }
   // A point on the boundary of a face it is not a vertex of: the edge sweep's premise fails.
@@ -389,14 +423,42 @@ void QueryStats::add(const QueryStats& x) {
   scratch_bytes += x.scratch_bytes;
 }
 
-std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, QueryStats& stats) {
+struct QueryScratch::Impl {
+  detail::ViewTables view;
+  tbb::enumerable_thread_specific<detail::Worker> workers;
+  int64_t serial = 0;  // views run so far: a worker bound to another is started afresh
+  std::vector<int32_t> edge_off, edge_ids, fill;  // the sweeps' edges by their first point
+  mpvo::PairSortScratch sort;
+};
+
+QueryScratch::QueryScratch() : impl(std::make_unique<Impl>()) {}
+QueryScratch::~QueryScratch() = default;
+QueryScratch::QueryScratch(QueryScratch&&) noexcept = default;
+QueryScratch& QueryScratch::operator=(QueryScratch&&) noexcept = default;
+
+size_t QueryScratch::bytes() const {
+  const Impl& s = *impl;
+  size_t n = (s.view.point_vertex.capacity() + s.view.facing_cell.capacity() + s.view.point_face_off.capacity() +
+              s.view.point_faces.capacity() + s.edge_off.capacity() + s.edge_ids.capacity() + s.fill.capacity()) *
+                 sizeof(int32_t) +
+             s.view.view_plane.capacity() * sizeof(ViewPlane) + s.sort.bytes();
+  for (const detail::Worker& w : s.workers) n += w.bytes();
+  return n;
+}
+
+void run_ray_queries(const QueryInput& in, QueryStats& stats, QueryScratch& scratch,
+                     std::vector<std::pair<int32_t, int32_t>>& pairs) {
   using detail::Worker;
   // Queries are independent: threads take runs of vertices (or edges); the relation set,
   // sorted and deduplicated, does not depend on the split.
   const Arrangement& arr = in.arr;
-  detail::ViewTables view;
+  QueryScratch::Impl& s = *scratch.impl;
+  const int64_t serial = ++s.serial;
+  detail::ViewTables& view = s.view;
   view.view_plane.resize(in.plane.size());
   view.facing_cell.assign(in.ext.face.size(), 0);
+  view.widest_face = 0;
+  view.point_face_off.clear(), view.point_faces.clear();
   for (int32_t f : in.proj.kept) {
     view.view_plane[f] = ViewPlane::of(in.signs.g, in.plane[f]);
     view.facing_cell[f] = in.proj.facing[f] * (in.ext.cell[f] + 1);
@@ -410,10 +472,15 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   // The kept faces around each point, for the queries that follow a sweep ending there.
   const bool sweep = in.sweep && in.signs.mode == Mode::Exact;
   if (sweep && in.sweep_ends && in.conforming && arr.lines_marked) detail::index_point_faces(in, view);
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(in, view); });
+  // This thread's worker, bound to this view.
+  auto local = [&]() -> Worker& {
+    Worker& w = s.workers.local();
+    if (w.view_serial_ != serial) w.start_view(in, view), w.view_serial_ = serial;
+    return w;
+  };
   auto queries = [&](size_t v0, size_t v1) {
     tbb::parallel_for(tbb::blocked_range<size_t>(v0, v1, 512), [&](const tbb::blocked_range<size_t>& r) {
-      Worker& w = workers.local();
+      Worker& w = local();
       for (size_t v = r.begin(); v < r.end(); ++v) w.query(static_cast<int32_t>(v));
     });
   };
@@ -422,38 +489,43 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
     // Each point's query, then the sweeps of the edges starting there (CSR by point vertex;
     // an edge whose first point has none is swept last, and falls back to full queries).
     const size_t np = arr.projected_vertices;
-    std::vector<int32_t> edge_off(np + 2, 0), edge_ids(arr.edges.size());
+    std::vector<int32_t> &edge_off = s.edge_off, &edge_ids = s.edge_ids, &fill = s.fill;
+    edge_off.assign(np + 2, 0);
+    edge_ids.resize(arr.edges.size());
     auto slot = [&](size_t e) {
       const int32_t va = point_vertex[arr.edges[e].first];
       return va < 0 ? np : static_cast<size_t>(va);
     };
     for (size_t e = 0; e < arr.edges.size(); ++e) ++edge_off[slot(e) + 1];
     for (size_t v = 0; v <= np; ++v) edge_off[v + 1] += edge_off[v];
-    std::vector<int32_t> fill(edge_off.begin(), edge_off.end() - 1);
+    fill.assign(edge_off.begin(), edge_off.end() - 1);
     for (size_t e = 0; e < arr.edges.size(); ++e) edge_ids[fill[slot(e)]++] = static_cast<int32_t>(e);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, np, 256), [&](const tbb::blocked_range<size_t>& r) {
-      Worker& w = workers.local();
+      Worker& w = local();
       for (size_t v = r.begin(); v < r.end(); ++v)
         w.query_and_sweep(static_cast<int32_t>(v), &edge_ids[edge_off[v]], &edge_ids[edge_off[v + 1]]);
     });
-    for (int32_t x = edge_off[np]; x < edge_off[np + 1]; ++x) workers.local().sweep_edge(edge_ids[x]);
+    for (int32_t x = edge_off[np]; x < edge_off[np + 1]; ++x) local().sweep_edge(edge_ids[x]);
     // A point on another face's projected boundary, which the sweeps cannot see: the
     // view is answered by full queries instead.
-    for (const Worker& w : workers) degenerate |= w.degenerate_seen_;
+    for (const Worker& w : s.workers) degenerate |= w.view_serial_ == serial && w.degenerate_seen_;
     if (degenerate)
-      for (Worker& w : workers) w.reset();
+      for (Worker& w : s.workers)
+        if (w.view_serial_ == serial) w.reset();
   }
   if (!sweep || degenerate) {
     if (arr.unswept_sheet != 0) {  // crossings left out: the caller builds again
       stats = QueryStats{};
       stats.needs_every_crossing = true;
-      return {};
+      pairs.clear();
+      return;
     }
     queries(0, arr.vertices.size());
   }
-  std::vector<std::pair<int32_t, int32_t>> pairs;
+  pairs.clear();
   stats = QueryStats{};
-  for (Worker& w : workers) {
+  for (Worker& w : s.workers) {
+    if (w.view_serial_ != serial) continue;  // no work for this view
     pairs.insert(pairs.end(), w.pairs_.begin(), w.pairs_.end());
     w.stats_.side = w.signs_.side;
     w.stats_.dis_side = w.signs_.dis_side;
@@ -462,20 +534,26 @@ std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, Q
   }
   int32_t last = -1;  // the largest cell id
   for (const auto& [front, behind] : pairs) last = std::max({last, front, behind});
-  mpvo::sort_unique_pairs(pairs, static_cast<size_t>(last + 1));
-  return pairs;
+  mpvo::sort_unique_pairs(pairs, static_cast<size_t>(last + 1), s.sort);
+}
+
+void view_relations(QueryInput in, Arrangement& arr, Signs& signs, QueryStats& stats, int64_t& candidates,
+                    QueryScratch& scratch, std::vector<std::pair<int32_t, int32_t>>& pairs) {
+  if (&in.arr != &arr) throw std::logic_error("xmpvo::view_relations: QueryInput of another arrangement");
+  run_ray_queries(in, stats, scratch, pairs);
+  if (!stats.needs_every_crossing) return;
+  arr.unswept_sheet = 0;
+  candidates = arr.build(in.ext, in.proj, signs);
+  in.sweep = false;
+  run_ray_queries(in, stats, scratch, pairs);
+  stats.arrangement_rebuilt = 1;
 }
 
 std::vector<std::pair<int32_t, int32_t>> view_relations(QueryInput in, Arrangement& arr, Signs& signs,
                                                         QueryStats& stats, int64_t& candidates) {
-  if (&in.arr != &arr) throw std::logic_error("xmpvo::view_relations: QueryInput of another arrangement");
-  std::vector<std::pair<int32_t, int32_t>> pairs = run_ray_queries(in, stats);
-  if (!stats.needs_every_crossing) return pairs;
-  arr.unswept_sheet = 0;
-  candidates = arr.build(in.ext, in.proj, signs);
-  in.sweep = false;
-  pairs = run_ray_queries(in, stats);
-  stats.arrangement_rebuilt = 1;
+  QueryScratch scratch;
+  std::vector<std::pair<int32_t, int32_t>> pairs;
+  view_relations(in, arr, signs, stats, candidates, scratch, pairs);
   return pairs;
 }
 

@@ -10,6 +10,7 @@
 // split (some counters do: a thread reuses its last sweep start and its sweeps' ends).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -69,13 +70,33 @@ struct QueryStats {
   void add(const QueryStats& o);
 };
 
-// The relation pairs (front cell, back cell), sorted and without duplicates.
-std::vector<std::pair<int32_t, int32_t>> run_ray_queries(const QueryInput& in, QueryStats& stats);
+// What the queries keep from one view to the next: the workers with their per-face tables
+// and lists, the view's tables and the sweeps' edge index. Made from scratch every view,
+// they were allocated and first touched again every frame (on the 200k helix interleaved
+// with SXMPVO, ray queries of 103-124 ms in some frames against 86-92 in the others: the
+// heap's memory handed back and faulted in again). One per orderer; one call at a time.
+class QueryScratch {
+ public:
+  QueryScratch();
+  ~QueryScratch();
+  QueryScratch(QueryScratch&&) noexcept;
+  QueryScratch& operator=(QueryScratch&&) noexcept;
+  size_t bytes() const;
+  struct Impl;
+  std::unique_ptr<Impl> impl;
+};
+
+// The relation pairs (front cell, back cell), sorted and without duplicates, into `pairs`.
+void run_ray_queries(const QueryInput& in, QueryStats& stats, QueryScratch& scratch,
+                     std::vector<std::pair<int32_t, int32_t>>& pairs);
 
 // run_ray_queries, and where the view needs full queries at every vertex but the
 // arrangement left out crossings, the arrangement built again with none left out and the
 // full queries (so a caller's ray-query time includes the second build). `candidates`
 // takes the second build's count of tested edge pairs.
+void view_relations(QueryInput in, Arrangement& arr, Signs& signs, QueryStats& stats, int64_t& candidates,
+                    QueryScratch& scratch, std::vector<std::pair<int32_t, int32_t>>& pairs);
+// The same with a scratch of its own (tests).
 std::vector<std::pair<int32_t, int32_t>> view_relations(QueryInput in, Arrangement& arr, Signs& signs,
                                                         QueryStats& stats, int64_t& candidates);
 

@@ -17,15 +17,15 @@ void Worker::run_query_after_sweep(int32_t vi) {
   ++stats_.sweep_end_queries;
   begin(vi);
   const ArrVertex& v = *current_;
-  const int32_t* around = &view_.point_faces[static_cast<size_t>(view_.point_face_off[vi])];
-  const int32_t n_around = view_.point_face_off[vi + 1] - view_.point_face_off[vi];
+  const int32_t* around = &view_->point_faces[static_cast<size_t>(view_->point_face_off[vi])];
+  const int32_t n_around = view_->point_face_off[vi + 1] - view_->point_face_off[vi];
   const int32_t* ended = &ended_[static_cast<size_t>(ended_at_[vi])];
   inside_.clear();
   for (const int32_t* f = ended + 1; f < ended + 1 + ended[0]; ++f)
     if (std::find(around, around + n_around, *f) == around + n_around) inside_.push_back(*f);
   wedges_.clear();
   for (int32_t x = 0; x < n_around; ++x)
-    if (in_.proj.face_box[around[x]].overlaps(v.box)) classify(v, around[x]);
+    if (in_->proj.face_box[around[x]].overlaps(v.box)) classify(v, around[x]);
   undecided_ = false;
   if (!wedges_.empty()) emit_at_point(v);
   stats_.queries_rechecked += rechecked_;
@@ -35,8 +35,8 @@ void Worker::run_query_after_sweep(int32_t vi) {
 // query (run_query_after_sweep), kept once per point, unless the arrangement marked b.
 void Worker::keep_end_list(int32_t e) {
   if (ended_at_.empty()) return;
-  const int32_t b = in_.arr.edges[e].second, vb = view_.point_vertex[b];
-  if (vb < 0 || ended_at_[vb] >= 0 || in_.arr.point_on_line[b]) return;
+  const int32_t b = in_->arr.edges[e].second, vb = view_->point_vertex[b];
+  if (vb < 0 || ended_at_[vb] >= 0 || in_->arr.point_on_line[b]) return;
   const size_t at = ended_.size();
   ended_at_[vb] = static_cast<int32_t>(at);
   ended_.push_back(static_cast<int32_t>(list_.size()));

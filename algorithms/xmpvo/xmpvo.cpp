@@ -52,7 +52,7 @@ class XmpvoOrderer final : public Orderer {
   size_t exterior_bytes() const {
     return plane_.capacity() * sizeof(xmpvo::FacePlane) + proj_.bytes();
   }
-  size_t arrangement_bytes() const { return arr_.bytes() + stats_.scratch_bytes; }
+  size_t arrangement_bytes() const { return arr_.bytes() + queries_.bytes(); }
   void add_counters(Ordering& out, int64_t candidates) const;
 
   Mode mode_;
@@ -66,6 +66,7 @@ class XmpvoOrderer final : public Orderer {
   xmpvo::Projection proj_;
   xmpvo::Arrangement arr_;
   xmpvo::QueryStats stats_;
+  xmpvo::QueryScratch queries_;  // the ray queries' storage, kept from view to view
   xmpvo::EdgeContacts contacts_;  // view-independent, from prepare
   std::vector<std::pair<int32_t, int32_t>> pairs_;
   mpvo::ExtraRelations extra_;
@@ -97,7 +98,7 @@ Ordering XmpvoOrderer::order(const Camera& view, PhaseClock& clock) {
     auto p = clock.phase("ray queries");
     xmpvo::QueryInput in{signs_, *ext_, plane_, proj_, arr_};
     in.conforming = conforming;
-    pairs_ = xmpvo::view_relations(in, arr_, signs_, stats_, candidates);
+    xmpvo::view_relations(in, arr_, signs_, stats_, candidates, queries_, pairs_);
     signs_.side += stats_.side;
     signs_.dis_side += stats_.dis_side;
     extra_.build_from_pairs(core_.num_cells(), pairs_);
