@@ -269,13 +269,17 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
           failed(t.job->key, group_of(label, job_unit(*t.job)), e);
           tracker.finished(job_cost(suite, *t.job, primitives));
         };
+        // As measure_frame: a turn's output, warm-up frames' too, is kept until its next frame
+        // and freed first, so the turns' outputs alive at once are the same from the first
+        // warm-up round on and no timed frame faults in a new one.
         const auto frame = [&](Turn& t, bool timed) {
           if (!t.p) return;
           const auto t0 = std::chrono::steady_clock::now();
           try {
+            t.frames.ordering = Ordering{};
             PhaseClock clock;
-            Ordering o = t.p->orderer->order(t.job->camera, clock);
-            if (timed) t.frames.ordering = std::move(o), t.frames.repeats.push_back(clock.phases());
+            t.frames.ordering = t.p->orderer->order(t.job->camera, clock);
+            if (timed) t.frames.repeats.push_back(clock.phases());
           } catch (const std::exception& e) {
             fail(t, e);
           }
