@@ -93,7 +93,7 @@ FrameMeasurement measure_frame(PreparedOrderer& p, const Camera& view, int warmu
     // then frees it: each frame finds the memory the frame before it left. (Kept while the
     // next frame ran, the second timed frame was the first with two outputs alive, and its
     // output, a fresh mapping, was faulted in inside the timed phases: SXMPVO's DFS on the
-    // 1M helix 24-26 ms in that frame against 16.5-17 in the others.)
+    // 1M helix 23.6-26.3 ms in that frame against 16.3-18.4 in the others.)
     m.ordering = Ordering{};
     PhaseClock c;
     m.ordering = p.orderer->order(view, c);
