@@ -1,6 +1,8 @@
 #include "harness/raster/raster_rule.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <string>
 
 #include "harness/scene/input_error.h"
 
@@ -10,6 +12,14 @@ RasterRule parse_raster_rule(const std::string& name, const std::string& who) {
   if (name == "exact") return RasterRule::exact;
   if (name == "gl") return RasterRule::gl;
   throw InputError(who, "'" + name + "'", "unknown sampling rule (exact or gl)");
+}
+
+void throw_beyond_gl_range(double window) {
+  char v[32];
+  std::snprintf(v, sizeof v, "%.6g", window);
+  throw InputError("--raster gl", std::string("window coordinate ") + v,
+                   "a vertex projects beyond the 2^22 pixels the gl rule describes (GL clips such a triangle, "
+                   "which llvmpipe's rule here does not model: an eye inside or next to the model); use --raster exact");
 }
 
 GlDepthRange gl_depth_range(const Camera& view, const Vec3& centre, double radius) {

@@ -49,8 +49,17 @@ constexpr int kGlSubpixelBits = 8;             // llvmpipe's FIXED_ORDER
 constexpr int64_t kGlSubpixels = 1 << kGlSubpixelBits;
 constexpr double kGlDepthMax = 16777215.0;     // 2^24 - 1: a 24-bit depth buffer
 
-// Window coordinate -> llvmpipe's fixed-point coordinate.
+// The window coordinates the rule describes: |x - 0.5| below 2^22 pixels, where the edge
+// functions' products of fixed-point coordinates fit in 64 bits and llvmpipe sets a
+// triangle up without clipping it first. A vertex beyond (next to the eye plane: an eye
+// inside or beside the model) belongs to a triangle GL clips, which the rule does not
+// describe; before this bound its snapped coordinate overflowed (UBSan, eye-inside).
+constexpr double kGlMaxWindow = 4194304.0;
+[[noreturn]] void throw_beyond_gl_range(double window);
+
+// Window coordinate -> llvmpipe's fixed-point coordinate; InputError beyond kGlMaxWindow.
 inline int64_t gl_snap(double window) {
+  if (!(std::fabs(window - 0.5) < kGlMaxWindow)) throw_beyond_gl_range(window);
   return static_cast<int64_t>(std::nearbyint((window - 0.5) * double(kGlSubpixels)));
 }
 // The window coordinate that snaps to X exactly, and which llvmpipe's float arithmetic

@@ -309,3 +309,16 @@ TEST(Splat, FootprintIsADisc) {
   ASSERT_TRUE(make_splat(f, {0, 0, 0}, {1, 1, 1}, 0, sp));
   EXPECT_NEAR(sp.radius, 8 * std::sqrt(3.0) / 2, 1e-12);
 }
+
+// The gl rule's snap refuses, with one clear error, window coordinates beyond the range it
+// describes (a vertex next to the eye plane used to overflow the edge functions: UBSan on
+// eye-inside), and takes every coordinate within it.
+TEST(GlSnap, RefusesCoordinatesBeyondItsRange) {
+  EXPECT_EQ(gl_snap(0.5), 0);
+  EXPECT_EQ(gl_snap(0.5 + kGlMaxWindow - 1), int64_t(kGlMaxWindow - 1) * kGlSubpixels);
+  EXPECT_EQ(gl_snap(0.5 - kGlMaxWindow + 1), -int64_t(kGlMaxWindow - 1) * kGlSubpixels);
+  EXPECT_THROW(gl_snap(0.5 + kGlMaxWindow), InputError);
+  EXPECT_THROW(gl_snap(-2.8e17), InputError);
+  EXPECT_THROW(gl_snap(std::nan("")), InputError);
+  EXPECT_THROW(gl_snap(HUGE_VAL), InputError);
+}
