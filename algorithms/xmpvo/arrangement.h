@@ -50,7 +50,7 @@ struct Arrangement {
   // Per exterior point: 1 where an exact re-check of a pair that does not cross properly
   // found the point on the other edge's projected line (it may lie on that edge: a point
   // on a face's boundary it is not a vertex of). Such a point's query gathers its faces in
-  // full (ray_queries.cpp). Marked only when `lines_marked` (exact signs behind the double
+  // full (vertex_query.cpp). Marked only when `lines_marked` (exact signs behind the double
   // filter); otherwise no point's query may rely on it.
   std::vector<uint8_t> point_on_line;
   bool lines_marked = false;

@@ -1,8 +1,8 @@
-// XMPVO's ray-query worker (internal to ray_queries.cpp and edge_sweep.cpp): one thread's
-// share of the queries, with its own scratch, counters and relation pairs; the per-view
-// input is read only. A full query (ray_queries.cpp) finds and sorts the faces covering
-// one vertex; the edge sweep (edge_sweep.cpp) carries the sorted covering faces along one
-// projected edge from crossing to crossing.
+// XMPVO's ray-query worker (internal to ray_queries.cpp, vertex_query.cpp and
+// edge_sweep.cpp): one thread's share of the queries, with its own scratch, counters and
+// relation pairs; the per-view input is read only. A full query (vertex_query.cpp) finds
+// and sorts the faces covering one vertex; the edge sweep (edge_sweep.cpp) carries the
+// sorted covering faces along one projected edge from crossing to crossing.
 #pragma once
 #include <atomic>
 #include <cmath>

@@ -32,7 +32,7 @@ struct QueryInput {
   // The exterior surface meets itself only at shared vertices and edges (find_edge_contacts
   // found no touched edge): the sweep's swaps need no depth comparison (edge_sweep.cpp).
   bool conforming = false;
-  // Projected side tests first against one bound for the whole query (ray_queries.cpp,
+  // Projected side tests first against one bound for the whole query (vertex_query.cpp,
   // Worker::orient_raw); off: uv_side's own bound at every test (the same signs, for tests).
   bool quick_sides = true;
   // A point query after a sweep that ended at the point takes the point's strictly covering
