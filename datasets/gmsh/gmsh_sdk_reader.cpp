@@ -48,6 +48,13 @@ constexpr VolumeType kVolumeTypes[] = {{4, CellType::Tetra, 4, {0, 1, 2, 3}},
                                        {6, CellType::Wedge, 6, {0, 2, 1, 3, 5, 4}},
                                        {7, CellType::Pyramid, 5, {0, 1, 2, 3, 4}}};
 
+// The table's entry for a gmsh element code, or null.
+const VolumeType* volume_type(int type) {
+  for (const VolumeType& v : kVolumeTypes)
+    if (v.gmsh == type) return &v;
+  return nullptr;
+}
+
 std::string element_name(int type, int* dim) {
   std::string name;
   int order = 0, nodes = 0, primary = 0;
@@ -63,8 +70,7 @@ std::string element_name(int type, int* dim) {
 // what it made with new[] and leaks more (AddressSanitizer: alloc-dealloc-mismatch and
 // 1296 bytes leaked, running datasets.formats under scripts/test --sanitize's flags).
 GmshElementType element_type(int type) {
-  for (const VolumeType& v : kVolumeTypes)
-    if (v.gmsh == type) return {3, v.nodes};
+  if (const VolumeType* v = volume_type(type)) return {3, v->nodes};
   std::string name;
   int dim = 0, order = 0, nodes = 0, primary = 0;
   std::vector<double> local;
@@ -117,9 +123,7 @@ CellMesh read_locked(const std::string& path, std::string* note) {
   size_t total = 0;
   for (size_t t = 0; t < types.size(); ++t) {
     total += elem_tags[t].size();
-    const VolumeType* vt = nullptr;
-    for (const VolumeType& v : kVolumeTypes)
-      if (v.gmsh == types[t]) vt = &v;
+    const VolumeType* vt = volume_type(types[t]);
     if (!vt) {
       int dim = 0;
       const std::string name = element_name(types[t], &dim);
