@@ -19,15 +19,17 @@ def our_machine(records):
 
 
 def timing(records):
-    """'median of R frames after W warm-up, T threads (N records)' for each distinct setting."""
+    """'median of R frames after W warm-up, T threads (N records)' for each distinct setting, and
+    whether the orderers took turns frame by frame (suite "interleave")."""
     combos = {}
     for r in records:
-        key = (r.get("repeats"), r.get("warmup"), r.get("threads"), "probe" if r.get("probe") else "orderer")
+        key = (r.get("repeats"), r.get("warmup"), r.get("threads"), "probe" if r.get("probe") else "orderer",
+               bool(r.get("interleaved")))
         combos[key] = combos.get(key, 0) + 1
     parts = []
-    for (reps, warm, threads, kind), n in sorted(combos.items(), key=lambda kv: str(kv[0])):
+    for (reps, warm, threads, kind, turns), n in sorted(combos.items(), key=lambda kv: str(kv[0])):
         parts.append(f"{kind} records ({n}): median of {reps} timed run(s) after {warm} warm-up run(s), "
-                     f"{threads} thread(s)")
+                     f"{threads} thread(s)" + (", the dataset's orderers taking turns frame by frame" if turns else ""))
     return "; ".join(parts)
 
 
