@@ -30,7 +30,8 @@ struct PixEntry {
 // lie far apart in a pool cost one cache miss per entry (87% of the pairing time).
 // An entry's arrival is its rank, not the moment it is recorded: faces may be scanned in
 // any order (storage order, where their data lie close together) and finish() replays the
-// arrivals of each list by rank.
+// arrivals of each list by rank (gather() stages the lists in a second array, which
+// order() reads).
 class ABuffer {
  public:
   // Empties every list (keeps the storage) for `pixels` pixels.
@@ -66,6 +67,10 @@ class ABuffer {
   }
   void gather();                    // every entry into its pixel's list, by rank (once after reset())
   void order(int64_t p0, int64_t p1);  // the lists of pixels [p0, p1) after gather()
+  // order() sorts lists of up to 16 entries by rank in AVX2 lanes when the CPU has them
+  // (the same lists and counts); false keeps the scalar insertion sort (tests compare them).
+  void set_lanes(bool on) { lanes_ = on; }
+  int64_t lane_lists() const { return lane_lists_; }  // lists order() sorted in lanes since reset()
   int64_t pixels() const { return pixels_; }
   // First (farthest) entry of a pixel's list, or -1; entries link to the next nearer one.
   int32_t head(int64_t pixel) const {
@@ -81,7 +86,7 @@ class ABuffer {
   size_t bytes() const {
     return offsets_.capacity() * sizeof(int32_t) +
            raw_.capacity() * sizeof(Raw) +
-           list_.capacity() * sizeof(PixEntry);
+           (staged_.capacity() + list_.capacity()) * sizeof(PixEntry);
   }
 
  private:
@@ -95,9 +100,13 @@ class ABuffer {
   int64_t entries_ = 0;
   std::vector<Raw> raw_;           // insert()ed
   std::vector<const std::vector<Raw>*> batches_;  // append()ed, read in place
+  void order_scalar(int32_t b, int32_t e);  // one list: staged_[b, e) into list_[b, e)
   std::vector<int32_t> offsets_;   // pixels + 1
-  std::vector<PixEntry> list_;     // per pixel, decreasing t
-  int64_t head_insertions_ = 0, walk_steps_ = 0;
+  std::vector<PixEntry> staged_;   // per pixel, as gathered (rank in `next`)
+  std::vector<PixEntry> list_;     // per pixel, decreasing t (and room for a 16-entry write past the last)
+  int64_t head_insertions_ = 0, walk_steps_ = 0, lane_lists_ = 0;
+  bool lanes_ = true;
+  bool ranks_fit_ = true;  // every rank in [0, 2^27): the lanes' keys are rank << 4 | place
 };
 
 class PnLists {

@@ -1,10 +1,11 @@
-// SXMPVO's tiny-face entry kernels side by side in one run (issue 16): the scalar loop and
+// SXMPVO's tiny-face entry kernels, and the A-buffer's list ordering, side by side in one run (issue 16): the scalar loop and
 // AVX2's four lanes along a row, each writing the entries of every tiny triangle of the 1M-cell helix's exterior at one view of
 // 14 at 512x512 (the faces phase III gives the tiny path), one thread. A kernel this CPU
 // cannot run is skipped. range(0): the kernel (see kKernels), range(1): the view. Counters:
 // the faces, their entries, and the time per face.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "algorithms/sxmpvo/tiny_faces.h"
@@ -88,5 +89,50 @@ void BM_TinyEntries(benchmark::State& state) {
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_TinyEntries)->ArgsProduct({{0, 1}, {0, 4}})->Unit(benchmark::kMillisecond);
+
+// ABuffer::order over every PIX list of the tiny faces' entries (ranks: the faces by
+// centroid distance, as phase II gives them), with the lanes (lists up to 16 entries
+// sorted by rank in AVX2) or the scalar insertion sort alone. range(0): 0 scalar, 1 lanes;
+// range(1): the view. gather() runs once; order() reads its lists and writes new ones.
+void BM_ABufferOrder(benchmark::State& state) {
+  const bool lanes = state.range(0) == 1;
+  state.SetLabel(lanes ? "lanes" : "scalar");
+  const vob::sxmpvo::TinyEntriesFn fn = vob::sxmpvo::tiny_entries();
+  const vob::Scene& scene = helix_1m();
+  const vob::Camera view =
+      vob::fibonacci_view(scene.bounds(), 14, static_cast<int>(state.range(1)), vob::ViewOptions{512, 512});
+  const vob::SampleFrame frame(view, 1);
+  const std::vector<TinyFace> faces = tiny_faces(frame);
+  std::vector<int32_t> by_distance(faces.size()), rank(faces.size());
+  std::vector<double> distance(faces.size());
+  for (size_t i = 0; i < faces.size(); ++i) {
+    distance[i] = vob::length((faces[i].v[0] + faces[i].v[1] + faces[i].v[2]) * (1.0 / 3) - view.eye);
+    by_distance[i] = static_cast<int32_t>(i);
+  }
+  std::stable_sort(by_distance.begin(), by_distance.end(),
+                   [&](int32_t a, int32_t b) { return distance[a] < distance[b]; });
+  for (size_t k = 0; k < faces.size(); ++k) rank[by_distance[k]] = static_cast<int32_t>(k);
+  std::vector<vob::sxmpvo::ABuffer::Raw> entries(faces.size() * 4 + vob::sxmpvo::kTinyEntrySlots);
+  size_t used = 0;
+  for (size_t i = 0; i < faces.size(); ++i) {
+    if (entries.size() < used + vob::sxmpvo::kTinyEntrySlots) entries.resize(2 * entries.size());
+    used += fn(frame, faces[i].v, faces[i].sign, faces[i].box, static_cast<int32_t>(2 * i), rank[i],
+               entries.data() + used);
+  }
+  entries.resize(used);
+  vob::sxmpvo::ABuffer abuf;
+  abuf.set_lanes(lanes);
+  abuf.reset(frame.num_samples());
+  abuf.append(entries);
+  abuf.gather();
+  for (auto _ : state) {
+    abuf.order(0, abuf.pixels());
+    benchmark::DoNotOptimize(abuf.begin(0));
+  }
+  state.counters["entries"] = static_cast<double>(used);
+  state.counters["per_entry"] = benchmark::Counter(  // seconds an entry
+      static_cast<double>(used), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_ABufferOrder)->ArgsProduct({{0, 1}, {0, 4}})->Unit(benchmark::kMillisecond);
 
 }  // namespace

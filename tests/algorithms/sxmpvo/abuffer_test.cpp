@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <random>
 
@@ -162,6 +163,61 @@ TEST(ABuffer, ShortListsWithTiesMatchLinkedListInsertion) {
     for (int64_t i = 0, k = 1 + p % 16; i < k; ++i)
       all.push_back({values[rng() % 7], int32_t(rng() % 2 ? front(int32_t(i)) : back(int32_t(i))), int32_t(p), 0});
   EXPECT_GT(expect_naive_lists(all, pixels, rng), 10000);
+}
+
+// The lanes (lists of 2 to 16 entries sorted by rank in AVX2) against the scalar insertion
+// sort: lists of 1 to 20 entries whose depths mostly grow with the rank (every arrival a
+// head insertion, the lanes' case), with ties among few values and signed zeros, some with
+// one pair out of order, some with a NaN or an infinity; ordered in ranges taken last first,
+// so that a list written 8 or 16 entries wide must not spill over a range already ordered.
+TEST(ABuffer, LanesGiveTheScalarListsAndCounts) {
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "no AVX2 on this CPU";
+  std::mt19937 rng(29);
+  const int64_t pixels = 4000;
+  std::vector<ABuffer::Raw> all;
+  int32_t next_rank = 0;
+  for (int64_t p = 0; p < pixels; ++p) {
+    const int k = 1 + int(p % 20);
+    std::vector<double> t(k);
+    double d = double(rng() % 4);
+    for (int i = 0; i < k; ++i) {
+      d += double(rng() % 3) * 0.5;  // steps of 0, 0.5 or 1: many ties
+      t[i] = d;
+    }
+    if (p % 5 == 1 && k > 1) std::swap(t[rng() % k], t[rng() % k]);
+    if (p % 13 == 2) t[rng() % k] = std::nan("");
+    if (p % 17 == 3) t[k - 1] = HUGE_VAL;
+    if (p % 11 == 4) t[0] = -0.0;
+    if (p % 11 == 5 && k > 1) t[0] = 0.0, t[1] = -0.0;
+    for (int i = 0; i < k; ++i)  // rank order = i order; ranks spread, not consecutive
+      all.push_back({t[i], int32_t(rng() % 2 ? front(i) : back(i)), int32_t(p), next_rank += 1 + int32_t(rng() % 3)});
+  }
+  std::shuffle(all.begin(), all.end(), rng);  // recorded in any order
+  const std::vector<ABuffer::Raw> b1(all.begin(), all.begin() + all.size() / 2), b2(all.begin() + all.size() / 2, all.end());
+  ABuffer lanes, scalar;
+  scalar.set_lanes(false);
+  for (ABuffer* a : {&lanes, &scalar}) {
+    a->reset(pixels);
+    a->append(b1);
+    a->append(b2);
+    a->gather();
+  }
+  const int64_t cuts[] = {0, 7, 1000, 1001, 2500, pixels};
+  for (int r = 4; r >= 0; --r) lanes.order(cuts[r], cuts[r + 1]);
+  scalar.order(0, pixels);
+  EXPECT_GT(lanes.lane_lists(), pixels / 2);
+  EXPECT_EQ(scalar.lane_lists(), 0);
+  for (int64_t p = 0; p < pixels; ++p) {
+    ASSERT_EQ(lanes.end(p) - lanes.begin(p), scalar.end(p) - scalar.begin(p));
+    for (int32_t i = lanes.head(p), j = scalar.head(p); j >= 0; i = lanes.entry(i).next, j = scalar.entry(j).next) {
+      ASSERT_GE(i, 0) << "pixel " << p;
+      EXPECT_EQ(std::memcmp(&lanes.entry(i).t, &scalar.entry(j).t, sizeof(double)), 0) << "pixel " << p;
+      EXPECT_EQ(lanes.entry(i).item, scalar.entry(j).item) << "pixel " << p;
+    }
+  }
+  EXPECT_EQ(lanes.head_insertions(), scalar.head_insertions());
+  EXPECT_EQ(lanes.walk_steps(), scalar.walk_steps());
+  EXPECT_GT(scalar.walk_steps(), 100);
 }
 
 TEST(PnLists, NoDuplicatesAndMoveToFront) {
