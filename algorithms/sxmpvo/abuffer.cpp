@@ -207,27 +207,6 @@ void PnLists::reset(size_t cells) {
   queries_ = found_at_head_ = moved_ = steps_ = 0;
 }
 
-void PnLists::add(int32_t occluding, int32_t occluded) {
-  ++queries_;
-  int32_t* link = &head_[occluding];
-  if (*link < 0) touched_.push_back(occluding);
-  for (int32_t prev = -1, i = *link; i >= 0; prev = i, i = pool_[i].next) {
-    ++steps_;
-    if (pool_[i].cell != occluded) continue;
-    if (prev < 0) {
-      ++found_at_head_;
-    } else {  // move to front
-      pool_[prev].next = pool_[i].next;
-      pool_[i].next = *link;
-      *link = i;
-      ++moved_;
-    }
-    return;
-  }
-  pool_.push_back({occluded, *link});
-  *link = static_cast<int32_t>(pool_.size() - 1);
-}
-
 void PnLists::to_relations(mpvo::ExtraRelations& out) const {
   // The sparse form: only the cells with a list are touched, not every cell of the mesh.
   out.offsets.clear();
@@ -246,52 +225,6 @@ void PnLists::to_relations(mpvo::ExtraRelations& out) const {
     const int32_t first = k;
     for (int32_t i = head_[c]; i >= 0; i = pool_[i].next) out.behind[k++] = pool_[i].cell;
     out.span[c] = {first, k};
-  }
-}
-
-void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
-                   PnLists& pn, PairStats& stats) {
-  if (abuf.head(pixel) < 0) return;
-  // Read in place; copied to `scratch` only when a tie is reordered (rare).
-  const PixEntry* e = abuf.begin(pixel);
-  const size_t k = static_cast<size_t>(abuf.end(pixel) - e);
-  ++stats.lists;
-  stats.max_list = std::max<int64_t>(stats.max_list, static_cast<int64_t>(k));
-  // Far to near: beyond the farthest entry the ray is outside the mesh, so the first entry
-  // expected is back-facing.
-  bool want_front = false;
-  int32_t occluded = -1;  // cell of the last front-facing entry, while in a ray gap
-  for (size_t i = 0; i < k; ++i) {
-    if (e[i].front() != want_front) {
-      size_t j = i + 1;
-      while (j < k && e[j].t >= e[i].t - tie && e[j].front() != want_front) ++j;
-      if (j < k && e[j].t >= e[i].t - tie) {
-        if (e != scratch.data()) {
-          scratch.assign(e, e + k);
-          e = scratch.data();
-        }
-        std::rotate(scratch.begin() + i, scratch.begin() + j, scratch.begin() + j + 1);
-        ++stats.tie_reorders;
-      } else {
-        ++stats.unpaired;  // taken as it is: the state follows the entry's own kind
-      }
-    }
-    if (e[i].front()) {
-      occluded = e[i].cell();
-      want_front = false;
-    } else {
-      if (occluded >= 0) {
-        const int32_t occluding = e[i].cell();
-        ++stats.pairs;
-        if (occluding == occluded) {
-          ++stats.self_pairs;
-        } else {
-          pn.add(occluding, occluded);
-        }
-      }
-      occluded = -1;
-      want_front = true;
-    }
   }
 }
 

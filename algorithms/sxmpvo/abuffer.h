@@ -142,6 +142,27 @@ class PnLists {
   int64_t queries_ = 0, found_at_head_ = 0, moved_ = 0, steps_ = 0;
 };
 
+inline void PnLists::add(int32_t occluding, int32_t occluded) {
+  ++queries_;
+  int32_t* link = &head_[occluding];
+  if (*link < 0) touched_.push_back(occluding);
+  for (int32_t prev = -1, i = *link; i >= 0; prev = i, i = pool_[i].next) {
+    ++steps_;
+    if (pool_[i].cell != occluded) continue;
+    if (prev < 0) {
+      ++found_at_head_;
+    } else {  // move to front
+      pool_[prev].next = pool_[i].next;
+      pool_[i].next = *link;
+      *link = i;
+      ++moved_;
+    }
+    return;
+  }
+  pool_.push_back({occluded, *link});
+  *link = static_cast<int32_t>(pool_.size() - 1);
+}
+
 struct PairStats {
   int64_t lists = 0;          // non-empty PIX lists
   int64_t pairs = 0;          // front-facing / back-facing pairs found (before de-duplication)
@@ -157,7 +178,51 @@ struct PairStats {
 // drawn before B. Entries whose depths differ by at most `tie` may stand in either order
 // (faces that touch, a ray through a silhouette edge): when one breaks the alternation, the
 // next entry of the expected kind within the tie is moved up in its place.
-void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
-                   PnLists& pn, PairStats& stats);
+inline void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
+                   PnLists& pn, PairStats& stats) {
+  if (abuf.head(pixel) < 0) return;
+  // Read in place; copied to `scratch` only when a tie is reordered (rare).
+  const PixEntry* e = abuf.begin(pixel);
+  const size_t k = static_cast<size_t>(abuf.end(pixel) - e);
+  ++stats.lists;
+  stats.max_list = std::max<int64_t>(stats.max_list, static_cast<int64_t>(k));
+  // Far to near: beyond the farthest entry the ray is outside the mesh, so the first entry
+  // expected is back-facing.
+  bool want_front = false;
+  int32_t occluded = -1;  // cell of the last front-facing entry, while in a ray gap
+  for (size_t i = 0; i < k; ++i) {
+    if (e[i].front() != want_front) {
+      size_t j = i + 1;
+      while (j < k && e[j].t >= e[i].t - tie && e[j].front() != want_front) ++j;
+      if (j < k && e[j].t >= e[i].t - tie) {
+        if (e != scratch.data()) {
+          scratch.assign(e, e + k);
+          e = scratch.data();
+        }
+        std::rotate(scratch.begin() + i, scratch.begin() + j, scratch.begin() + j + 1);
+        ++stats.tie_reorders;
+      } else {
+        ++stats.unpaired;  // taken as it is: the state follows the entry's own kind
+      }
+    }
+    if (e[i].front()) {
+      occluded = e[i].cell();
+      want_front = false;
+    } else {
+      if (occluded >= 0) {
+        const int32_t occluding = e[i].cell();
+        ++stats.pairs;
+        if (occluding == occluded) {
+          ++stats.self_pairs;
+        } else {
+          pn.add(occluding, occluded);
+        }
+      }
+      occluded = -1;
+      want_front = true;
+    }
+  }
+}
+
 
 }  // namespace vob::sxmpvo
