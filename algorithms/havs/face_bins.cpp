@@ -48,7 +48,7 @@ void bin_faces(const FaceData& fd, const SampleFrame& frame, const std::vector<i
   const std::vector<Vec3>& pts = fd.scene.mesh().points;
   b.projected.resize(pts.size());
   tbb::parallel_for(tbb::blocked_range<size_t>(0, pts.size(), 4096), [&](const auto& r) {
-    for (size_t i = r.begin(); i < r.end(); ++i) b.projected[i] = ProjectedVertex::of(frame, pts[i]);
+    frame.project_all(pts.data() + r.begin(), r.size(), b.projected.data() + r.begin());
   });
   if (!frame.ortho()) {
     b.inv_len.resize(frame.num_samples());

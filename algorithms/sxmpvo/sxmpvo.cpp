@@ -138,8 +138,7 @@ class SxmpvoOrderer final : public Orderer {
     projected_.resize(points.size());
     tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 8192),
                       [&](const tbb::blocked_range<size_t>& r) {
-                        for (size_t k = r.begin(); k < r.end(); ++k)
-                          projected_[k] = ProjectedVertex::of(frame, points[k]);
+                        frame.project_all(points.data() + r.begin(), r.size(), projected_.data() + r.begin());
                       });
     // Faces are scanned in storage order, where a face's points, corners and sign lie near
     // the previous face's (in sorted order every face is a cache miss); each entry carries

@@ -48,20 +48,6 @@ struct Plane {
   double d = 0;  // n . p + d = 0 on the plane
 };
 
-// A vertex's window position as SampleFrame::project gives it (in_front false when the
-// vertex is not strictly in front of the eye). Callers rasterizing many polygons that share
-// vertices project each vertex once and hand these to setup(): same values, less work.
-struct ProjectedVertex {
-  double x = 0, y = 0;
-  bool in_front = false;
-  static ProjectedVertex of(const SampleFrame& frame, const Vec3& p) {
-    ProjectedVertex q;
-    double zc;
-    q.in_front = frame.project(p, q.x, q.y, zc);
-    return q;
-  }
-};
-
 class PolygonRaster {
  public:
   // Prepares the polygon v[0..n) (n = 3 or 4, any orientation). Returns false when it can

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <string>
 
+#include <immintrin.h>
+
+#include "harness/cpu_features.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -70,6 +73,53 @@ bool SampleFrame::project(Vec3 p, double& x, double& y, double& zc) const {
   x = (xc / (zc * sx_scale_) + 1.0) * 0.5 * cols_;
   y = (yc / (zc * sy_scale_) + 1.0) * 0.5 * rows_;
   return true;
+}
+
+namespace {
+// Four points' project() in lanes: d = p - eye; xc, yc, zc as dot()'s (x + y) + z; then
+// the scalar expressions' operations in their order. Lanes not in front keep x = y = 0.
+__attribute__((target("avx2"), always_inline)) inline __m256d dot4(__m256d dx, __m256d dy, __m256d dz, Vec3 a) {
+  return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(dx, _mm256_set1_pd(a.x)), _mm256_mul_pd(dy, _mm256_set1_pd(a.y))),
+                       _mm256_mul_pd(dz, _mm256_set1_pd(a.z)));
+}
+__attribute__((target("avx2"))) void project4(const Vec3* p, Vec3 eye, Vec3 r, Vec3 u, Vec3 f, bool ortho,
+                                              double sxs, double sys, double cols, double rows,
+                                              ProjectedVertex* out) {
+  const __m256d dx = _mm256_sub_pd(_mm256_setr_pd(p[0].x, p[1].x, p[2].x, p[3].x), _mm256_set1_pd(eye.x));
+  const __m256d dy = _mm256_sub_pd(_mm256_setr_pd(p[0].y, p[1].y, p[2].y, p[3].y), _mm256_set1_pd(eye.y));
+  const __m256d dz = _mm256_sub_pd(_mm256_setr_pd(p[0].z, p[1].z, p[2].z, p[3].z), _mm256_set1_pd(eye.z));
+  const __m256d xc = dot4(dx, dy, dz, r), yc = dot4(dx, dy, dz, u), zc = dot4(dx, dy, dz, f);
+  const __m256d one = _mm256_set1_pd(1.0), half = _mm256_set1_pd(0.5);
+  __m256d x, y, front;
+  if (ortho) {
+    x = _mm256_div_pd(xc, _mm256_set1_pd(sxs));
+    y = _mm256_div_pd(yc, _mm256_set1_pd(sys));
+    front = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
+  } else {
+    x = _mm256_div_pd(xc, _mm256_mul_pd(zc, _mm256_set1_pd(sxs)));
+    y = _mm256_div_pd(yc, _mm256_mul_pd(zc, _mm256_set1_pd(sys)));
+    front = _mm256_cmp_pd(zc, _mm256_setzero_pd(), _CMP_GT_OQ);
+  }
+  x = _mm256_and_pd(front, _mm256_mul_pd(_mm256_mul_pd(_mm256_add_pd(x, one), half), _mm256_set1_pd(cols)));
+  y = _mm256_and_pd(front, _mm256_mul_pd(_mm256_mul_pd(_mm256_add_pd(y, one), half), _mm256_set1_pd(rows)));
+  alignas(32) double xs[4], ys[4];
+  _mm256_store_pd(xs, x);
+  _mm256_store_pd(ys, y);
+  const int m = _mm256_movemask_pd(front);
+  for (int i = 0; i < 4; ++i) {
+    out[i].x = xs[i];
+    out[i].y = ys[i];
+    out[i].in_front = (m >> i) & 1;
+  }
+}
+}  // namespace
+
+void SampleFrame::project_all(const Vec3* p, size_t n, ProjectedVertex* out) const {
+  size_t i = 0;
+  if (cpu_has_avx2())
+    for (; i + 4 <= n; i += 4)
+      project4(p + i, eye_, r_, u_, f_, cam_.ortho, sx_scale_, sy_scale_, cols_, rows_, out + i);
+  for (; i < n; ++i) out[i] = ProjectedVertex::of(*this, p[i]);
 }
 
 double SampleFrame::pixels_per_unit(double zc) const {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <numeric>
 #include <random>
@@ -202,6 +203,41 @@ TEST(PolygonRaster, PolygonCrossingTheEyePlane) {
   rasterize_polygon(f, q, 4, f.bounds(), [&](int, int, double) { ++m; });
   rasterize_polygon(f, edge_on, 4, f.bounds(), [&](int, int, double) { ++m; });
   EXPECT_EQ(m, 0);
+}
+
+// project_all (four points in AVX2 lanes) against ProjectedVertex::of, bit for bit: points
+// in front of, on and behind the eye plane, far off, NaN; every count 0..13 (the scalar
+// tail); perspective and orthographic.
+TEST(SampleFrame, ProjectAllGivesTheBitsOfProjectedVertexOf) {
+  Camera persp = test::test_camera({0.3, -0.2, 7}, {0.1, 0.05, -1}, 97, 61);
+  persp.up = {0.1, 1, 0};
+  Camera ortho = exact_ortho(13);
+  ortho.eye = {0.2, -0.1, 10};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-9, 9);
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 200; ++i) pts.push_back({u(rng), u(rng), u(rng) * (i % 3 ? 1.0 : 1e3)});
+  pts.push_back(persp.eye);                                   // zc = 0
+  pts.push_back(persp.eye + Vec3{1, 1, 0});                   // zc = 0 off axis
+  pts.push_back({std::nan(""), 0, 0});
+  pts.push_back({1e150, -1e150, 1e150});
+  int behind = 0;
+  for (const Camera& cam : {persp, ortho}) {
+    const SampleFrame f(cam, 1);
+    for (size_t n = 0; n <= 13; ++n)
+      for (size_t first = 0; first + n <= pts.size(); first += 7) {
+        std::vector<ProjectedVertex> got(n);
+        f.project_all(pts.data() + first, n, got.data());
+        for (size_t i = 0; i < n; ++i) {
+          const ProjectedVertex want = ProjectedVertex::of(f, pts[first + i]);
+          EXPECT_EQ(got[i].in_front, want.in_front) << i;
+          EXPECT_EQ(std::memcmp(&got[i].x, &want.x, sizeof(double)), 0) << got[i].x << " " << want.x;
+          EXPECT_EQ(std::memcmp(&got[i].y, &want.y, sizeof(double)), 0) << got[i].y << " " << want.y;
+          behind += !want.in_front;
+        }
+      }
+  }
+  EXPECT_GT(behind, 50);
 }
 
 TEST(PolygonRaster, RejectsOtherVertexCounts) {
