@@ -168,6 +168,35 @@ ArrVertex crossing_vertex(const BucketEdge& e, const BucketEdge& f, double slack
   return v;
 }
 
+// Buckets of up to this many edges are ordered by counting places.
+constexpr int32_t kPlacedMax = 64;
+
+// place[i]: where item i goes in a stable sort by left[i] (no NaN): the smaller keys and the
+// equal keys before it, counted four a compare with no data-dependent branch. std::sort of
+// the bucket's copies mispredicted about every other comparison; its ties (edges from one
+// point) came out in an unspecified order, which no answer depends on. False for longer
+// lists.
+__attribute__((target_clones("avx2", "default"))) bool stable_places(const double* left, int32_t n, int32_t* place) {
+  if (n > kPlacedMax) return false;
+  typedef double Keys __attribute__((vector_size(32)));
+  typedef int64_t Counts __attribute__((vector_size(32)));  // a true compare is -1
+  Keys key4[kPlacedMax / 4];
+  Counts slot4[kPlacedMax / 4];
+  const int32_t groups = (n + 3) / 4;
+  for (int32_t i = 0; i < 4 * groups; ++i) {
+    key4[i / 4][i % 4] = i < n ? left[i] : INFINITY;  // padding: never smaller, never before
+    slot4[i / 4][i % 4] = i;
+  }
+  for (int32_t i = 0; i < n; ++i) {
+    const double x = left[i];
+    const Counts at = {i, i, i, i};
+    Counts count = {0, 0, 0, 0};
+    for (int32_t g = 0; g < groups; ++g) count -= (key4[g] < x) | ((key4[g] == x) & (slot4[g] < at));
+    place[i] = static_cast<int32_t>(count[0] + count[1] + count[2] + count[3]);
+  }
+  return true;
+}
+
 }  // namespace
 
 // Out of the pair loop (rare: only pairs the exact test found not crossing come here), so
@@ -248,6 +277,9 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   // corner lies left of this bucket's column whenever its later edge starts there.
   using Item = BucketEdge;
   std::vector<Item> local;
+  std::vector<std::pair<double, int32_t>> order;  // (left side, slot) of a long bucket
+  std::vector<double> lefts;
+  std::vector<int32_t> places;
   std::vector<uint32_t> near;
   std::vector<std::pair<uint32_t, int>> maybe;
   BucketLanes bucket_lanes;
@@ -257,13 +289,26 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   for (int r = 0; r < grid.gh; ++r)
     for (int c = 0; c < grid.gw; ++c) {
       const size_t cell = static_cast<size_t>(r) * grid.gw + c;
-      local.clear();
-      for (int32_t x = edge_off[cell]; x < edge_off[cell + 1]; ++x) {
-        const int32_t id = edge_items[x];
-        const auto [a, b] = edges[id];
-        local.push_back({box_[id], proj.uv[a], proj.uv[b], a, b, id, unswept_[id] != 0});
+      // Copied in a stable order of their left sides, each copy written to its place.
+      const int32_t off = edge_off[cell], count = edge_off[cell + 1] - off;
+      lefts.resize(count);
+      places.resize(count);
+      for (int32_t i = 0; i < count; ++i) {
+        const double l = box_[edge_items[off + i]].x0;
+        lefts[i] = std::isnan(l) ? -INFINITY : l;
       }
-      std::sort(local.begin(), local.end(), [&](const Item& p, const Item& q) { return left(p) < left(q); });
+      if (!stable_places(lefts.data(), count, places.data())) {
+        order.clear();
+        for (int32_t i = 0; i < count; ++i) order.push_back({lefts[i], i});
+        std::sort(order.begin(), order.end());
+        for (int32_t i = 0; i < count; ++i) places[order[i].second] = i;
+      }
+      local.resize(count);
+      for (int32_t i = 0; i < count; ++i) {
+        const int32_t id = edge_items[off + i];
+        const auto [a, b] = edges[id];
+        local[places[i]] = {box_[id], proj.uv[a], proj.uv[b], a, b, id, unswept_[id] != 0};
+      }
       const double cx0 = grid.gx0 + c * grid.cw, cy0 = grid.gy0 + r * grid.ch;
       // uv_sign(x, p, q)'s bound for a pair of this bucket: with every box at most D wide
       // or high, |q - p| <= D and |x - p| <= 2 D per coordinate (x and p lie in boxes that
