@@ -88,7 +88,7 @@ int Worker::depth(int32_t x, int32_t y) {
 const PlaneKey& Worker::key(int32_t f) {
   if (key_stamp_[f] != vi_) {
     key_stamp_[f] = vi_;
-    key_[f] = plane_key(signs_.g, terms_, in_->plane[f], view_->view_plane[f]);
+    key_[f] = plane_key(signs_.g, terms_, view_->view_plane[f]);
   }
   return key_[f];
 }
@@ -352,7 +352,6 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
   if (zeros == 0) {
     inside_.push_back(f);
     // Its plane key is computed next (sort_inside): asked for now.
-    __builtin_prefetch(&in_->plane[f].n);
     __builtin_prefetch(&view_->view_plane[f]);
     return;
   }
