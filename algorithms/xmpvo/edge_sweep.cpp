@@ -86,7 +86,12 @@ bool Worker::sweep(int32_t e) {
   swept_ = e;
   if (!order_crossings() || !start_list(e)) return false;
   emit_segment();
-  for (const EdgeCrossing& xing : xings_) {
+  const size_t nx = xings_.size();
+  for (size_t ix = 0; ix < nx; ++ix) {
+    const EdgeCrossing& xing = xings_[ix];
+    // swap() reads the crossed edge's faces first, from a table indexed at random: asked
+    // for four crossings ahead.
+    if (ix + 4 < nx) __builtin_prefetch(&in_->arr.swap_faces(xings_[ix + 4].other));
     // Nearly every crossing of a conforming surface is a swap, which reads neither depths
     // nor the crossed edge's points (a random read): tried here, inline.
     if (!(in_->conforming && swap(e, xing)) && !cross(e, xing)) return false;

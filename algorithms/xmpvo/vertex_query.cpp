@@ -355,6 +355,8 @@ void Worker::classify(const ArrVertex& v, int32_t f) {
     __builtin_prefetch(&view_->view_plane[f]);
     return;
   }
+  // Its key is needed when it meets an inside face in a sector (emit_sectors).
+  __builtin_prefetch(&view_->view_plane[f]);
   // A point on the boundary of a face it is not a vertex of: the edge sweep's premise fails.
   if (v.b < 0 && p[0] != v.a && p[1] != v.a && p[2] != v.a && (n < 4 || p[3] != v.a))
     degenerate_seen_ = true;
