@@ -28,21 +28,23 @@ struct BucketEdge {
 // entries of padding at the end (never read as edges: lanes past n are masked).
 struct BucketLanes {
   std::vector<double> x0, y0, y1;
-  std::vector<int32_t> a, b;
+  std::vector<int32_t> a, b, unswept;  // unswept: -1 for an unswept edge, else 0
   void fill(const std::vector<BucketEdge>& local) {
     const size_t n = local.size();
-    x0.resize(n + 4), y0.resize(n + 4), y1.resize(n + 4), a.resize(n + 4), b.resize(n + 4);
+    x0.resize(n + 4), y0.resize(n + 4), y1.resize(n + 4), a.resize(n + 4), b.resize(n + 4), unswept.resize(n + 4);
     for (size_t i = 0; i < n; ++i)
-      x0[i] = local[i].box.x0, y0[i] = local[i].box.y0, y1[i] = local[i].box.y1, a[i] = local[i].a, b[i] = local[i].b;
+      x0[i] = local[i].box.x0, y0[i] = local[i].box.y0, y1[i] = local[i].box.y1, a[i] = local[i].a, b[i] = local[i].b,
+      unswept[i] = -int32_t(local[i].unswept);
   }
 };
 
 // build()'s first pass for edge ix, four later edges a step: the edges y = y0, y0 + 1, ...
 // while their boxes start at or left of ix's right side (the run; y < n), kept in near
-// (in order) when their boxes overlap in y, they share no point with ix, their corner is
-// not clearly below the bucket's row (r > 0, below `floor`) and it lies in this bucket:
-// clearly inside (beyond x_in and y_in), or `own_corner(y)` says so; returns how many. The
-// same comparisons as the scalar loops, lane by lane (std::max(p, q) is max_pd(q, p)).
+// (in order) when their boxes overlap in y, they share no point with ix, they are not both
+// unswept, their corner is not clearly below the bucket's row (r > 0, below `floor`) and
+// it lies in this bucket: clearly inside (beyond x_in and y_in), or `own_corner(y)` says
+// so; returns how many. The same comparisons as the scalar loops, lane by lane
+// (std::max(p, q) is max_pd(q, p)).
 template <class OwnCorner>
 __attribute__((target("avx2"))) size_t near_pairs_avx2(const BucketEdge& ix, const BucketLanes& l, size_t y0,
                                                        size_t n, bool below, double floor, double x_in, double y_in,
@@ -50,6 +52,7 @@ __attribute__((target("avx2"))) size_t near_pairs_avx2(const BucketEdge& ix, con
   const __m256d ax1 = _mm256_set1_pd(ix.box.x1), ay0 = _mm256_set1_pd(ix.box.y0), ay1 = _mm256_set1_pd(ix.box.y1);
   const __m256d vfloor = _mm256_set1_pd(floor), vx_in = _mm256_set1_pd(x_in), vy_in = _mm256_set1_pd(y_in);
   const __m128i ia = _mm_set1_epi32(ix.a), ib = _mm_set1_epi32(ix.b);
+  const __m128i ix_unswept = _mm_set1_epi32(-int32_t(ix.unswept));
   const int below_mask = below ? 0xF : 0;
   size_t m = 0;
   for (size_t y = y0; y < n; y += 4) {
@@ -68,7 +71,9 @@ __attribute__((target("avx2"))) size_t near_pairs_avx2(const BucketEdge& ix, con
     const __m128i shared = _mm_or_si128(_mm_or_si128(_mm_cmpeq_epi32(ia, pa), _mm_cmpeq_epi32(ia, pb)),
                                         _mm_or_si128(_mm_cmpeq_epi32(ib, pa), _mm_cmpeq_epi32(ib, pb)));
     const int apart = ~_mm_movemask_ps(_mm_castsi128_ps(shared)) & 0xF;
-    int keep = overlap & apart & ~low & ((1 << end) - 1);
+    const __m128i pu = _mm_loadu_si128(reinterpret_cast<const __m128i*>(&l.unswept[y]));
+    const int both_unswept = _mm_movemask_ps(_mm_castsi128_ps(_mm_and_si128(ix_unswept, pu)));
+    int keep = overlap & apart & ~low & ~both_unswept & ((1 << end) - 1);
     // Corners near the bucket's sides (rare): the bucket's own column and row decide.
     for (int edge = keep & ~inside; edge != 0; edge &= edge - 1) {
       const int j = __builtin_ctz(edge);
@@ -364,8 +369,9 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
             nc += inside || own_corner(near[k]);
           }
         }
-        // Crossings of two inner edges of the unswept sheet: read by no sweep.
-        if (ix.unswept) {
+        // Crossings of two inner edges of the unswept sheet: read by no sweep (the lanes
+        // drop them themselves).
+        if (ix.unswept && !avx2) {
           size_t m = 0;
           for (size_t k = 0; k < nc; ++k) {
             near[m] = near[k];

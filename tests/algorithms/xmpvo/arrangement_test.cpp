@@ -216,6 +216,8 @@ TEST(XmpvoArrangement, LanesMatchTheScalarPassOnBucketSides) {
   }
 }
 
+// With and without the unswept front sheet (whose inner edges' pairs the lanes drop
+// themselves).
 TEST(XmpvoArrangement, FilterLanesMatchTheScalarFilter) {
   if (!cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU";
   const std::vector<std::pair<std::string, std::map<std::string, std::string>>> scenes = {
@@ -224,17 +226,18 @@ TEST(XmpvoArrangement, FilterLanesMatchTheScalarFilter) {
   for (const auto& [name, params] : scenes) {
     const Scene s = dataset(name, params);
     const ExteriorFaces& ext = s.exterior_faces();
-    for (int vi : {0, 5, 11}) {
+    for (const auto& [vi, sheet] : std::vector<std::pair<int, int>>{{0, 0}, {5, 0}, {11, 0}, {0, 1}, {5, 1}}) {
       const Camera view = fibonacci_view(s.bounds(), 14, vi, ViewOptions{256, 256});
       Signs signs;
       Projection proj;
       project(s, view, signs, proj);
       Arrangement lanes, scalar;
       scalar.lanes = false;
+      lanes.unswept_sheet = scalar.unswept_sheet = sheet;
       lanes.set_faces(ext);
       scalar.set_faces(ext);
-      EXPECT_EQ(lanes.build(ext, proj, signs), scalar.build(ext, proj, signs));
-      ASSERT_EQ(lanes.vertices.size(), scalar.vertices.size()) << name << " view " << vi;
+      EXPECT_EQ(lanes.build(ext, proj, signs), scalar.build(ext, proj, signs)) << name << " view " << vi << " sheet " << sheet;
+      ASSERT_EQ(lanes.vertices.size(), scalar.vertices.size()) << name << " view " << vi << " sheet " << sheet;
       for (size_t v = 0; v < lanes.vertices.size(); ++v) {
         const ArrVertex &x = lanes.vertices[v], &y = scalar.vertices[v];
         EXPECT_TRUE(x.a == y.a && x.b == y.b && x.c == y.c && x.d == y.d && x.e1 == y.e1 && x.e2 == y.e2 &&
