@@ -187,9 +187,12 @@ class SxmpvoOrderer final : public Orderer {
           ProjectedVertex proj[4];
           for (int v = 0; v < n; ++v) proj[v] = projected_[ids[v]];
           if (raster.setup(frame, corners, n, proj))
-            raster.scan(frame.bounds(), [&](int sx, int sy, double t) {
-              room(1);
-              batch[used++] = {t, item, static_cast<int32_t>(int64_t(sy) * cols + sx), rank};
+            raster.scan(frame.bounds(), [&](const RowHits& hits, int k) {  // a batch at a time
+              room(static_cast<size_t>(k));
+              sxmpvo::ABuffer::Raw* out = batch.data() + used;
+              for (int j = 0; j < k; ++j)
+                out[j] = {hits.t[j], item, static_cast<int32_t>(int64_t(hits.sy[j]) * cols + hits.sx[j]), rank};
+              used += static_cast<size_t>(k);
             });
         }
       }

@@ -1,7 +1,10 @@
 #include "harness/raster/polygon_raster.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
+
+#include <immintrin.h>
 
 #include "harness/cpu_features.h"
 #include "harness/geometry/polygon_plane.h"
@@ -70,6 +73,41 @@ __attribute__((target("avx2"))) void triangle_edges_avx2(const SampleFrame& fr, 
     e.c = c[i], e.a = av[i], e.b = bv[i], e.k = kv[i], e.eta = ev[i];
     e.own = (own >> i) & 1;
   }
+}
+
+// PolygonRaster::span of four rows, one a lane: the same operations in the same order
+// (no multiply-adds: built with -ffp-contract=off, and the target has no FMA), so the same
+// columns. An edge's branches on the sign of a are the same for every row.
+__attribute__((target("avx2"))) void spans4_avx2(const PolygonRaster::Edge* edges, int sy, int x0, int x1,
+                                                 int* lo, int* hi) {
+  const __m256d y = _mm256_add_pd(_mm256_set1_pd(sy), _mm256_setr_pd(0.5, 1.5, 2.5, 3.5));
+  const __m256d floor_min = _mm256_set1_pd(-1e9), ceil_max = _mm256_set1_pd(1e9);
+  __m128i l = _mm_set1_epi32(x0), h = _mm_set1_epi32(x1);
+  __m256d reject = _mm256_setzero_pd();
+  for (int i = 0; i < 3; ++i) {
+    const PolygonRaster::Edge& e = edges[i];
+    const __m256d rhs = _mm256_sub_pd(_mm256_set1_pd(-e.eta),
+                                      _mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(e.b), y), _mm256_set1_pd(e.k)));
+    if (e.a == 0) {
+      reject = _mm256_or_pd(reject, _mm256_cmp_pd(rhs, _mm256_setzero_pd(), _CMP_GT_OQ));
+      continue;
+    }
+    const __m256d v = _mm256_sub_pd(_mm256_div_pd(rhs, _mm256_set1_pd(e.a)), _mm256_set1_pd(0.5));
+    const __m256d number = _mm256_cmp_pd(v, v, _CMP_ORD_Q);  // a NaN row leaves its columns
+    const __m256d c = _mm256_min_pd(_mm256_max_pd(v, floor_min), ceil_max);  // floor_to_int's clamp
+    if (e.a > 0) {
+      const __m256d f = _mm256_blendv_pd(floor_min, _mm256_floor_pd(c), number);
+      l = _mm_max_epi32(l, _mm256_cvtpd_epi32(f));
+    } else if (e.a < 0) {
+      const __m256d f = _mm256_blendv_pd(ceil_max, _mm256_ceil_pd(c), number);
+      h = _mm_min_epi32(h, _mm256_cvtpd_epi32(f));
+    }
+  }
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(lo), l);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(hi), h);
+  const int rejected = _mm256_movemask_pd(reject);
+  for (int j = 0; j < 4; ++j)
+    if ((rejected >> j) & 1) lo[j] = INT_MAX, hi[j] = INT_MIN;
 }
 
 }  // namespace
@@ -258,6 +296,17 @@ bool PolygonRaster::span(int i, int sy, int& x0, int& x1) const {
       x1 = std::min(x1, ceil_to_int(v));
   }
   return x0 <= x1;
+}
+
+void PolygonRaster::spans4(int i, int sy, int x0, int x1, int lo[4], int hi[4], bool portable) const {
+  if (cpu_has_avx2() && !portable) {
+    spans4_avx2(tri_[i].e, sy, x0, x1, lo, hi);
+    return;
+  }
+  for (int j = 0; j < 4; ++j) {
+    lo[j] = x0, hi[j] = x1;
+    if (!span(i, sy + j, lo[j], hi[j])) lo[j] = INT_MAX, hi[j] = INT_MIN;
+  }
 }
 
 }  // namespace vob

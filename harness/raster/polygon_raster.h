@@ -36,6 +36,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 #include "harness/raster/llvmpipe_depth.h"
 #include "harness/raster/row_coverage.h"
@@ -65,9 +66,18 @@ class PolygonRaster {
     return plane_ok_ ? depth(frame_->x(sx, sy)) : std::numeric_limits<double>::quiet_NaN();
   }
   // Calls emit(sx, sy, t) (or emit(sx, sy, t, depth24), see above) for every covered
-  // sample in `clip`, row by row, bottom up.
+  // sample in `clip`, row by row, bottom up. An emit taking (const RowHits&, int n) gets the
+  // same samples in the same order a batch at a time (hits.sx/sy/t[0, n)), without a call
+  // per sample.
   template <class Emit>
   void scan(const SampleRect& clip, Emit&& emit) const;
+
+  // The columns of rows sy to sy + 3 that triangle i (of triangles()) may cover, clipped
+  // to [x0, x1]: [lo[j], hi[j]] for row sy + j, lo[j] > hi[j] when none (conservative; the
+  // row's samples are then tested one by one). AVX2 when the CPU has it (rows in lanes);
+  // portable: the row-by-row loop (the same columns; tests compare).
+  void spans4(int i, int sy, int x0, int x1, int lo[4], int hi[4], bool portable = false) const;
+  int triangles() const { return count_; }
 
   struct Edge {
     Vec3 m;         // inside: c + m . X(sx, sy) > 0, or == 0 and `own`
@@ -126,6 +136,7 @@ class PolygonRaster {
   bool add_gl_triangle(const int64_t* x, const int64_t* y, const double* q, const float* z);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
+
   static RowEdges row_edges(const Triangle& t) {
     RowEdges r;
     for (int i = 0; i < 3; ++i) {
@@ -151,7 +162,10 @@ class PolygonRaster {
 template <class Emit>
 void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
   const bool ortho = frame_->ortho();
+  constexpr bool batched = std::is_invocable_v<Emit&, const RowHits&, int>;
   if (gl_) {
+    [[maybe_unused]] RowHits batch;  // batched: the gl rule's samples gathered here
+    int held = 0;
     for (int i = 0; i < count_; ++i) {
       const GlTriangle& g = gl_tri_[i];
       const SampleRect r = g.box.intersect(clip);
@@ -162,31 +176,43 @@ void PolygonRaster::scan(const SampleRect& clip, Emit&& emit) const {
                            g.qy * double(int64_t(sy) * kGlSubpixels - g.y0);
           const double t = ortho ? q : frame_->dir_length(sx, sy) / q;
           if (!((ortho ? t >= 0 : t > 0) && std::isfinite(t))) continue;
-          if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
+          if constexpr (batched) {
+            batch.sx[held] = sx, batch.sy[held] = sy, batch.t[held] = t;
+            if (++held == kRowHitCap) emit(static_cast<const RowHits&>(batch), std::exchange(held, 0));
+          } else if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
             emit(sx, sy, t, g.has_z ? llvmpipe_depth24(g.zplane, sx, sy) : int64_t(-1));
           else
             emit(sx, sy, t);
         }
     }
+    if constexpr (batched)
+      if (held > 0) emit(static_cast<const RowHits&>(batch), held);
     return;
   }
   // Perspective hits are at t > 0 by construction; the kernel's test drops rounding noise of
   // rays that graze an edge-on polygon. Orthographic: only in front of the eye plane.
   const RowCoverageFn row_fn = row_coverage();
   const RowDepth depth{plane_.plane.n, plane_.plane.d, plane_.num, plane_.inv_nf};
-  const auto hit = [&](int sx, int sy, double t) {
-    if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
+  const auto one = [&](int sx, int sy, double t) {
+    if constexpr (batched)
+      return;  // not called: `hit` is `emit` itself
+    else if constexpr (std::is_invocable_v<Emit&, int, int, double, int64_t>)
       emit(sx, sy, t, int64_t(-1));
     else
       emit(sx, sy, t);
   };
+  auto& hit = [&]() -> auto& {
+    if constexpr (batched) return emit; else return one;
+  }();
   for (int i = 0; i < count_; ++i) {
     const SampleRect r = tri_[i].box.intersect(clip);
     const RowEdges edges = row_edges(tri_[i]);
     RowScanner rows(row_fn, *frame_, edges, depth);
-    for (int sy = r.y0; sy <= r.y1; ++sy) {
-      int x0 = r.x0, x1 = r.x1;
-      if (span(i, sy, x0, x1)) rows.add(sy, x0, x1, hit);
+    for (int sy = r.y0; sy <= r.y1; sy += 4) {
+      int lo[4], hi[4];
+      spans4(i, sy, r.x0, r.x1, lo, hi);
+      for (int j = 0; j < 4 && sy + j <= r.y1; ++j)
+        if (lo[j] <= hi[j]) rows.add(sy + j, lo[j], hi[j], hit);
     }
     rows.flush(hit);
   }

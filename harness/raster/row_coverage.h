@@ -9,6 +9,7 @@
 // watertight between a face scanned by either.
 #pragma once
 #include <cstdint>
+#include <type_traits>
 
 #include "harness/raster/sample_frame.h"
 
@@ -51,7 +52,8 @@ RowCoverageFn row_coverage();           // AVX2 when the CPU has it, else the ba
 RowCoverageFn row_coverage_baseline();  // the scalar loop (tests compare the two)
 
 // Collects spans and calls emit(sx, sy, t) for every covered sample, a batch of spans at a
-// time (one kernel call, one setup, per batch rather than per row).
+// time (one kernel call, one setup, per batch rather than per row); an emit taking
+// (const RowHits&, n) gets each batch's hits [0, n) at once.
 class RowScanner {
  public:
   RowScanner(RowCoverageFn fn, const SampleFrame& frame, const RowEdges& e, const RowDepth& depth)
@@ -69,7 +71,11 @@ class RowScanner {
   void flush(Emit&& emit) {
     if (count_ == 0) return;
     const int n = fn_(frame_, e_, depth_, spans_, count_, hits_);
-    for (int j = 0; j < n; ++j) emit(hits_.sx[j], hits_.sy[j], hits_.t[j]);
+    if constexpr (std::is_invocable_v<Emit&, const RowHits&, int>) {
+      if (n > 0) emit(static_cast<const RowHits&>(hits_), n);
+    } else {
+      for (int j = 0; j < n; ++j) emit(hits_.sx[j], hits_.sy[j], hits_.t[j]);
+    }
     count_ = samples_ = 0;
   }
 

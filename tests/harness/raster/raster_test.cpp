@@ -7,6 +7,7 @@
 #include <map>
 #include <numeric>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "harness/raster/cell_clip.h"
@@ -158,6 +159,81 @@ TEST(PolygonRaster, PerspectiveMeshIsWatertightAndMatchesRayTests) {
       }
     }
   EXPECT_GT(inside, 500);
+}
+
+TEST(PolygonRaster, SpansOfFourRowsInLanesMatchTheRowByRowLoop) {
+  // Random triangles, large and small, some crossing the eye plane, in a perspective and an
+  // orthographic frame (whose exact grid gives edges with a == 0): the AVX2 spans4 gives
+  // each row the columns of the portable loop, at every row offset and clip.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-3, 3);
+  const Camera cams[] = {test::test_camera({1.3, -4.1, 3.7}, {0.1, 0.2, 0}, 64, 48), exact_ortho(16)};
+  int rows = 0, nonempty = 0;
+  for (const Camera& cam : cams) {
+    const SampleFrame f(cam, 1);
+    for (int k = 0; k < 400; ++k) {
+      Vec3 v[4];
+      const double scale = k % 3 == 0 ? 0.05 : 1.0;
+      for (Vec3& p : v) p = {u(rng), u(rng), u(rng)};
+      for (int i = 1; i < 4; ++i) v[i] = v[0] + (v[i] - v[0]) * scale;
+      if (cam.ortho && k % 2) {  // axis-aligned edges on the exact grid
+        v[0] = {std::round(u(rng)) + 0.5, std::round(u(rng)) + 0.5, 0};
+        v[1] = v[0] + Vec3{3, 0, 0}, v[2] = v[0] + Vec3{3, 2, 0.5}, v[3] = v[0] + Vec3{0, 2, 0};
+      }
+      PolygonRaster p;
+      if (!p.setup(f, v, k % 4 < 2 ? 3 : 4)) continue;
+      const SampleRect b = p.bounds();
+      for (int i = 0; i < p.triangles(); ++i)
+        for (int sy = b.y0 - 3; sy <= b.y1 + 3; ++sy)
+          for (const int x0 : {b.x0 - 2, b.x0 + 1}) {
+            int lo[4], hi[4], plo[4], phi[4];
+            p.spans4(i, sy, x0, b.x1 + 2, lo, hi);
+            p.spans4(i, sy, x0, b.x1 + 2, plo, phi, true);
+            for (int j = 0; j < 4; ++j) {
+              ++rows;
+              EXPECT_EQ(lo[j] <= hi[j], plo[j] <= phi[j]) << k << " row " << sy + j;
+              if (plo[j] > phi[j]) continue;
+              ++nonempty;
+              EXPECT_EQ(lo[j], plo[j]) << k << " row " << sy + j;
+              EXPECT_EQ(hi[j], phi[j]) << k << " row " << sy + j;
+            }
+          }
+    }
+  }
+  EXPECT_GT(nonempty, 1000);
+  EXPECT_GT(rows, nonempty);
+}
+
+TEST(PolygonRaster, BatchedEmitGetsTheSamplesOfTheOneByOneEmit) {
+  // Both rules, polygons from a few samples up to more than one batch (kRowHitCap): the
+  // batched emit sees the same samples, depths and order as emit(sx, sy, t).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2, 2);
+  for (const RasterRule rule : {RasterRule::exact, RasterRule::gl}) {
+    const SampleFrame f(test::test_camera({1.3, -4.1, 3.7}, {0.1, 0.2, 0}, 96, 64), 1, rule);
+    size_t samples = 0, largest = 0;
+    for (int k = 0; k < 200; ++k) {
+      Vec3 v[4];
+      const double scale = k % 4 == 0 ? 0.1 : 1.0;
+      for (Vec3& p : v) p = Vec3{u(rng), u(rng), 0.3 * u(rng)} * scale;
+      const int n = k % 2 ? 4 : 3;
+      if (n == 4) v[2] = v[1] + v[3] - v[0];  // a parallelogram: planar and convex
+      PolygonRaster p;
+      if (!p.setup(f, v, n)) continue;
+      std::vector<std::tuple<int, int, double>> one, batched;
+      p.scan(f.bounds(), [&](int sx, int sy, double t) { one.emplace_back(sx, sy, t); });
+      p.scan(f.bounds(), [&](const RowHits& h, int m) {
+        EXPECT_GT(m, 0);
+        EXPECT_LE(m, kRowHitCap);
+        for (int j = 0; j < m; ++j) batched.emplace_back(h.sx[j], h.sy[j], h.t[j]);
+      });
+      EXPECT_EQ(batched, one) << k;
+      samples += one.size();
+      largest = std::max(largest, one.size());
+    }
+    EXPECT_GT(samples, 2000u);
+    EXPECT_GT(largest, size_t(kRowHitCap));
+  }
 }
 
 TEST(PolygonRaster, SupersampleCounts) {
