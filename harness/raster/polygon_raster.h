@@ -136,7 +136,6 @@ class PolygonRaster {
   bool add_gl_triangle(const int64_t* x, const int64_t* y, const double* q, const float* z);
   // Columns of row sy that may be covered by triangle i (conservative), clipped to [x0, x1].
   bool span(int i, int sy, int& x0, int& x1) const;
-
   static RowEdges row_edges(const Triangle& t) {
     RowEdges r;
     for (int i = 0; i < 3; ++i) {
