@@ -1,6 +1,7 @@
 #include "algorithms/sxmpvo/tiny_faces.h"
 
 #include <algorithm>
+#include <cstddef>
 
 #include "harness/cpu_features.h"
 #include "harness/raster/edge_lanes_avx2.h"
@@ -129,7 +130,180 @@ int entries_avx2_any(const SampleFrame& fr, const Vec3* v, int phase1_sign, cons
 
 }  // namespace
 
-TinyEntriesFn tiny_entries() { return cpu_has_avx2() ? &entries_avx2_any : &entries_scalar; }
+namespace {
+
+// The row kernel's step (row_step_avx2.h) in eight lanes: per lane the same operations in
+// the same order, so the same coverage and t bits.
+struct Step512 {
+  __m512d mx[3], my[3], mz[3], c[3];
+  __mmask8 disown[3];
+  __m512d nx, ny, nz, d, num, inv_nf;
+
+  __attribute__((target("avx512f,avx512vl,avx512dq"))) Step512(const RowEdges& e, const RowDepth& p) {
+    for (int i = 0; i < 3; ++i) {
+      mx[i] = _mm512_set1_pd(e.mx[i]), my[i] = _mm512_set1_pd(e.my[i]), mz[i] = _mm512_set1_pd(e.mz[i]);
+      c[i] = _mm512_set1_pd(e.c[i]);
+      disown[i] = e.own[i] ? 0 : 0xFF;
+    }
+    nx = _mm512_set1_pd(p.n.x), ny = _mm512_set1_pd(p.n.y), nz = _mm512_set1_pd(p.n.z);
+    d = _mm512_set1_pd(p.d), num = _mm512_set1_pd(p.num), inv_nf = _mm512_set1_pd(p.inv_nf);
+  }
+
+  // From the edges in lanes (edge_lanes_avx2.h) without a trip through memory: lane i of
+  // each edge vector broadcast; `own` bit i: edge i owns its exact zeros.
+  __attribute__((target("avx512f,avx512vl,avx512dq,avx2"), always_inline)) Step512(const avx2::EdgeLanes& l, int own,
+                                                                                  const RowDepth& p) {
+    for (int i = 0; i < 3; ++i) {
+      const __m512i lane = _mm512_set1_epi64(i);
+      mx[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.mx));
+      my[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.my));
+      mz[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.mz));
+      c[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.c));
+      disown[i] = (own >> i) & 1 ? 0 : 0xFF;
+    }
+    nx = _mm512_set1_pd(p.n.x), ny = _mm512_set1_pd(p.n.y), nz = _mm512_set1_pd(p.n.z);
+    d = _mm512_set1_pd(p.d), num = _mm512_set1_pd(p.num), inv_nf = _mm512_set1_pd(p.inv_nf);
+  }
+
+  // Lanes `valid` of sample directions (X, Y, Z): the covered ones, and in `inside` those
+  // the edge tests accept (t's tests aside).
+  template <bool kOrtho>
+  __attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) __mmask8 step(__m512d X, __m512d Y, __m512d Z,
+                                                                                    __mmask8 valid, __m512d& t,
+                                                                                    __mmask8& inside) const {
+    const __m512d zero = _mm512_setzero_pd();
+    __mmask8 in = valid;
+    for (int i = 0; i < 3; ++i) {
+      const __m512d dotm = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(mx[i], X), _mm512_mul_pd(my[i], Y)),
+                                         _mm512_mul_pd(mz[i], Z));
+      const __m512d v = _mm512_add_pd(c[i], dotm);
+      in &= ~_mm512_cmp_pd_mask(v, zero, _CMP_LT_OQ);
+      in &= ~(_mm512_cmp_pd_mask(v, zero, _CMP_EQ_OQ) & disown[i]);
+    }
+    const __m512d nX = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(nx, X), _mm512_mul_pd(ny, Y)), _mm512_mul_pd(nz, Z));
+    __mmask8 ok;
+    if (kOrtho) {
+      t = _mm512_mul_pd(_mm512_xor_pd(_mm512_add_pd(nX, d), _mm512_set1_pd(-0.0)), inv_nf);
+      ok = _mm512_cmp_pd_mask(t, zero, _CMP_GE_OQ);
+    } else {
+      const __m512d xx = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(X, X), _mm512_mul_pd(Y, Y)), _mm512_mul_pd(Z, Z));
+      t = _mm512_mul_pd(_mm512_div_pd(num, nX), _mm512_sqrt_pd(xx));
+      ok = _mm512_cmp_pd_mask(t, zero, _CMP_GT_OQ);
+    }
+    ok &= _mm512_cmp_pd_mask(_mm512_abs_pd(t), _mm512_set1_pd(HUGE_VAL), _CMP_LT_OQ);  // finite
+    inside = in;
+    return in & ok;
+  }
+};
+
+// Eight entries {t, item, pixel, rank} from the lanes of mask m (in lane order) at dst,
+// whatever m holds: three 64-byte stores of the 24-byte entries.
+__attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) inline void write8(__m512d t, __m256i pixel,
+                                                                                      __mmask8 m, int32_t item,
+                                                                                      int32_t rank, ABuffer::Raw* dst) {
+  static_assert(sizeof(ABuffer::Raw) == 24 && offsetof(ABuffer::Raw, item) == 8 && offsetof(ABuffer::Raw, pixel) == 12 &&
+                offsetof(ABuffer::Raw, rank) == 16);
+  const __m512d ts = _mm512_maskz_compress_pd(m, t);
+  const __m256i px = _mm256_maskz_compress_epi32(m, pixel);
+  const __m512d w1 = _mm512_castsi512_pd(_mm512_or_si512(_mm512_set1_epi64(static_cast<uint32_t>(item)),
+                                                         _mm512_slli_epi64(_mm512_cvtepu32_epi64(px), 32)));
+  const __m512d w2 = _mm512_castsi512_pd(_mm512_set1_epi64(static_cast<uint32_t>(rank)));
+  double* out = reinterpret_cast<double*>(dst);
+  const __m512i i0 = _mm512_setr_epi64(0, 8, 0, 1, 9, 0, 2, 10), i1 = _mm512_setr_epi64(0, 3, 11, 0, 4, 12, 0, 5),
+                i2 = _mm512_setr_epi64(13, 0, 6, 14, 0, 7, 15, 0);
+  _mm512_storeu_pd(out, _mm512_mask_blend_pd(0x24, _mm512_permutex2var_pd(ts, i0, w1), w2));
+  _mm512_storeu_pd(out + 8, _mm512_mask_blend_pd(0x49, _mm512_permutex2var_pd(ts, i1, w1), w2));
+  _mm512_storeu_pd(out + 16, _mm512_mask_blend_pd(0x92, _mm512_permutex2var_pd(ts, i2, w1), w2));
+}
+
+// Four lanes repeated in the upper four.
+__attribute__((target("avx512f"), always_inline)) inline __m512d twice(__m256d v) {
+  const __m512d z = _mm512_castpd256_pd512(v);
+  return _mm512_shuffle_f64x2(z, z, 0x44);
+}
+
+// One step's entries at dst; returns their number.
+template <bool kOrtho>
+__attribute__((target("avx512f,avx512vl,avx512dq,popcnt"), always_inline)) inline int step_entries(
+    const Step512& k, __m512d X, __m512d Y, __m512d Z, __mmask8 valid, __m256i pixel, int32_t item, int32_t rank,
+    ABuffer::Raw* dst) {
+  __m512d t;
+  __mmask8 inside;
+  const __mmask8 mask = k.template step<kOrtho>(X, Y, Z, valid, t, inside);
+  write8(t, pixel, inside, item, rank, dst);
+  if (__builtin_expect(mask != inside, 0)) {
+    write8(t, pixel, mask, item, rank, dst);
+    return __builtin_popcount(mask);
+  }
+  return __builtin_popcount(inside);
+}
+
+// The box's samples in eight lanes: boxes up to four samples wide two rows a step (lanes
+// 0-3 row sy, 4-7 row sy + 1), wider ones eight columns of a row a step.
+template <bool kOrtho>
+__attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"))) int entries_avx512(
+    const SampleFrame& fr, const Step512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
+  const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
+  const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
+  int n = 0;
+  if (w <= 4) {
+    const __m512d bx = twice(_mm256_loadu_pd(cx + box.x0));  // padded past the last column
+    const __m512d by = twice(_mm256_loadu_pd(cy + box.x0));
+    const __m512d bz = twice(_mm256_loadu_pd(cz + box.x0));
+    const unsigned row_lanes = (1u << w) - 1;
+    const __m256i offsets = _mm256_setr_epi32(0, 1, 2, 3, cols, cols + 1, cols + 2, cols + 3);
+    for (int sy = box.y0; sy <= box.y1; sy += 2) {
+      const bool two = sy < box.y1;
+      const Vec3 r0 = fr.row_term(sy), r1 = two ? fr.row_term(sy + 1) : r0;
+      const __m512d rx = _mm512_mask_blend_pd(0xF0, _mm512_set1_pd(r0.x), _mm512_set1_pd(r1.x));
+      const __m512d ry = _mm512_mask_blend_pd(0xF0, _mm512_set1_pd(r0.y), _mm512_set1_pd(r1.y));
+      const __m512d rz = _mm512_mask_blend_pd(0xF0, _mm512_set1_pd(r0.z), _mm512_set1_pd(r1.z));
+      const __mmask8 valid = static_cast<__mmask8>(two ? row_lanes | row_lanes << 4 : row_lanes);
+      n += step_entries<kOrtho>(k, _mm512_add_pd(rx, bx), _mm512_add_pd(ry, by), _mm512_add_pd(rz, bz), valid,
+                                _mm256_add_epi32(_mm256_set1_epi32(sy * cols + box.x0), offsets), item, rank, dst + n);
+    }
+  } else {
+    const __m256i offsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    for (int sy = box.y0; sy <= box.y1; ++sy) {
+      const Vec3 row = fr.row_term(sy);
+      const __m512d rx = _mm512_set1_pd(row.x), ry = _mm512_set1_pd(row.y), rz = _mm512_set1_pd(row.z);
+      for (int sx = box.x0; sx <= box.x1; sx += 8) {
+        const __mmask8 valid = static_cast<__mmask8>(box.x1 - sx >= 7 ? 0xFF : (1u << (box.x1 - sx + 1)) - 1);
+        n += step_entries<kOrtho>(k, _mm512_add_pd(rx, _mm512_maskz_loadu_pd(valid, cx + sx)),
+                                  _mm512_add_pd(ry, _mm512_maskz_loadu_pd(valid, cy + sx)),
+                                  _mm512_add_pd(rz, _mm512_maskz_loadu_pd(valid, cz + sx)), valid,
+                                  _mm256_add_epi32(_mm256_set1_epi32(sy * cols + sx), offsets), item, rank, dst + n);
+      }
+    }
+  }
+  return n;
+}
+
+__attribute__((target("avx512f,avx512vl,avx512dq,avx2"))) int entries_avx512_any(const SampleFrame& fr, const Vec3* v,
+                                                                                 int phase1_sign, const SampleRect& box,
+                                                                                 int32_t item, int32_t rank,
+                                                                                 ABuffer::Raw* dst) {
+  RowDepth depth;
+  if (!detail::depth_plane(fr, v, depth)) return 0;
+  const avx2::EdgeLanes l = avx2::edge_lanes(fr, v, -phase1_sign);  // facing as tiny_triangle_rows
+  const Step512 k(l, avx2::owns_zero(fr, l), depth);
+  return fr.ortho() ? entries_avx512<true>(fr, k, box, item, rank, dst)
+                    : entries_avx512<false>(fr, k, box, item, rank, dst);
+}
+
+bool cpu_has_avx512() {
+  static const bool yes = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+                          __builtin_cpu_supports("avx512dq") && cpu_has_avx2();
+  return yes;
+}
+
+}  // namespace
+
+TinyEntriesFn tiny_entries_avx512() { return cpu_has_avx512() ? &entries_avx512_any : nullptr; }
+
+TinyEntriesFn tiny_entries() {
+  return cpu_has_avx512() ? &entries_avx512_any : cpu_has_avx2() ? &entries_avx2_any : &entries_scalar;
+}
 TinyEntriesFn tiny_entries_baseline() { return &entries_scalar; }
 TinyEntriesFn tiny_entries_avx2() { return cpu_has_avx2() ? &entries_avx2_any : nullptr; }
 

@@ -51,14 +51,16 @@ void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, c
                         Emit&& emit);
 
 // scan_tiny_triangle's samples written straight as A-buffer entries {t, item, pixel, rank},
-// in the same order, to dst; returns their number. The AVX2 version writes four entries a
-// step whatever their coverage (no jump per sample or per hit): dst needs kTinyEntrySlots.
-constexpr int kTinyEntrySlots = kTinyMaxSamples + 4;
+// in the same order, to dst; returns their number. The lane kernels write a whole step's
+// entries (four in AVX2, eight in AVX-512) whatever their coverage (no jump per sample or
+// per hit): dst needs kTinyEntrySlots.
+constexpr int kTinyEntrySlots = kTinyMaxSamples + 8;
 using TinyEntriesFn = int (*)(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
                               int32_t item, int32_t rank, ABuffer::Raw* dst);
-TinyEntriesFn tiny_entries();           // AVX2 when the CPU has it, else the scalar loop
-TinyEntriesFn tiny_entries_baseline();  // through scan_tiny_triangle (tests compare the two)
-TinyEntriesFn tiny_entries_avx2();      // the AVX2 kernel alone; nullptr without AVX2 (benchmarks)
+TinyEntriesFn tiny_entries();           // the widest kernel this CPU runs: AVX-512, AVX2, else the scalar loop
+TinyEntriesFn tiny_entries_baseline();  // through scan_tiny_triangle (tests compare the kernels to it)
+TinyEntriesFn tiny_entries_avx2();      // the AVX2 kernel alone; nullptr without AVX2
+TinyEntriesFn tiny_entries_avx512();    // the AVX-512 kernel alone; nullptr without AVX-512 F/VL/DQ
 
 // The triangle's edges and depth plane as the rasterizer would set them up (false: seen
 // edge-on in an orthographic view, it covers no sample).

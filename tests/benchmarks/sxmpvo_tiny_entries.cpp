@@ -20,7 +20,8 @@ struct Kernel {
   vob::sxmpvo::TinyEntriesFn (*get)();
 };
 const Kernel kKernels[] = {{"scalar", &vob::sxmpvo::tiny_entries_baseline},
-                           {"avx2", &vob::sxmpvo::tiny_entries_avx2}};
+                           {"avx2", &vob::sxmpvo::tiny_entries_avx2},
+                           {"avx512", &vob::sxmpvo::tiny_entries_avx512}};
 
 struct TinyFace {
   vob::Vec3 v[3];
@@ -88,7 +89,7 @@ void BM_TinyEntries(benchmark::State& state) {
       static_cast<double>(faces.size()),
       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
-BENCHMARK(BM_TinyEntries)->ArgsProduct({{0, 1}, {0, 4}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TinyEntries)->ArgsProduct({{0, 1, 2}, {0, 4}})->Unit(benchmark::kMillisecond);
 
 // ABuffer::order over every PIX list of the tiny faces' entries (ranks: the faces by
 // centroid distance, as phase II gives them), with the lanes (lists up to 16 entries

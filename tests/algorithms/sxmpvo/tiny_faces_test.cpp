@@ -53,9 +53,12 @@ Hits by_tiny_path(const SampleFrame& f, const Vec3* v, bool& taken, SampleRect& 
   const int s = phase1_sign(f, v);
   if (taken && s != 0) {
     sxmpvo::scan_tiny_triangle(f, v, s, box, [&](int x, int y, double t) { h.emplace_back(x, y, t); });
-    // SXMPVO's entries (AVX2 where the CPU has it, and the scalar loop): the same samples,
+    // SXMPVO's entries (every kernel this CPU can run: AVX-512, AVX2, the scalar loop; SXMPVO
+    // takes the first): the same samples,
     // in scan order, with the same t bits, item, pixel and rank.
-    for (const sxmpvo::TinyEntriesFn fn : {sxmpvo::tiny_entries(), sxmpvo::tiny_entries_baseline()}) {
+    for (const sxmpvo::TinyEntriesFn fn : {sxmpvo::tiny_entries_avx512(), sxmpvo::tiny_entries_avx2(),
+                                           sxmpvo::tiny_entries_baseline()}) {
+      if (!fn) continue;  // a kernel this CPU cannot run
       sxmpvo::ABuffer::Raw e[sxmpvo::kTinyEntrySlots];
       const int n = fn(f, v, s, box, 17, 5, e);
       EXPECT_EQ(n, static_cast<int>(h.size()));
