@@ -238,30 +238,54 @@ __attribute__((target("avx512f,avx512vl,avx512dq,popcnt"), always_inline)) inlin
   return __builtin_popcount(inside);
 }
 
-// The box's samples in eight lanes: boxes up to four samples wide two rows a step (lanes
-// 0-3 row sy, 4-7 row sy + 1), wider ones eight columns of a row a step.
+// A box at most W samples wide (W = 2 or 4), 8 / W rows a step: lane j is column j % W of
+// row j / W, so the lanes' order is the scan's.
+template <bool kOrtho, int W>
+__attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) inline int narrow_box(
+    const SampleFrame& fr, const Step512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
+  constexpr int R = 8 / W;
+  const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
+  const __m512i col = W == 2 ? _mm512_setr_epi64(0, 1, 0, 1, 0, 1, 0, 1) : _mm512_setr_epi64(0, 1, 2, 3, 0, 1, 2, 3);
+  const __m512i row = W == 2 ? _mm512_setr_epi64(0, 0, 1, 1, 2, 2, 3, 3) : _mm512_setr_epi64(0, 0, 0, 0, 1, 1, 1, 1);
+  // Column terms of the box's first four columns (padded past the last column), by lane.
+  const __m512d bx = _mm512_permutexvar_pd(col, _mm512_castpd256_pd512(_mm256_loadu_pd(fr.col_x() + box.x0)));
+  const __m512d by = _mm512_permutexvar_pd(col, _mm512_castpd256_pd512(_mm256_loadu_pd(fr.col_y() + box.x0)));
+  const __m512d bz = _mm512_permutexvar_pd(col, _mm512_castpd256_pd512(_mm256_loadu_pd(fr.col_z() + box.x0)));
+  const __m256i offsets = _mm256_add_epi32(_mm256_mullo_epi32(_mm512_cvtepi64_epi32(row), _mm256_set1_epi32(cols)),
+                                           _mm512_cvtepi64_epi32(col));
+  const unsigned row_lanes = (1u << w) - 1;
+  int n = 0;
+  for (int sy = box.y0; sy <= box.y1; sy += R) {
+    Vec3 r[4];
+    unsigned valid = 0;
+    for (int j = 0; j < R; ++j) {
+      const bool in = sy + j <= box.y1;
+      r[j] = fr.row_term(in ? sy + j : sy);  // a row past the box: masked off
+      valid |= in ? row_lanes << (j * W) : 0;
+    }
+    if (R == 2) r[2] = r[3] = r[0];
+    const __m512d rx = _mm512_permutexvar_pd(row, _mm512_castpd256_pd512(_mm256_setr_pd(r[0].x, r[1].x, r[2].x, r[3].x)));
+    const __m512d ry = _mm512_permutexvar_pd(row, _mm512_castpd256_pd512(_mm256_setr_pd(r[0].y, r[1].y, r[2].y, r[3].y)));
+    const __m512d rz = _mm512_permutexvar_pd(row, _mm512_castpd256_pd512(_mm256_setr_pd(r[0].z, r[1].z, r[2].z, r[3].z)));
+    n += step_entries<kOrtho>(k, _mm512_add_pd(rx, bx), _mm512_add_pd(ry, by), _mm512_add_pd(rz, bz),
+                              static_cast<__mmask8>(valid),
+                              _mm256_add_epi32(_mm256_set1_epi32(sy * cols + box.x0), offsets), item, rank, dst + n);
+  }
+  return n;
+}
+
+// The box's samples in eight lanes: boxes up to two samples wide four rows a step, up to
+// four wide two rows a step, wider ones eight columns of a row a step.
 template <bool kOrtho>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"))) int entries_avx512(
     const SampleFrame& fr, const Step512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
   const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
   const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
   int n = 0;
-  if (w <= 4) {
-    const __m512d bx = twice(_mm256_loadu_pd(cx + box.x0));  // padded past the last column
-    const __m512d by = twice(_mm256_loadu_pd(cy + box.x0));
-    const __m512d bz = twice(_mm256_loadu_pd(cz + box.x0));
-    const unsigned row_lanes = (1u << w) - 1;
-    const __m256i offsets = _mm256_setr_epi32(0, 1, 2, 3, cols, cols + 1, cols + 2, cols + 3);
-    for (int sy = box.y0; sy <= box.y1; sy += 2) {
-      const bool two = sy < box.y1;
-      const Vec3 r0 = fr.row_term(sy), r1 = two ? fr.row_term(sy + 1) : r0;
-      const __m512d rx = _mm512_mask_blend_pd(0xF0, _mm512_set1_pd(r0.x), _mm512_set1_pd(r1.x));
-      const __m512d ry = _mm512_mask_blend_pd(0xF0, _mm512_set1_pd(r0.y), _mm512_set1_pd(r1.y));
-      const __m512d rz = _mm512_mask_blend_pd(0xF0, _mm512_set1_pd(r0.z), _mm512_set1_pd(r1.z));
-      const __mmask8 valid = static_cast<__mmask8>(two ? row_lanes | row_lanes << 4 : row_lanes);
-      n += step_entries<kOrtho>(k, _mm512_add_pd(rx, bx), _mm512_add_pd(ry, by), _mm512_add_pd(rz, bz), valid,
-                                _mm256_add_epi32(_mm256_set1_epi32(sy * cols + box.x0), offsets), item, rank, dst + n);
-    }
+  if (w <= 2) {
+    n = narrow_box<kOrtho, 2>(fr, k, box, item, rank, dst);
+  } else if (w <= 4) {
+    n = narrow_box<kOrtho, 4>(fr, k, box, item, rank, dst);
   } else {
     const __m256i offsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     for (int sy = box.y0; sy <= box.y1; ++sy) {
