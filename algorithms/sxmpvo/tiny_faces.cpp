@@ -6,6 +6,7 @@
 #include "harness/cpu_features.h"
 #include "harness/raster/edge_lanes_avx2.h"
 #include "harness/raster/row_step_avx2.h"
+#include "harness/raster/row_step_avx512.h"
 #include "harness/raster/sample_centres.h"
 
 namespace vob::sxmpvo {
@@ -132,70 +133,6 @@ int entries_avx2_any(const SampleFrame& fr, const Vec3* v, int phase1_sign, cons
 
 namespace {
 
-// The row kernel's step (row_step_avx2.h) in eight lanes: per lane the same operations in
-// the same order, so the same coverage and t bits.
-struct Step512 {
-  __m512d mx[3], my[3], mz[3], c[3];
-  __mmask8 disown[3];
-  __m512d nx, ny, nz, d, num, inv_nf;
-
-  __attribute__((target("avx512f,avx512vl,avx512dq"))) Step512(const RowEdges& e, const RowDepth& p) {
-    for (int i = 0; i < 3; ++i) {
-      mx[i] = _mm512_set1_pd(e.mx[i]), my[i] = _mm512_set1_pd(e.my[i]), mz[i] = _mm512_set1_pd(e.mz[i]);
-      c[i] = _mm512_set1_pd(e.c[i]);
-      disown[i] = e.own[i] ? 0 : 0xFF;
-    }
-    nx = _mm512_set1_pd(p.n.x), ny = _mm512_set1_pd(p.n.y), nz = _mm512_set1_pd(p.n.z);
-    d = _mm512_set1_pd(p.d), num = _mm512_set1_pd(p.num), inv_nf = _mm512_set1_pd(p.inv_nf);
-  }
-
-  // From the edges in lanes (edge_lanes_avx2.h) without a trip through memory: lane i of
-  // each edge vector broadcast; `own` bit i: edge i owns its exact zeros.
-  __attribute__((target("avx512f,avx512vl,avx512dq,avx2"), always_inline)) Step512(const avx2::EdgeLanes& l, int own,
-                                                                                  const RowDepth& p) {
-    for (int i = 0; i < 3; ++i) {
-      const __m512i lane = _mm512_set1_epi64(i);
-      mx[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.mx));
-      my[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.my));
-      mz[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.mz));
-      c[i] = _mm512_permutexvar_pd(lane, _mm512_castpd256_pd512(l.c));
-      disown[i] = (own >> i) & 1 ? 0 : 0xFF;
-    }
-    nx = _mm512_set1_pd(p.n.x), ny = _mm512_set1_pd(p.n.y), nz = _mm512_set1_pd(p.n.z);
-    d = _mm512_set1_pd(p.d), num = _mm512_set1_pd(p.num), inv_nf = _mm512_set1_pd(p.inv_nf);
-  }
-
-  // Lanes `valid` of sample directions (X, Y, Z): the covered ones, and in `inside` those
-  // the edge tests accept (t's tests aside).
-  template <bool kOrtho>
-  __attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) __mmask8 step(__m512d X, __m512d Y, __m512d Z,
-                                                                                    __mmask8 valid, __m512d& t,
-                                                                                    __mmask8& inside) const {
-    const __m512d zero = _mm512_setzero_pd();
-    __mmask8 in = valid;
-    for (int i = 0; i < 3; ++i) {
-      const __m512d dotm = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(mx[i], X), _mm512_mul_pd(my[i], Y)),
-                                         _mm512_mul_pd(mz[i], Z));
-      const __m512d v = _mm512_add_pd(c[i], dotm);
-      in &= ~_mm512_cmp_pd_mask(v, zero, _CMP_LT_OQ);
-      in &= ~(_mm512_cmp_pd_mask(v, zero, _CMP_EQ_OQ) & disown[i]);
-    }
-    const __m512d nX = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(nx, X), _mm512_mul_pd(ny, Y)), _mm512_mul_pd(nz, Z));
-    __mmask8 ok;
-    if (kOrtho) {
-      t = _mm512_mul_pd(_mm512_xor_pd(_mm512_add_pd(nX, d), _mm512_set1_pd(-0.0)), inv_nf);
-      ok = _mm512_cmp_pd_mask(t, zero, _CMP_GE_OQ);
-    } else {
-      const __m512d xx = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(X, X), _mm512_mul_pd(Y, Y)), _mm512_mul_pd(Z, Z));
-      t = _mm512_mul_pd(_mm512_div_pd(num, nX), _mm512_sqrt_pd(xx));
-      ok = _mm512_cmp_pd_mask(t, zero, _CMP_GT_OQ);
-    }
-    ok &= _mm512_cmp_pd_mask(_mm512_abs_pd(t), _mm512_set1_pd(HUGE_VAL), _CMP_LT_OQ);  // finite
-    inside = in;
-    return in & ok;
-  }
-};
-
 // Eight entries {t, item, pixel, rank} from the lanes of mask m (in lane order) at dst,
 // whatever m holds: three 64-byte stores of the 24-byte entries.
 __attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) inline void write8(__m512d t, __m256i pixel,
@@ -225,7 +162,7 @@ __attribute__((target("avx512f"), always_inline)) inline __m512d twice(__m256d v
 // One step's entries at dst; returns their number.
 template <bool kOrtho>
 __attribute__((target("avx512f,avx512vl,avx512dq,popcnt"), always_inline)) inline int step_entries(
-    const Step512& k, __m512d X, __m512d Y, __m512d Z, __mmask8 valid, __m256i pixel, int32_t item, int32_t rank,
+    const RowStepAvx512& k, __m512d X, __m512d Y, __m512d Z, __mmask8 valid, __m256i pixel, int32_t item, int32_t rank,
     ABuffer::Raw* dst) {
   __m512d t;
   __mmask8 inside;
@@ -242,7 +179,7 @@ __attribute__((target("avx512f,avx512vl,avx512dq,popcnt"), always_inline)) inlin
 // row j / W, so the lanes' order is the scan's.
 template <bool kOrtho, int W>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) inline int narrow_box(
-    const SampleFrame& fr, const Step512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
+    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
   constexpr int R = 8 / W;
   const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
   const __m512i col = W == 2 ? _mm512_setr_epi64(0, 1, 0, 1, 0, 1, 0, 1) : _mm512_setr_epi64(0, 1, 2, 3, 0, 1, 2, 3);
@@ -278,7 +215,7 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) 
 // four wide two rows a step, wider ones eight columns of a row a step.
 template <bool kOrtho>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"))) int entries_avx512(
-    const SampleFrame& fr, const Step512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
+    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
   const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
   const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
   int n = 0;
@@ -310,16 +247,11 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2"))) int entries_avx512_any
   RowDepth depth;
   if (!detail::depth_plane(fr, v, depth)) return 0;
   const avx2::EdgeLanes l = avx2::edge_lanes(fr, v, -phase1_sign);  // facing as tiny_triangle_rows
-  const Step512 k(l, avx2::owns_zero(fr, l), depth);
+  const RowStepAvx512 k(l, avx2::owns_zero(fr, l), depth);
   return fr.ortho() ? entries_avx512<true>(fr, k, box, item, rank, dst)
                     : entries_avx512<false>(fr, k, box, item, rank, dst);
 }
 
-bool cpu_has_avx512() {
-  static const bool yes = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-                          __builtin_cpu_supports("avx512dq") && cpu_has_avx2();
-  return yes;
-}
 
 }  // namespace
 

@@ -2,7 +2,8 @@
 // parameter t at each. PolygonRaster::scan and SXMPVO's tiny-face path both spend most of
 // their time here (one test of three edge functions and one depth per sample).
 //
-// The AVX2 kernel takes four samples a step with the very operations of the scalar loop,
+// The AVX2 kernel takes four samples a step (AVX-512: two runs of up to four, eight lanes)
+// with the very operations of the scalar loop,
 // each lane rounded as the scalar double would be (no multiply-adds: the file is built with
 // -ffp-contract=off and the kernel's target has no FMA), so both give the same samples and
 // the same t bits (tests/harness/raster/row_coverage_test.cpp), and a shared edge stays
@@ -36,11 +37,11 @@ struct RowSpan {
 constexpr int kRowChunk = 64;
 
 // Where the kernel writes its hits: hit j is sample (sx[j], sy[j]) at t[j]. Room for
-// kRowHitCap hits plus the kernel's slack (it stores four lanes at a time).
+// kRowHitCap hits plus the kernels' slack (they store four or eight lanes at a time).
 constexpr int kRowHitCap = 256;
 struct RowHits {
-  int sx[kRowHitCap + 4], sy[kRowHitCap + 4];
-  double t[kRowHitCap + 4];
+  int sx[kRowHitCap + 8], sy[kRowHitCap + 8];
+  double t[kRowHitCap + 8];
 };
 
 // Writes the covered samples of the spans (their lengths summing to at most kRowHitCap) to
@@ -48,8 +49,10 @@ struct RowHits {
 using RowCoverageFn = int (*)(const SampleFrame& frame, const RowEdges& e, const RowDepth& depth,
                               const RowSpan* spans, int count, RowHits& hits);
 
-RowCoverageFn row_coverage();           // AVX2 when the CPU has it, else the baseline loop
-RowCoverageFn row_coverage_baseline();  // the scalar loop (tests compare the two)
+RowCoverageFn row_coverage();           // the widest kernel this CPU runs: AVX-512, AVX2, else the scalar loop
+RowCoverageFn row_coverage_baseline();  // the scalar loop (tests compare the kernels to it)
+RowCoverageFn row_coverage_avx2();      // the AVX2 kernel alone; nullptr without AVX2
+RowCoverageFn row_coverage_avx512();    // the AVX-512 kernel alone; nullptr without AVX-512 F/VL/DQ
 
 // Collects spans and calls emit(sx, sy, t) for every covered sample, a batch of spans at a
 // time (one kernel call, one setup, per batch rather than per row); an emit taking

@@ -36,15 +36,21 @@ void compare(const SampleFrame& f, const Vec3* v, Tally& tally) {
   if (!PolygonRaster::depth_plane(f, v, 3, p)) return;
   const RowEdges re = edges_of(e);
   const RowDepth rd{p.plane.n, p.plane.d, p.num, p.inv_nf};
-  const RowCoverageFn base = row_coverage_baseline(), fast = row_coverage();
+  const RowCoverageFn base = row_coverage_baseline();
   RowHits a, b;
+  for (const RowCoverageFn fast : {row_coverage_avx2(), row_coverage_avx512()}) {
+    if (!fast) continue;  // a kernel this CPU cannot run
   for (int sy = 0; sy < f.rows(); ++sy)
     for (int x0 = 0; x0 < f.cols(); x0 += 5)
       for (int len : {1, 2, 3, 4, 5, 7, 8, 13, kRowChunk}) {
         const int x1 = std::min(f.cols() - 1, x0 + len - 1);
-        // The span, and below it a second one of the next row: several spans in one call.
-        const RowSpan spans[2] = {{sy, x0, x1}, {(sy + 1) % f.rows(), x0, x1}};
-        const int na = base(f, re, rd, spans, 2, a), nb = fast(f, re, rd, spans, 2, b);
+        // The span, and below it spans of the next rows, one shorter: several spans of
+        // several lengths in one call (one to three, so that the AVX-512 kernel's pairs of
+        // runs also end with a run alone).
+        const int x2 = std::max(x0, x1 - 1);
+        const RowSpan spans[3] = {{sy, x0, x1}, {(sy + 1) % f.rows(), x0, x2}, {(sy + 2) % f.rows(), x2, x1}};
+        const int count = 1 + (sy + x0 / 5) % 3;
+        const int na = base(f, re, rd, spans, count, a), nb = fast(f, re, rd, spans, count, b);
         ++tally.rows;
         ASSERT_EQ(na, nb) << "row " << sy << " [" << x0 << ", " << x1 << "]";
         for (int j = 0; j < na; ++j) {
@@ -63,6 +69,7 @@ void compare(const SampleFrame& f, const Vec3* v, Tally& tally) {
             }
         }
       }
+  }
 }
 
 void run(bool ortho, Tally& tally) {
@@ -89,6 +96,7 @@ void run(bool ortho, Tally& tally) {
 
 }  // namespace
 
+// Every lane kernel this CPU runs (AVX2, AVX-512) against the scalar loop.
 TEST(RowCoverage, Avx2KernelMatchesTheScalarLoopBitForBit) {
   if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2: only the scalar loop runs";
   for (bool ortho : {false, true}) {
