@@ -129,10 +129,6 @@ int entries_avx2_any(const SampleFrame& fr, const Vec3* v, int phase1_sign, cons
                     : entries_avx2<false>(fr, e, depth, box, item, rank, dst);
 }
 
-}  // namespace
-
-namespace {
-
 // Eight entries {t, item, pixel, rank} from the lanes of mask m (in lane order) at dst,
 // whatever m holds: three 64-byte stores of the 24-byte entries.
 __attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) inline void write8(__m512d t, __m256i pixel,
@@ -151,12 +147,6 @@ __attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) inline void 
   _mm512_storeu_pd(out, _mm512_mask_blend_pd(0x24, _mm512_permutex2var_pd(ts, i0, w1), w2));
   _mm512_storeu_pd(out + 8, _mm512_mask_blend_pd(0x49, _mm512_permutex2var_pd(ts, i1, w1), w2));
   _mm512_storeu_pd(out + 16, _mm512_mask_blend_pd(0x92, _mm512_permutex2var_pd(ts, i2, w1), w2));
-}
-
-// Four lanes repeated in the upper four.
-__attribute__((target("avx512f"), always_inline)) inline __m512d twice(__m256d v) {
-  const __m512d z = _mm512_castpd256_pd512(v);
-  return _mm512_shuffle_f64x2(z, z, 0x44);
 }
 
 // One step's entries at dst; returns their number.
@@ -251,7 +241,6 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2"))) int entries_avx512_any
   return fr.ortho() ? entries_avx512<true>(fr, k, box, item, rank, dst)
                     : entries_avx512<false>(fr, k, box, item, rank, dst);
 }
-
 
 }  // namespace
 
