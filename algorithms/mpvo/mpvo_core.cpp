@@ -300,6 +300,8 @@ void MpvoCore::dfs_walk(int32_t root, Ordering& out) {
     if (next == 0) {
       // First look at c: ask for what the search reads at each behind neighbour (its state,
       // mask and slots), so that the misses of the next levels overlap instead of queueing.
+      // A cell with extra relations reads its span once its faces' searches are done.
+      if (kExtra && xspan && (state_[c] & kHasExtra)) __builtin_prefetch(&xspan[c]);
       for (unsigned bits = behind[c]; bits; bits &= bits - 1) {
         const int32_t nb = row[__builtin_ctz(bits)];
         __builtin_prefetch(&state_[nb], 1);
