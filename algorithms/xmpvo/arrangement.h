@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "algorithms/xmpvo/projection.h"
+#include "harness/sort/radix_sort.h"
 
 namespace vob::xmpvo {
 
@@ -88,6 +89,10 @@ struct Arrangement {
   std::vector<std::array<int32_t, 2>> swap_;  // per edge, swap_faces()
   std::vector<uint8_t> unswept_;              // per edge, unswept()
   BucketGrid grid_;       // of the edges
+  // The edges by their boxes' left sides (build()), with the sort's keys and buffers.
+  std::vector<int32_t> by_left_;
+  std::vector<double> left_key_;
+  Radix64Scratch left_sort_;
   Box edge_box(const Projection& proj, int32_t e) const;
   void build_edges(const ExteriorFaces& ext, const Projection& proj);
   void mark_edges(const Projection& proj);  // swap_ and unswept_

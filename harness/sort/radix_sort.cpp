@@ -50,17 +50,19 @@ void radix_sort_by_key(std::vector<float>& keys, std::vector<int32_t>& values, s
   }
 }
 
-void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values) {
+void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values, Radix64Scratch& scratch) {
   const size_t n = keys.size();
-  std::vector<uint64_t> k(n), k2(n);
-  std::vector<int32_t> v2(n);
+  std::vector<uint64_t>&k = scratch.keys, &k2 = scratch.keys2;
+  std::vector<int32_t>& v2 = scratch.values2;
+  k.resize(n), k2.resize(n), v2.resize(n);
   for (size_t i = 0; i < n; ++i) {
     uint64_t u;
     std::memcpy(&u, &keys[i], 8);
     k[i] = (u & 0x8000000000000000ull) ? ~u : (u | 0x8000000000000000ull);
   }
   constexpr int kBits = 11, kPasses = 6, kRadix = 1 << kBits;
-  std::vector<uint32_t> hist(size_t(kPasses) * kRadix, 0);
+  std::vector<uint32_t>& hist = scratch.hist;
+  hist.assign(size_t(kPasses) * kRadix, 0);
   for (size_t i = 0; i < n; ++i)
     for (int p = 0; p < kPasses; ++p) ++hist[size_t(p) * kRadix + ((k[i] >> (p * kBits)) & (kRadix - 1))];
   for (int p = 0; p < kPasses; ++p) {
@@ -85,6 +87,11 @@ void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values
     u = (u & 0x8000000000000000ull) ? (u & 0x7fffffffffffffffull) : ~u;
     std::memcpy(&keys[i], &u, 8);
   }
+}
+
+void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values) {
+  Radix64Scratch scratch;
+  radix_sort_by_key64(keys, values, scratch);
 }
 
 std::vector<int32_t> radix_argsort_descending(const std::vector<float>& keys) {

@@ -45,8 +45,21 @@ class KeySort {
   std::vector<uint64_t> scratch_;
 };
 
+// radix_sort_by_key64's buffers, for callers that sort every frame: kept, they are neither
+// allocated nor faulted in again.
+struct Radix64Scratch {
+  std::vector<uint64_t> keys, keys2;
+  std::vector<int32_t> values2;
+  std::vector<uint32_t> hist;
+  size_t bytes() const {
+    return (keys.capacity() + keys2.capacity()) * 8 + (values2.capacity() + hist.capacity()) * 4;
+  }
+};
+
 // Double keys (order-preserving 64-bit transform, six 11-bit passes): for references that
-// must not lose ties to float rounding. Sorts `values` by ascending `keys`, stable.
+// must not lose ties to float rounding. Sorts `values` by ascending `keys`, stable (-0.0
+// sorts before +0.0).
+void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values, Radix64Scratch& scratch);
 void radix_sort_by_key64(std::vector<double>& keys, std::vector<int32_t>& values);
 
 // Convenience: the permutation of [0, keys.size()) sorted by descending key.
