@@ -457,7 +457,7 @@ size_t Arrangement::bytes() const {
          vertices.capacity() * sizeof(ArrVertex) + box_.capacity() * sizeof(Box) + swap_.capacity() * 8 + unswept_.capacity() +
          all_edges_.capacity() * 8 + (all_face_off_.capacity() + all_faces_.capacity()) * 4 +
          all_face_dir_.capacity() + point_on_line.capacity() +  // set_faces' lists, held for every view
-         by_left_.capacity() * 4 + left_key_.capacity() * 8 + left_sort_.bytes();
+         by_left_.capacity() * 4 + left_key_.capacity() * 8 + left_sort_.bytes() + grid_.bytes();
 }
 
 }  // namespace vob::xmpvo

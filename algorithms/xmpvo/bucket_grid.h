@@ -2,6 +2,7 @@
 // items listed per bucket in CSR form from their projected boxes.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -28,28 +29,38 @@ struct BucketGrid {
   template <class BoxOf>
   void fill(const std::vector<int32_t>& items, BoxOf box_of, std::vector<int32_t>& off,
             std::vector<int32_t>& out) const {
+    // Each item's bucket range once (four divisions), kept for the second pass; the grid's
+    // sizes in locals, which the stores to `off` and `out` could otherwise alias.
+    const int w = gw;
     off.assign(buckets() + 1, 0);
-    for (int pass = 0; pass < 2; ++pass) {
-      for (int32_t it : items) {
-        const Box bx = box_of(it);
-        const int c0 = col(bx.x0), c1 = col(bx.x1), r0 = row(bx.y0), r1 = row(bx.y1);
-        for (int r = r0; r <= r1; ++r)
-          for (int c = c0; c <= c1; ++c) {
-            const size_t cell = static_cast<size_t>(r) * gw + c;
-            if (pass == 0) ++off[cell + 1];
-            else out[off[cell]++] = it;
-          }
-      }
-      if (pass == 0) {
-        for (size_t c = 1; c < off.size(); ++c) off[c] += off[c - 1];
-        out.resize(off.back());
-      } else {
-        // The fill advanced each start to the next bucket's start: shift back.
-        for (size_t c = off.size() - 1; c > 0; --c) off[c] = off[c - 1];
-        off[0] = 0;
-      }
+    spans_.resize(items.size());
+    int32_t* count = off.data() + 1;
+    for (size_t i = 0; i < items.size(); ++i) {
+      const Box bx = box_of(items[i]);
+      const std::array<int32_t, 4> s{col(bx.x0), col(bx.x1), row(bx.y0), row(bx.y1)};
+      spans_[i] = s;
+      for (int r = s[2]; r <= s[3]; ++r)
+        for (int c = s[0]; c <= s[1]; ++c) ++count[static_cast<size_t>(r) * w + c];
     }
+    for (size_t c = 1; c < off.size(); ++c) off[c] += off[c - 1];
+    out.resize(off.back());
+    int32_t* start = off.data();
+    int32_t* dst = out.data();
+    for (size_t i = 0; i < items.size(); ++i) {
+      const std::array<int32_t, 4> s = spans_[i];
+      const int32_t it = items[i];
+      for (int r = s[2]; r <= s[3]; ++r)
+        for (int c = s[0]; c <= s[1]; ++c) dst[start[static_cast<size_t>(r) * w + c]++] = it;
+    }
+    // The fill advanced each start to the next bucket's start: shift back.
+    for (size_t c = off.size() - 1; c > 0; --c) off[c] = off[c - 1];
+    off[0] = 0;
   }
+  size_t bytes() const { return spans_.capacity() * sizeof(spans_[0]); }
+
+ private:
+  // fill()'s bucket range per item, kept from call to call (not the grid's state).
+  mutable std::vector<std::array<int32_t, 4>> spans_;
 };
 
 }  // namespace vob::xmpvo

@@ -92,7 +92,7 @@ void Projection::run(const ExteriorFaces& ext, const Camera& view, Signs& signs,
 
 size_t Projection::bytes() const {
   return facing.capacity() + kept.capacity() * 4 + point_used.capacity() + uv.capacity() * 16 +
-         face_box.capacity() * sizeof(Box) + (bucket_off.capacity() + bucket_faces.capacity()) * 4;
+         face_box.capacity() * sizeof(Box) + (bucket_off.capacity() + bucket_faces.capacity()) * 4 + grid.bytes();
 }
 
 }  // namespace vob::xmpvo
