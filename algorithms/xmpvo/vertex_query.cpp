@@ -229,6 +229,17 @@ void Worker::gather(const ArrVertex& v) {
   ++gather_;
   const BucketGrid& grid = proj.grid;
   const int c0 = grid.col(v.box.x0), c1 = grid.col(v.box.x1), r0 = grid.row(v.box.y0), r1 = grid.row(v.box.y1);
+  // One bucket (most queries): it lists each face once, so no stamps.
+  if (c0 == c1 && r0 == r1) {
+    const size_t cell = static_cast<size_t>(r0) * grid.gw + c0;
+    const int32_t x1 = proj.bucket_off[cell + 1];
+    const int32_t* faces = proj.bucket_faces.data();
+    for (int32_t x = proj.bucket_off[cell]; x < x1; ++x) {
+      const int32_t f = faces[x];
+      if (proj.face_box[f].overlaps(v.box)) classify(v, f);
+    }
+    return;
+  }
   for (int r = r0; r <= r1; ++r)
     for (int c = c0; c <= c1; ++c) {
       const size_t cell = static_cast<size_t>(r) * grid.gw + c;
