@@ -56,7 +56,7 @@ class Worker {
   // The view start_view() last bound (QueryScratch's count of views).
   int64_t view_serial_ = -1;
   size_t bytes() const {
-    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() +
+    return (inside_.capacity() + rays_.capacity() + sector_.capacity() + face_stamp_.capacity() + hits_.capacity() +
             key_stamp_.capacity() + touch_stamp_.capacity() + list_.capacity() + start_inside_.capacity() +
             wedge_ray_.capacity()) * 4 + ray_side_.capacity() + before_.capacity() +
            start_wedges_.capacity() * sizeof(Wedge) + plane_memo_key_.capacity() * 9 +
@@ -132,6 +132,7 @@ class Worker {
   int touch(int32_t f);
 
   std::vector<int32_t> inside_, rays_, sector_, face_stamp_, key_stamp_;
+  std::vector<int32_t> hits_;  // gather(): the bucket's faces whose boxes overlap the vertex's
   // emit_sectors' memos: per wedge the places of its rays in rays_; per pair of rays
   // their side, per pair of wedges before() (2: not asked yet).
   std::vector<int32_t> wedge_ray_;

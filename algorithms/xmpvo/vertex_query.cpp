@@ -233,11 +233,20 @@ void Worker::gather(const ArrVertex& v) {
   if (c0 == c1 && r0 == r1) {
     const size_t cell = static_cast<size_t>(r0) * grid.gw + c0;
     const int32_t x1 = proj.bucket_off[cell + 1];
+    // The faces whose boxes overlap v's first, with no branch on the test (about two in
+    // three pass, unpredictably), then classified.
     const int32_t* faces = proj.bucket_faces.data();
+    const Box* box = proj.face_box.data();
+    const Box q = v.box;
+    hits_.resize(static_cast<size_t>(x1 - proj.bucket_off[cell]));
+    size_t m = 0;
     for (int32_t x = proj.bucket_off[cell]; x < x1; ++x) {
       const int32_t f = faces[x];
-      if (proj.face_box[f].overlaps(v.box)) classify(v, f);
+      const Box& b = box[f];
+      hits_[m] = f;
+      m += (b.x0 <= q.x1) & (q.x0 <= b.x1) & (b.y0 <= q.y1) & (q.y0 <= b.y1);
     }
+    for (size_t k = 0; k < m; ++k) classify(v, hits_[k]);
     return;
   }
   for (int r = r0; r <= r1; ++r)
