@@ -30,7 +30,7 @@ struct BucketGrid {
   void fill(const std::vector<int32_t>& items, BoxOf box_of, std::vector<int32_t>& off,
             std::vector<int32_t>& out) const {
     // Each item's bucket range once (four divisions), kept for the second pass; the grid's
-    // sizes in locals, which the stores to `off` and `out` could otherwise alias.
+    // width in a local, which the stores to `off` and `out` could otherwise alias.
     const int w = gw;
     off.assign(buckets() + 1, 0);
     spans_.resize(items.size());
