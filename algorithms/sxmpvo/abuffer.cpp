@@ -13,8 +13,9 @@ namespace {
 constexpr int kLanes = 16;  // longest list ordered in AVX2 lanes
 }  // namespace
 
-void ABuffer::reset(int64_t pixels) {
+void ABuffer::reset(int64_t pixels, int64_t first) {
   pixels_ = pixels;
+  first_ = first;
   raw_.clear();
   batches_.clear();
   entries_ = 0;
@@ -30,9 +31,10 @@ void ABuffer::gather() {
   // start: no cursor array to copy. A list comes out in reverse recording order, which
   // order() does not see (it replays the arrivals by rank).
   int32_t* end = offsets_.data();  // zero since reset(): gather() runs once a frame
+  const int64_t first = first_;
   uint32_t rank_bits = 0;
   each_raw([&](const Raw& r) {
-    ++end[r.pixel];
+    ++end[r.pixel - first];
     rank_bits |= static_cast<uint32_t>(r.rank);
   });
   ranks_fit_ = rank_bits < (1u << 27);
@@ -48,9 +50,9 @@ void ABuffer::gather() {
   const auto scatter = [&](const std::vector<Raw>& raw) {
     const size_t n = raw.size();
     for (size_t i = 0; i < n; ++i) {
-      if (i + kDist < n) __builtin_prefetch(&list[end[raw[i + kDist].pixel] - 1], 1);
+      if (i + kDist < n) __builtin_prefetch(&list[end[raw[i + kDist].pixel - first] - 1], 1);
       const Raw& r = raw[i];
-      list[--end[r.pixel]] = {r.t, r.item, r.rank};
+      list[--end[r.pixel - first]] = {r.t, r.item, r.rank};
     }
   };
   scatter(raw_);

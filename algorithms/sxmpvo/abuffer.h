@@ -34,8 +34,10 @@ struct PixEntry {
 // order() reads).
 class ABuffer {
  public:
-  // Empties every list (keeps the storage) for `pixels` pixels.
-  void reset(int64_t pixels);
+  // Empties every list (keeps the storage) for `pixels` pixels: pixels [first, first +
+  // pixels) of the frame (entries name frame pixels; head(), begin() and end() take the
+  // pixel's place in that range).
+  void reset(int64_t pixels, int64_t first = 0);
   // An entry as it is recorded: depth, item, pixel, and its arrival rank (the rank of its
   // face in the sorted face order).
   struct Raw {
@@ -90,7 +92,7 @@ class ABuffer {
   }
 
  private:
-  int64_t pixels_ = 0;
+  int64_t pixels_ = 0, first_ = 0;
   template <class F>
   void each_raw(F&& f) const {  // every recorded entry: insert()ed, then appended batches
     for (const Raw& r : raw_) f(r);
@@ -178,8 +180,11 @@ struct PairStats {
 // drawn before B. Entries whose depths differ by at most `tie` may stand in either order
 // (faces that touch, a ray through a silhouette edge): when one breaks the alternation, the
 // next entry of the expected kind within the tie is moved up in its place.
-inline void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
-                   PnLists& pn, PairStats& stats) {
+// The pairs go to add(occluding, occluded), in the list's order; pairs of two faces of one
+// cell are counted and skipped.
+template <class AddPair>
+void for_each_pix_pair(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
+                       PairStats& stats, AddPair&& add) {
   if (abuf.head(pixel) < 0) return;
   // Read in place; copied to `scratch` only when a tie is reordered (rare).
   const PixEntry* e = abuf.begin(pixel);
@@ -215,13 +220,21 @@ inline void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::v
         if (occluding == occluded) {
           ++stats.self_pairs;
         } else {
-          pn.add(occluding, occluded);
+          add(occluding, occluded);
         }
       }
       occluded = -1;
       want_front = true;
     }
   }
+}
+
+// The same pairs recorded in `pn` at once.
+inline void pair_pix_list(const ABuffer& abuf, int64_t pixel, double tie, std::vector<PixEntry>& scratch,
+                          PnLists& pn, PairStats& stats) {
+  for_each_pix_pair(abuf, pixel, tie, scratch, stats, [&](int32_t occluding, int32_t occluded) {
+    pn.add(occluding, occluded);
+  });
 }
 
 

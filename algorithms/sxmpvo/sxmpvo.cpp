@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "algorithms/mpvo/mpvo_core.h"
@@ -66,14 +68,11 @@ class SxmpvoOrderer final : public Orderer {
     core_.add_counters(out);
     auto& k = out.counters;
     k["exterior_faces"] = static_cast<double>(ext_->face.size());
-    int64_t tiny = 0;
-    for (int64_t t : tiny_) tiny += t;
-    k["tiny_path_faces"] = static_cast<double>(tiny);
-    k["abuffer_entries"] = static_cast<double>(abuf_.entries());
-    k["head_insertions"] = static_cast<double>(abuf_.head_insertions());
-    k["head_insertion_rate"] =
-        abuf_.entries() ? static_cast<double>(abuf_.head_insertions()) / abuf_.entries() : 1.0;
-    k["insertion_walk_steps"] = static_cast<double>(abuf_.walk_steps());
+    k["tiny_path_faces"] = static_cast<double>(tiny_);
+    k["abuffer_entries"] = static_cast<double>(entries_);
+    k["head_insertions"] = static_cast<double>(head_insertions_);
+    k["head_insertion_rate"] = entries_ ? static_cast<double>(head_insertions_) / entries_ : 1.0;
+    k["insertion_walk_steps"] = static_cast<double>(walk_steps_);
     k["pix_lists"] = static_cast<double>(stats.lists);
     k["max_pix_list"] = static_cast<double>(stats.max_list);
     k["pn_pairs"] = static_cast<double>(stats.pairs);
@@ -94,17 +93,21 @@ class SxmpvoOrderer final : public Orderer {
   }
 
   size_t bytes() const override {
-    return core_.bytes() + abuffer_bytes() + pn_.bytes() + extra_.bytes() + exterior_bytes() +
-           scratch_.capacity() * sizeof(PixEntry);
+    return core_.bytes() + abuffer_bytes() + pn_.bytes() + extra_.bytes() + exterior_bytes();
   }
 
  private:
   using PixEntry = sxmpvo::PixEntry;
   using PairStats = sxmpvo::PairStats;
 
-  size_t abuffer_bytes() const {  // the lists and the scan's batches
-    size_t n = abuf_.bytes();
-    for (const auto& batch : batches_) n += batch.capacity() * sizeof(sxmpvo::ABuffer::Raw);
+  size_t abuffer_bytes() const {  // the bands: their faces, lists, entries and pairs
+    size_t n = band_faces_.capacity() * sizeof(BandFace) + band_offset_.capacity() * sizeof(int32_t);
+    for (const FaceRun& run : runs_)
+      n += run.faces.capacity() * sizeof(BandFace) + run.large.size() * sizeof(PolygonRaster) +
+           run.in_band.capacity() * sizeof(int32_t);
+    for (const BandResult& band : bands_) n += band.pairs.capacity() * sizeof(band.pairs[0]);
+    for (const BandScratch& s : band_scratch_)
+      n += s.abuf.bytes() + s.raw.capacity() * sizeof(sxmpvo::ABuffer::Raw) + s.scratch.capacity() * sizeof(PixEntry);
     return n;
   }
 
@@ -129,43 +132,54 @@ class SxmpvoOrderer final : public Orderer {
     for (size_t k = 0; k < b; ++k) rank_[sort_.ids[k]] = static_cast<int32_t>(k);
   }
 
-  void scan_and_pair(const Camera& view, PairStats& stats) {
-    const SampleFrame frame(view, 1);
-    const int cols = frame.cols();
-    abuf_.reset(frame.num_samples());
-    // Each boundary point is projected once, not once per face that has it.
-    const std::vector<Vec3>& points = ext_->points;
-    projected_.resize(points.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 8192),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                        frame.project_all(points.data() + r.begin(), r.size(), projected_.data() + r.begin());
-                      });
-    // Faces are scanned in storage order, where a face's points, corners and sign lie near
-    // the previous face's (in sorted order every face is a cache miss); each entry carries
-    // its face's rank in the sorted order, which the A-buffer replays as the arrival order.
-    // Runs of faces are scanned in parallel, each into its own batch: the ranks make the
-    // lists, counts and relations independent of the threads.
-    const size_t b = ext_->face.size();
+  // Phase III works a band of kBandRows sample rows at a time: pass 1 finds each exterior
+  // face's sample box and the bands it meets; pass 2 scans each band's faces into its own
+  // A-buffer, orders its lists and pairs them. Bands run in parallel; the pairs go to the
+  // PN lists in band order. One A-buffer for the whole frame did its gather, ordering and
+  // pairing on one thread (1M helix, 2 threads: phase III 9.4 ms then, 7.4 in bands; one
+  // thread: the same time either way) and held 26 MB where the bands hold 17.
+  static constexpr int kBandRows = 32;  // 8 rows: phase III 1.08 times slower (more faces met twice)
+
+  struct BandFace {  // an exterior face that a band's rows meet
+    int32_t face;    // in the exterior face list
+    int32_t item, rank;
+    SampleRect box;  // the samples it may cover (a tiny one: sample_box's box)
+    const PolygonRaster* large;  // its rasterizer, or null (a tiny triangle)
+  };
+  struct FaceRun {  // pass 1's faces of one run of the exterior face list, in list order
+    std::vector<BandFace> faces;
+    std::deque<PolygonRaster> large;  // (a deque: the faces point into it as it grows)
+    std::vector<int32_t> in_band;  // per band: how many of the faces meet it, then where they go
+    int64_t tiny = 0;
+  };
+  struct BandResult {  // pass 2's pairs of one band (occluding, occluded), in pixel order
+    std::vector<std::pair<int32_t, int32_t>> pairs;
+    PairStats stats;
+    int64_t entries = 0, head_insertions = 0, walk_steps = 0;
+  };
+  struct BandScratch {  // per thread
+    sxmpvo::ABuffer abuf;
+    std::vector<sxmpvo::ABuffer::Raw> raw;
+    std::vector<PixEntry> scratch;
+  };
+
+  // Pass 1: the faces that may cover a sample, each listed in every band its box meets.
+  void bin_faces(const SampleFrame& frame) {
+    const ExteriorFaces& ext = *ext_;
+    const size_t b = ext.face.size();
     const size_t runs = std::max<size_t>(1, std::min<size_t>(64, b / 2048));
-    batches_.resize(runs);
-    tiny_.assign(runs, 0);
-    const sxmpvo::TinyEntriesFn tiny_entries = sxmpvo::tiny_entries();
+    const int bands = (frame.rows() + kBandRows - 1) / kBandRows;
+    runs_.resize(runs);
     tbb::parallel_for(size_t(0), runs, [&](size_t r) {
-      // The batch is grown (Raw's constructor leaves it unset) and written by index; the
-      // tiny path writes whole steps of four past its count, hence the room it asks for.
-      std::vector<sxmpvo::ABuffer::Raw>& batch = batches_[r];
-      size_t used = 0;
-      // Up to the storage at hand first (free: Raw leaves it unset), doubled beyond it: a
-      // batch cut to its count last frame grows back without a new allocation (which came
-      // every second frame when it doubled its count: phase III of the second frame of the
-      // 1M helix 27-28 ms against 13-14).
-      const auto room = [&](size_t k) {
-        if (batch.size() >= used + k) return;
-        batch.resize(batch.capacity() >= used + k ? batch.capacity() : std::max(2 * batch.capacity(), used + k + 4096));
+      FaceRun& run = runs_[r];
+      run.faces.clear();
+      run.large.clear();
+      run.in_band.assign(static_cast<size_t>(bands), 0);
+      run.tiny = 0;
+      const auto add = [&](int32_t i, int32_t item, int32_t rank, const SampleRect& box, const PolygonRaster* large) {
+        run.faces.push_back({i, item, rank, box, large});
+        for (int k = box.y0 / kBandRows, k1 = box.y1 / kBandRows; k <= k1; ++k) ++run.in_band[k];
       };
-      PolygonRaster raster;
-      const ExteriorFaces& ext = *ext_;
-      int64_t tiny = 0;
       const int8_t* sign = core_.face_signs().data();
       constexpr size_t kAhead = 16;  // the signs are a miss a face (scattered face ids): asked ahead
       for (size_t i = b * r / runs, end = b * (r + 1) / runs; i < end; ++i) {
@@ -178,47 +192,149 @@ class SxmpvoOrderer final : public Orderer {
         const sxmpvo::BoxKind kind = sxmpvo::sample_box(frame, projected_.data(), ids, n, box);
         if (kind == sxmpvo::BoxKind::None) continue;
         const int32_t item = ext.cell[i] * 2 + (s > 0 ? 1 : 0), rank = rank_[i];
-        const Vec3* corners = &ext.corners[4 * i];
         if (kind == sxmpvo::BoxKind::Tiny && n == 3) {
-          room(sxmpvo::kTinyEntrySlots);
-          used += tiny_entries(frame, corners, s, box, item, rank, batch.data() + used);
-          ++tiny;
-        } else {
-          ProjectedVertex proj[4];
-          for (int v = 0; v < n; ++v) proj[v] = projected_[ids[v]];
-          if (raster.setup(frame, corners, n, proj))
-            raster.scan(frame.bounds(), [&](const RowHits& hits, int k) {  // a batch at a time
-              room(static_cast<size_t>(k));
-              sxmpvo::ABuffer::Raw* out = batch.data() + used;
-              for (int j = 0; j < k; ++j)
-                out[j] = {hits.t[j], item, static_cast<int32_t>(int64_t(hits.sy[j]) * cols + hits.sx[j]), rank};
-              used += static_cast<size_t>(k);
-            });
-        }
-      }
-      batch.resize(used);
-      tiny_[r] = tiny;
-    });
-    for (const auto& batch : batches_) abuf_.append(batch);
-    abuf_.gather();
-    const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
-    pn_.reset(core_.num_cells());
-    const int64_t pixels = abuf_.pixels();
-    // Lists ordered and paired a few rows at a time, while they are in cache.
-    for (int64_t p0 = 0, step = 8 * int64_t(cols); p0 < pixels; p0 += step) {
-      const int64_t p1 = std::min(pixels, p0 + step);
-      abuf_.order(p0, p1);
-      // The occluding cell of a pair is a back-facing entry's just behind a front-facing one
-      // (far to near; across two lists the guess only costs a prefetch).
-      for (const sxmpvo::PixEntry *e = abuf_.begin(p0), *end = abuf_.begin(p1); e + 1 < end; ++e)
-        if (e->front() && !e[1].front()) pn_.prefetch(e[1].cell());
-      for (int64_t p = p0; p < p1; ++p) {
-        if (p + 8 <= p1 && abuf_.begin(p) == abuf_.begin(p + 8)) {  // eight empty lists
-          p += 7;
+          add(static_cast<int32_t>(i), item, rank, box, nullptr);
+          ++run.tiny;
           continue;
         }
-        if (abuf_.head(p) >= 0) sxmpvo::pair_pix_list(abuf_, p, tie, scratch_, pn_, stats);
+        ProjectedVertex proj[4];
+        for (int v = 0; v < n; ++v) proj[v] = projected_[ids[v]];
+        PolygonRaster& raster = run.large.emplace_back();
+        SampleRect bounds;
+        if (raster.setup(frame, &ext.corners[4 * i], n, proj)) bounds = raster.bounds().intersect(frame.bounds());
+        if (bounds.empty()) {
+          run.large.pop_back();
+          continue;
+        }
+        add(static_cast<int32_t>(i), item, rank, bounds, &raster);
       }
+    });
+    // Counting sort into the bands, run after run within a band: each band lists its faces
+    // in list order.
+    band_offset_.assign(static_cast<size_t>(bands) + 1, 0);
+    int32_t at = 0;
+    for (int k = 0; k < bands; ++k) {
+      band_offset_[k] = at;
+      for (FaceRun& run : runs_) {
+        const int32_t n = run.in_band[k];
+        run.in_band[k] = at;
+        at += n;
+      }
+    }
+    band_offset_[bands] = at;
+    band_faces_.resize(static_cast<size_t>(at));
+    tbb::parallel_for(size_t(0), runs, [&](size_t r) {
+      FaceRun& run = runs_[r];
+      for (const BandFace& f : run.faces) {
+        for (int k = f.box.y0 / kBandRows, k1 = f.box.y1 / kBandRows; k <= k1; ++k) band_faces_[run.in_band[k]++] = f;
+      }
+    });
+  }
+
+  // Pass 2 for band k: its faces' entries, its lists ordered, their pairs.
+  void scan_band(const SampleFrame& frame, int k, double tie, sxmpvo::TinyEntriesFn tiny_entries) {
+    BandScratch& s = band_scratch_.local();
+    BandResult& out = bands_[k];
+    const int cols = frame.cols();
+    const int y0 = k * kBandRows, y1 = std::min(frame.rows(), y0 + kBandRows) - 1;
+    const SampleRect rows{0, y0, cols - 1, y1};
+    // The entries are grown (Raw's constructor leaves them unset) and written by index; the
+    // tiny path writes whole steps past its count, hence the room it asks for. Up to the
+    // storage at hand first (free), doubled beyond it.
+    std::vector<sxmpvo::ABuffer::Raw>& raw = s.raw;
+    size_t used = 0;
+    const auto room = [&](size_t n) {
+      if (raw.size() >= used + n) return;
+      raw.resize(raw.capacity() >= used + n ? raw.capacity() : std::max(2 * raw.capacity(), used + n + 4096));
+    };
+    const ExteriorFaces& ext = *ext_;
+    constexpr int32_t kAhead = 8;  // a band's faces lie apart in the list: their corners asked ahead
+    for (int32_t j = band_offset_[k], end = band_offset_[k + 1]; j < end; ++j) {
+      if (j + kAhead < end) {
+        const char* c = reinterpret_cast<const char*>(&ext.corners[4 * band_faces_[j + kAhead].face]);
+        __builtin_prefetch(c);
+        __builtin_prefetch(c + 3 * sizeof(Vec3) - 1);
+      }
+      const BandFace& f = band_faces_[j];
+      if (!f.large) {
+        SampleRect box = f.box;  // its rows in the band
+        box.y0 = std::max(box.y0, y0);
+        box.y1 = std::min(box.y1, y1);
+        room(sxmpvo::kTinyEntrySlots);
+        used += tiny_entries(frame, &ext.corners[4 * f.face], (f.item & 1) ? 1 : -1, box, f.item, f.rank,
+                             raw.data() + used);
+      } else {
+        f.large->scan(rows, [&](const RowHits& hits, int n) {  // a batch at a time
+          room(static_cast<size_t>(n));
+          sxmpvo::ABuffer::Raw* o = raw.data() + used;
+          for (int i = 0; i < n; ++i)
+            o[i] = {hits.t[i], f.item, static_cast<int32_t>(int64_t(hits.sy[i]) * cols + hits.sx[i]), f.rank};
+          used += static_cast<size_t>(n);
+        });
+      }
+    }
+    raw.resize(used);
+    const int64_t pixels = int64_t(y1 - y0 + 1) * cols;
+    sxmpvo::ABuffer& abuf = s.abuf;
+    abuf.reset(pixels, int64_t(y0) * cols);
+    abuf.append(raw);
+    abuf.gather();
+    abuf.order(0, pixels);
+    out.pairs.clear();
+    out.stats = PairStats{};
+    for (int64_t p = 0; p < pixels; ++p) {
+      if (p + 8 <= pixels && abuf.begin(p) == abuf.begin(p + 8)) {  // eight empty lists
+        p += 7;
+        continue;
+      }
+      if (abuf.head(p) >= 0)
+        sxmpvo::for_each_pix_pair(abuf, p, tie, s.scratch, out.stats,
+                                  [&](int32_t occluding, int32_t occluded) { out.pairs.emplace_back(occluding, occluded); });
+    }
+    out.entries = abuf.entries();
+    out.head_insertions = abuf.head_insertions();
+    out.walk_steps = abuf.walk_steps();
+  }
+
+  void scan_and_pair(const Camera& view, PairStats& stats) {
+    const SampleFrame frame(view, 1);
+    // Each boundary point is projected once, not once per face that has it.
+    const std::vector<Vec3>& points = ext_->points;
+    projected_.resize(points.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 8192),
+                      [&](const tbb::blocked_range<size_t>& r) {
+                        frame.project_all(points.data() + r.begin(), r.size(), projected_.data() + r.begin());
+                      });
+    // Faces are visited in storage order, where a face's points, corners and sign lie near
+    // the previous face's (in sorted order every face is a cache miss); each entry carries
+    // its face's rank in the sorted order, which the A-buffer replays as the arrival order.
+    // Bands are scanned in parallel; their pairs are recorded in band order, so the lists,
+    // counts and relations do not depend on the threads.
+    bin_faces(frame);
+    const int bands = static_cast<int>(band_offset_.size()) - 1;
+    bands_.resize(static_cast<size_t>(bands));
+    const double tie = kTieRelative * (radius_ + length(view.eye - centre_));
+    const sxmpvo::TinyEntriesFn tiny_entries = sxmpvo::tiny_entries();
+    tbb::parallel_for(0, bands, [&](int k) { scan_band(frame, k, tie, tiny_entries); });
+    pn_.reset(core_.num_cells());
+    entries_ = head_insertions_ = walk_steps_ = tiny_ = 0;
+    for (const FaceRun& run : runs_) tiny_ += run.tiny;
+    for (const BandResult& band : bands_) {
+      const auto& pairs = band.pairs;
+      constexpr size_t kAhead = 8;  // a pair's occluding cell is a miss: asked ahead
+      for (size_t j = 0, n = pairs.size(); j < n; ++j) {
+        if (j + kAhead < n) pn_.prefetch(pairs[j + kAhead].first);
+        pn_.add(pairs[j].first, pairs[j].second);
+      }
+      stats.lists += band.stats.lists;
+      stats.pairs += band.stats.pairs;
+      stats.tie_reorders += band.stats.tie_reorders;
+      stats.unpaired += band.stats.unpaired;
+      stats.self_pairs += band.stats.self_pairs;
+      stats.max_list = std::max(stats.max_list, band.stats.max_list);
+      entries_ += band.entries;
+      head_insertions_ += band.head_insertions;
+      walk_steps_ += band.walk_steps;
     }
     pn_.to_relations(extra_);
   }
@@ -231,13 +347,17 @@ class SxmpvoOrderer final : public Orderer {
   Vec3 centre_{};
   double radius_ = 0;
   KeySort sort_;
-  sxmpvo::ABuffer abuf_;
   sxmpvo::PnLists pn_;
   mpvo::ExtraRelations extra_;
-  std::vector<PixEntry> scratch_;
-  std::vector<int32_t> rank_;                                // per exterior face
-  std::vector<std::vector<sxmpvo::ABuffer::Raw>> batches_;  // per run of faces
-  std::vector<int64_t> tiny_;                                // per run: faces on the tiny path
+  std::vector<int32_t> rank_;  // per exterior face
+  // Phase III's bands (per view): pass 1's runs, each band's faces (band k's from
+  // band_offset_[k]), the large faces' rasterizers, and each band's pairs.
+  std::vector<FaceRun> runs_;
+  std::vector<int32_t> band_offset_;
+  std::vector<BandFace> band_faces_;
+  std::vector<BandResult> bands_;
+  tbb::enumerable_thread_specific<BandScratch> band_scratch_;
+  int64_t entries_ = 0, head_insertions_ = 0, walk_steps_ = 0, tiny_ = 0;  // the frame's, over its bands
 };
 
 }  // namespace

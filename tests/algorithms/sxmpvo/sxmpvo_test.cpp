@@ -7,6 +7,7 @@
 #include "datasets/datasets.h"
 #include "harness/bench/registry.h"
 #include "harness/oracle/oracle.h"
+#include "harness/raster/polygon_raster.h"
 #include "harness/view/view_set.h"
 #include "tests/support/exact_views.h"
 #include "tests/support/test_meshes.h"
@@ -83,8 +84,9 @@ TEST(Sxmpvo, ReportsCycles) {
   EXPECT_TRUE(is_permutation_of(r.ordering.order, s.mesh().num_cells()));
 }
 
-// Phase III scans runs of faces in parallel: one thread and many give the same order and
-// the same A-buffer and PN counts (the batches keep the sequential arrival order).
+// Phase III finds the faces' boxes in runs of faces and scans bands of rows in parallel:
+// one thread and many give the same order and the same A-buffer and PN counts (the ranks
+// keep the sequential arrival order, the bands' pairs are recorded in band order).
 TEST(Sxmpvo, ResultDoesNotDependOnThreads) {
   const Scene s = dataset("helix", {{"cells", "20000"}});
   const Camera view = fibonacci_view(s.bounds(), 14, 5, ViewOptions{300, 300});
@@ -100,4 +102,23 @@ TEST(Sxmpvo, ResultDoesNotDependOnThreads) {
                           "pn_moved_to_front", "tie_reorders"})
     EXPECT_EQ(parallel.counters.at(key), serial.counters.at(key)) << key;
   EXPECT_GT(serial.counters.at("exterior_faces"), 2048 * 2);  // enough faces for several runs
+}
+
+// Phase III scans a face once in each band of rows its box meets, the box cut to the band:
+// every sample an exterior face covers is entered once, none lost or entered twice where
+// the face crosses from one band to the next (the rasterizer over the whole frame counts
+// them). A window 300 rows high is 10 bands.
+TEST(Sxmpvo, EachCoveredSampleEnteredOnceAcrossBands) {
+  const Scene s = dataset("helix", {{"cells", "20000"}});
+  for (int v : {0, 5}) {
+    const Camera view = fibonacci_view(s.bounds(), 14, v, ViewOptions{300, 300});
+    const SampleFrame frame(view, 1);
+    const ExteriorFaces& ext = s.exterior_faces();
+    int64_t samples = 0;
+    for (size_t i = 0; i < ext.face.size(); ++i)
+      rasterize_polygon(frame, &ext.corners[4 * i], ext.size[i], frame.bounds(), [&](int, int, double) { ++samples; });
+    const Ordering o = run_checked("sxmpvo", s, view).ordering;
+    EXPECT_EQ(o.counters.at("abuffer_entries"), static_cast<double>(samples)) << "view " << v;
+    EXPECT_GT(samples, 20000);
+  }
 }
