@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -102,9 +101,10 @@ class SxmpvoOrderer final : public Orderer {
 
   size_t abuffer_bytes() const {  // the bands: their faces, lists, entries and pairs
     size_t n = band_faces_.capacity() * sizeof(BandFace) + band_offset_.capacity() * sizeof(int32_t);
-    for (const FaceRun& run : runs_)
-      n += run.faces.capacity() * sizeof(BandFace) + run.large.size() * sizeof(PolygonRaster) +
-           run.in_band.capacity() * sizeof(int32_t);
+    for (const FaceRun& run : runs_) {
+      n += run.faces.capacity() * sizeof(BandFace) + run.in_band.capacity() * sizeof(int32_t);
+      for (const auto& entries : run.large) n += entries.capacity() * sizeof(sxmpvo::ABuffer::Raw);
+    }
     for (const BandResult& band : bands_) n += band.pairs.capacity() * sizeof(band.pairs[0]);
     for (const BandScratch& s : band_scratch_)
       n += s.abuf.bytes() + s.raw.capacity() * sizeof(sxmpvo::ABuffer::Raw) + s.scratch.capacity() * sizeof(PixEntry);
@@ -133,23 +133,25 @@ class SxmpvoOrderer final : public Orderer {
   }
 
   // Phase III works a band of kBandRows sample rows at a time: pass 1 finds each exterior
-  // face's sample box and the bands it meets; pass 2 scans each band's faces into its own
-  // A-buffer, orders its lists and pairs them. Bands run in parallel; the pairs go to the
+  // face's sample box and the bands a tiny one meets, and rasterizes the larger faces into
+  // the bands' entries; pass 2 scans each band's tiny faces into its own A-buffer (with the
+  // larger faces' entries), orders its lists and pairs them. Bands run in parallel; the pairs go to the
   // PN lists in band order. One A-buffer for the whole frame did its gather, ordering and
   // pairing on one thread (1M helix, 2 threads: phase III 9.4 ms then, 7.4 in bands; one
   // thread: the same time either way) and held 26 MB where the bands hold 17.
   static constexpr int kBandRows = 32;  // 8 rows: phase III 1.08 times slower (more faces met twice)
 
-  struct BandFace {  // an exterior face that a band's rows meet
+  struct BandFace {  // a tiny triangle that a band's rows meet
     int32_t face;    // in the exterior face list
     int32_t item, rank;
-    SampleRect box;  // the samples it may cover (a tiny one: sample_box's box)
-    const PolygonRaster* large;  // its rasterizer, or null (a tiny triangle)
+    SampleRect box;  // sample_box's box
   };
-  struct FaceRun {  // pass 1's faces of one run of the exterior face list, in list order
-    std::vector<BandFace> faces;
-    std::deque<PolygonRaster> large;  // (a deque: the faces point into it as it grows)
-    std::vector<int32_t> in_band;  // per band: how many of the faces meet it, then where they go
+  struct FaceRun {  // pass 1's output for one run of the exterior face list
+    std::vector<BandFace> faces;   // its tiny triangles, in list order
+    std::vector<int32_t> in_band;  // per band: how many of them meet it, then where they go
+    // per band: the entries of its larger faces (rasterized whole in pass 1, where the
+    // rasterizer batches their rows, and sorted into the bands by row)
+    std::vector<std::vector<sxmpvo::ABuffer::Raw>> large;
     int64_t tiny = 0;
   };
   struct BandResult {  // pass 2's pairs of one band (occluding, occluded), in pixel order
@@ -169,17 +171,16 @@ class SxmpvoOrderer final : public Orderer {
     const size_t b = ext.face.size();
     const size_t runs = std::max<size_t>(1, std::min<size_t>(64, b / 2048));
     const int bands = (frame.rows() + kBandRows - 1) / kBandRows;
+    const int64_t cols = frame.cols();
     runs_.resize(runs);
     tbb::parallel_for(size_t(0), runs, [&](size_t r) {
       FaceRun& run = runs_[r];
       run.faces.clear();
-      run.large.clear();
       run.in_band.assign(static_cast<size_t>(bands), 0);
+      run.large.resize(static_cast<size_t>(bands));
+      for (auto& entries : run.large) entries.clear();
       run.tiny = 0;
-      const auto add = [&](int32_t i, int32_t item, int32_t rank, const SampleRect& box, const PolygonRaster* large) {
-        run.faces.push_back({i, item, rank, box, large});
-        for (int k = box.y0 / kBandRows, k1 = box.y1 / kBandRows; k <= k1; ++k) ++run.in_band[k];
-      };
+      PolygonRaster raster;
       const int8_t* sign = core_.face_signs().data();
       constexpr size_t kAhead = 16;  // the signs are a miss a face (scattered face ids): asked ahead
       for (size_t i = b * r / runs, end = b * (r + 1) / runs; i < end; ++i) {
@@ -193,20 +194,19 @@ class SxmpvoOrderer final : public Orderer {
         if (kind == sxmpvo::BoxKind::None) continue;
         const int32_t item = ext.cell[i] * 2 + (s > 0 ? 1 : 0), rank = rank_[i];
         if (kind == sxmpvo::BoxKind::Tiny && n == 3) {
-          add(static_cast<int32_t>(i), item, rank, box, nullptr);
+          run.faces.push_back({static_cast<int32_t>(i), item, rank, box});
+          for (int k = box.y0 / kBandRows, k1 = box.y1 / kBandRows; k <= k1; ++k) ++run.in_band[k];
           ++run.tiny;
           continue;
         }
         ProjectedVertex proj[4];
         for (int v = 0; v < n; ++v) proj[v] = projected_[ids[v]];
-        PolygonRaster& raster = run.large.emplace_back();
-        SampleRect bounds;
-        if (raster.setup(frame, &ext.corners[4 * i], n, proj)) bounds = raster.bounds().intersect(frame.bounds());
-        if (bounds.empty()) {
-          run.large.pop_back();
-          continue;
-        }
-        add(static_cast<int32_t>(i), item, rank, bounds, &raster);
+        if (!raster.setup(frame, &ext.corners[4 * i], n, proj)) continue;
+        raster.scan(frame.bounds(), [&](const RowHits& hits, int m) {  // a batch at a time
+          for (int h = 0; h < m; ++h)
+            run.large[hits.sy[h] / kBandRows].emplace_back(
+                hits.t[h], item, static_cast<int32_t>(int64_t(hits.sy[h]) * cols + hits.sx[h]), rank);
+        });
       }
     });
     // Counting sort into the bands, run after run within a band: each band lists its faces
@@ -237,7 +237,6 @@ class SxmpvoOrderer final : public Orderer {
     BandResult& out = bands_[k];
     const int cols = frame.cols();
     const int y0 = k * kBandRows, y1 = std::min(frame.rows(), y0 + kBandRows) - 1;
-    const SampleRect rows{0, y0, cols - 1, y1};
     // The entries are grown (Raw's constructor leaves them unset) and written by index; the
     // tiny path writes whole steps past its count, hence the room it asks for. Up to the
     // storage at hand first (free), doubled beyond it.
@@ -256,28 +255,20 @@ class SxmpvoOrderer final : public Orderer {
         __builtin_prefetch(c + 3 * sizeof(Vec3) - 1);
       }
       const BandFace& f = band_faces_[j];
-      if (!f.large) {
-        SampleRect box = f.box;  // its rows in the band
-        box.y0 = std::max(box.y0, y0);
-        box.y1 = std::min(box.y1, y1);
-        room(sxmpvo::kTinyEntrySlots);
-        used += tiny_entries(frame, &ext.corners[4 * f.face], (f.item & 1) ? 1 : -1, box, f.item, f.rank,
-                             raw.data() + used);
-      } else {
-        f.large->scan(rows, [&](const RowHits& hits, int n) {  // a batch at a time
-          room(static_cast<size_t>(n));
-          sxmpvo::ABuffer::Raw* o = raw.data() + used;
-          for (int i = 0; i < n; ++i)
-            o[i] = {hits.t[i], f.item, static_cast<int32_t>(int64_t(hits.sy[i]) * cols + hits.sx[i]), f.rank};
-          used += static_cast<size_t>(n);
-        });
-      }
+      SampleRect box = f.box;  // its rows in the band
+      box.y0 = std::max(box.y0, y0);
+      box.y1 = std::min(box.y1, y1);
+      room(sxmpvo::kTinyEntrySlots);
+      used += tiny_entries(frame, &ext.corners[4 * f.face], (f.item & 1) ? 1 : -1, box, f.item, f.rank,
+                           raw.data() + used);
     }
     raw.resize(used);
     const int64_t pixels = int64_t(y1 - y0 + 1) * cols;
     sxmpvo::ABuffer& abuf = s.abuf;
     abuf.reset(pixels, int64_t(y0) * cols);
     abuf.append(raw);
+    for (const FaceRun& run : runs_)
+      if (!run.large[k].empty()) abuf.append(run.large[k]);
     abuf.gather();
     abuf.order(0, pixels);
     out.pairs.clear();
@@ -351,7 +342,7 @@ class SxmpvoOrderer final : public Orderer {
   mpvo::ExtraRelations extra_;
   std::vector<int32_t> rank_;  // per exterior face
   // Phase III's bands (per view): pass 1's runs, each band's faces (band k's from
-  // band_offset_[k]), the large faces' rasterizers, and each band's pairs.
+  // band_offset_[k]) and each band's pairs.
   std::vector<FaceRun> runs_;
   std::vector<int32_t> band_offset_;
   std::vector<BandFace> band_faces_;
