@@ -26,8 +26,9 @@ struct PixEntry {
 // The PIX lists. Entries arrive in face order (nearest centroid first) and each list is
 // kept in decreasing depth as if every entry were inserted into it on arrival, exactly as
 // the paper's linked lists: same order, same head-insertion count. They are laid out in
-// one array per frame, each pixel's list contiguous, because walking linked entries that
-// lie far apart in a pool cost one cache miss per entry (87% of the pairing time).
+// one array per range of pixels (SXMPVO: a band of rows), each pixel's list contiguous,
+// because walking linked entries that lie far apart in a pool cost one cache miss per
+// entry (87% of the pairing time).
 // An entry's arrival is its rank, not the moment it is recorded: faces may be scanned in
 // any order (storage order, where their data lie close together) and finish() replays the
 // arrivals of each list by rank (gather() stages the lists in a second array, which
