@@ -138,7 +138,8 @@ class SxmpvoOrderer final : public Orderer {
   // larger faces' entries), orders its lists and pairs them. Bands run in parallel; the pairs go to the
   // PN lists in band order. One A-buffer for the whole frame did its gather, ordering and
   // pairing on one thread (1M helix, 2 threads: phase III 9.4 ms then, 7.4 in bands; one
-  // thread: the same time either way) and held 26 MB where the bands hold 17.
+  // thread: 0.1-0.3 ms slower in bands there, 0.3 faster on the 20k helix) and held 26 MB
+  // where the bands hold 14 (design notes, session 68).
   static constexpr int kBandRows = 32;  // 8 rows: phase III 1.08 times slower (more faces met twice)
 
   struct BandFace {  // a tiny triangle that a band's rows meet
