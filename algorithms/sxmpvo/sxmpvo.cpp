@@ -135,8 +135,8 @@ class SxmpvoOrderer final : public Orderer {
   // Phase III works a band of kBandRows sample rows at a time: pass 1 finds each exterior
   // face's sample box and the bands a tiny one meets, and rasterizes the larger faces into
   // the bands' entries; pass 2 scans each band's tiny faces into its own A-buffer (with the
-  // larger faces' entries), orders its lists and pairs them. Bands run in parallel; the pairs go to the
-  // PN lists in band order. One A-buffer for the whole frame did its gather, ordering and
+  // larger faces' entries), orders its lists and pairs them. Bands run in parallel; the
+  // pairs go to the PN lists in band order. One A-buffer for the whole frame did its gather, ordering and
   // pairing on one thread (1M helix, 2 threads: phase III 9.4 ms then, 7.4 in bands; one
   // thread: 0.1-0.3 ms slower in bands there, 0.3 faster on the 20k helix) and held 26 MB
   // where the bands hold 14 (design notes, session 68).
