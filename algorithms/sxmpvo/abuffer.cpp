@@ -185,6 +185,22 @@ void ABuffer::order(int64_t p0, int64_t p1) {
     const int32_t b = offsets_[p], e = offsets_[p + 1];
     const int32_t k = e - b;
     if (k == 0) continue;
+    if (k == 2 && lanes_) {  // two arrivals: the replay is one compare (most lists of larger faces: zoo, tet-hand)
+      const PixEntry& x = staged_[b];
+      const PixEntry& y = staged_[b + 1];
+      const bool x_first = x.next < y.next;  // by rank
+      const PixEntry& first = x_first ? x : y;
+      const PixEntry& later = x_first ? y : x;
+      const bool behind = first.t > later.t;  // the later arrival walks past the first
+      const PixEntry& far = behind ? first : later;
+      const PixEntry& near = behind ? later : first;
+      list[b] = PixEntry(far.t, far.item, b + 1);
+      list[b + 1] = PixEntry(near.t, near.item, -1);
+      head_insertions_ += behind ? 1 : 2;
+      walk_steps_ += behind ? 1 : 0;
+      ++lane_lists_;
+      continue;
+    }
     if (lanes && k >= 2 && k <= kLanes) {
       const int w = k <= 8 ? 8 : 16;
       PixEntry tmp[kLanes];

@@ -70,10 +70,11 @@ class ABuffer {
   }
   void gather();                    // every entry into its pixel's list, by rank (once after reset())
   void order(int64_t p0, int64_t p1);  // the lists of pixels [p0, p1) after gather()
-  // order() sorts lists of up to 16 entries by rank in AVX2 lanes when the CPU has them
-  // (the same lists and counts); false keeps the scalar insertion sort (tests compare them).
+  // order() sorts lists of up to 16 entries by rank in AVX2 lanes when the CPU has them,
+  // and replays a two-entry list by one compare (the same lists and counts); false keeps
+  // the scalar insertion sort (tests compare them).
   void set_lanes(bool on) { lanes_ = on; }
-  int64_t lane_lists() const { return lane_lists_; }  // lists order() sorted in lanes since reset()
+  int64_t lane_lists() const { return lane_lists_; }  // lists order() took without the scalar replay since reset()
   int64_t pixels() const { return pixels_; }
   // First (farthest) entry of a pixel's list, or -1; entries link to the next nearer one.
   int32_t head(int64_t pixel) const {
