@@ -165,54 +165,76 @@ __attribute__((target("avx512f,avx512vl,avx512dq,popcnt"), always_inline)) inlin
   return __builtin_popcount(inside);
 }
 
-// A box at most W samples wide (W = 2 or 4), 8 / W rows a step: lane j is column j % W of
-// row j / W, so the lanes' order is the scan's.
-template <bool kOrtho, int W>
-__attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) inline int narrow_box(
-    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
-  constexpr int R = 8 / W;
-  const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
-  const __m512i col = W == 2 ? _mm512_setr_epi64(0, 1, 0, 1, 0, 1, 0, 1) : _mm512_setr_epi64(0, 1, 2, 3, 0, 1, 2, 3);
-  const __m512i row = W == 2 ? _mm512_setr_epi64(0, 0, 1, 1, 2, 2, 3, 3) : _mm512_setr_epi64(0, 0, 0, 0, 1, 1, 1, 1);
-  // Column terms of the box's first four columns (padded past the last column), by lane.
-  const __m512d bx = _mm512_permutexvar_pd(col, _mm512_castpd256_pd512(_mm256_loadu_pd(fr.col_x() + box.x0)));
-  const __m512d by = _mm512_permutexvar_pd(col, _mm512_castpd256_pd512(_mm256_loadu_pd(fr.col_y() + box.x0)));
-  const __m512d bz = _mm512_permutexvar_pd(col, _mm512_castpd256_pd512(_mm256_loadu_pd(fr.col_z() + box.x0)));
-  const __m256i offsets = _mm256_add_epi32(_mm256_mullo_epi32(_mm512_cvtepi64_epi32(row), _mm256_set1_epi32(cols)),
-                                           _mm512_cvtepi64_epi32(col));
-  const unsigned row_lanes = (1u << w) - 1;
-  int n = 0;
-  for (int sy = box.y0; sy <= box.y1; sy += R) {
-    Vec3 r[4];
-    unsigned valid = 0;
-    for (int j = 0; j < R; ++j) {
-      const bool in = sy + j <= box.y1;
-      r[j] = fr.row_term(in ? sy + j : sy);  // a row past the box: masked off
-      valid |= in ? row_lanes << (j * W) : 0;
+// Where lane j of a step falls in a box at most eight samples wide, the box's samples taken
+// eight a step in scan order: the step's first sample is 8s, row 8s / w and column 8s % w
+// of the box (first_row, first_col); from there lane j is `row` rows down, at column `col`.
+struct DenseLanes {
+  uint8_t row[8], col[8];
+};
+struct DenseTables {
+  DenseLanes lanes[9][8];                    // [w][first column]
+  uint8_t first_row[9][8], first_col[9][8];  // [w][s], s < 8: a tiny box has at most 64 samples
+};
+constexpr DenseTables make_dense_tables() {
+  DenseTables t{};
+  for (int w = 1; w <= 8; ++w) {
+    for (int m = 0; m < w; ++m)
+      for (int j = 0; j < 8; ++j) {
+        t.lanes[w][m].row[j] = static_cast<uint8_t>((m + j) / w);
+        t.lanes[w][m].col[j] = static_cast<uint8_t>((m + j) % w);
+      }
+    for (int s = 0; s < 8; ++s) {
+      t.first_row[w][s] = static_cast<uint8_t>(8 * s / w);
+      t.first_col[w][s] = static_cast<uint8_t>(8 * s % w);
     }
-    if (R == 2) r[2] = r[3] = r[0];
-    const __m512d rx = _mm512_permutexvar_pd(row, _mm512_castpd256_pd512(_mm256_setr_pd(r[0].x, r[1].x, r[2].x, r[3].x)));
-    const __m512d ry = _mm512_permutexvar_pd(row, _mm512_castpd256_pd512(_mm256_setr_pd(r[0].y, r[1].y, r[2].y, r[3].y)));
-    const __m512d rz = _mm512_permutexvar_pd(row, _mm512_castpd256_pd512(_mm256_setr_pd(r[0].z, r[1].z, r[2].z, r[3].z)));
-    n += step_entries<kOrtho>(k, _mm512_add_pd(rx, bx), _mm512_add_pd(ry, by), _mm512_add_pd(rz, bz),
-                              static_cast<__mmask8>(valid),
-                              _mm256_add_epi32(_mm256_set1_epi32(sy * cols + box.x0), offsets), item, rank, dst + n);
+  }
+  return t;
+}
+constexpr DenseTables kDense = make_dense_tables();
+static_assert(kTinyMaxSamples <= 64, "kDense covers eight steps of eight samples");
+
+// A box at most eight samples wide, its samples packed eight a step in scan order (lanes
+// spanning rows), so the steps are ceil(samples / 8) whatever the box's shape, and one
+// loop serves every shape: no jump on the width.
+template <bool kOrtho>
+__attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) inline int dense_box(
+    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
+  const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
+  const __mmask8 in_row = static_cast<__mmask8>((1u << w) - 1);
+  const __m512d bx = _mm512_maskz_loadu_pd(in_row, fr.col_x() + box.x0);  // the box's column terms
+  const __m512d by = _mm512_maskz_loadu_pd(in_row, fr.col_y() + box.x0);
+  const __m512d bz = _mm512_maskz_loadu_pd(in_row, fr.col_z() + box.x0);
+  const double *row_x = fr.row_x(), *row_y = fr.row_y(), *row_z = fr.row_z();  // padded: eight rows load
+  const __m256i vcols = _mm256_set1_epi32(cols);
+  int n = 0;
+  for (int s = 0, left = w * (box.y1 - box.y0 + 1); left > 0; ++s, left -= 8) {
+    const int r0 = box.y0 + kDense.first_row[w][s];
+    const DenseLanes& lanes = kDense.lanes[w][kDense.first_col[w][s]];
+    const __m128i rb = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(lanes.row));
+    const __m128i cb = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(lanes.col));
+    const __m512i ri = _mm512_cvtepu8_epi64(rb), ci = _mm512_cvtepu8_epi64(cb);
+    const __m512d X = _mm512_add_pd(_mm512_permutexvar_pd(ri, _mm512_loadu_pd(row_x + r0)), _mm512_permutexvar_pd(ci, bx));
+    const __m512d Y = _mm512_add_pd(_mm512_permutexvar_pd(ri, _mm512_loadu_pd(row_y + r0)), _mm512_permutexvar_pd(ci, by));
+    const __m512d Z = _mm512_add_pd(_mm512_permutexvar_pd(ri, _mm512_loadu_pd(row_z + r0)), _mm512_permutexvar_pd(ci, bz));
+    const __mmask8 valid = static_cast<__mmask8>(left >= 8 ? 0xFF : (1u << left) - 1);
+    const __m256i offsets =
+        _mm256_add_epi32(_mm256_mullo_epi32(_mm256_cvtepu8_epi32(rb), vcols), _mm256_cvtepu8_epi32(cb));
+    n += step_entries<kOrtho>(k, X, Y, Z, valid, _mm256_add_epi32(_mm256_set1_epi32(r0 * cols + box.x0), offsets),
+                              item, rank, dst + n);
   }
   return n;
 }
 
-// The box's samples in eight lanes: boxes up to two samples wide four rows a step, up to
-// four wide two rows a step, wider ones eight columns of a row a step.
+// The box's samples in eight lanes: boxes up to eight samples wide packed eight samples a
+// step (dense_box), wider ones eight columns of a row a step.
 template <bool kOrtho>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"))) int entries_avx512(
     const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
   const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
   const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
   int n = 0;
-  if (w <= 2) {
-    n = narrow_box<kOrtho, 2>(fr, k, box, item, rank, dst);
-  } else if (w <= 4) {
-    n = narrow_box<kOrtho, 4>(fr, k, box, item, rank, dst);
+  if (w <= 8) {
+    n = dense_box<kOrtho>(fr, k, box, item, rank, dst);
   } else {
     const __m256i offsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     for (int sy = box.y0; sy <= box.y1; ++sy) {

@@ -47,6 +47,10 @@ SampleFrame::SampleFrame(const Camera& camera, int supersample, RasterRule rule)
     const double ny = 2.0 * (sy + 0.5) / rows_ - 1.0;
     row_[sy] = base + u_ * (ny * sy_scale_);
   }
+  const size_t row_stride = static_cast<size_t>(rows_) + 8;
+  row_soa_.assign(3 * row_stride, 0.0);
+  for (int sy = 0; sy < rows_; ++sy)
+    for (int a = 0; a < 3; ++a) row_soa_[a * row_stride + sy] = row_[sy][a];
   x0_ = base - u_ * sy_scale_ - r_ * sx_scale_;
   dx_ = r_ * (2.0 * sx_scale_ / cols_);
   dy_ = u_ * (2.0 * sy_scale_ / rows_);

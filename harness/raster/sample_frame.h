@@ -82,6 +82,11 @@ class SampleFrame {
   const double* col_x() const { return col_soa_.data(); }
   const double* col_y() const { return col_soa_.data() + (cols_ + 3); }
   const double* col_z() const { return col_soa_.data() + 2 * (cols_ + 3); }
+  // row_term's components as three arrays, each padded with 8 zeros past the last row
+  // (for kernels that load eight rows at a time).
+  const double* row_x() const { return row_soa_.data(); }
+  const double* row_y() const { return row_soa_.data() + (rows_ + 8); }
+  const double* row_z() const { return row_soa_.data() + 2 * (rows_ + 8); }
   // The affine form of X in sample-centre coordinates (x, y) = (sx+0.5, sy+0.5):
   // X ~= x0 + x * dx + y * dy (for bounds and spans only; decisions use x(sx, sy)).
   Vec3 affine_origin() const { return x0_; }
@@ -114,6 +119,7 @@ class SampleFrame {
   double sx_scale_, sy_scale_;  // perspective: tan terms; ortho: half extents
   std::vector<Vec3> row_, col_;
   std::vector<double> col_soa_;  // col_x, col_y, col_z
+  std::vector<double> row_soa_;  // row_x, row_y, row_z
   Vec3 x0_, dx_, dy_;
   double xmag_ = 0;
   GlDepthRange gl_range_;
