@@ -29,14 +29,18 @@ void ABuffer::gather() {
   // until order() links them: one scatter of 16-byte entries). Each
   // pixel's count becomes its list's end, and the scatter counts it down to the list's
   // start: no cursor array to copy. A list comes out in reverse recording order, which
-  // order() does not see (it replays the arrivals by rank).
+  // order() does not see (it replays the arrivals by rank). The count reads the keys
+  // alone; the scatter takes item and rank from the entry's face.
   int32_t* end = offsets_.data();  // zero since reset(): gather() runs once a frame
   const int64_t first = first_;
   uint32_t rank_bits = 0;
-  each_raw([&](const Raw& r) {
-    ++end[r.pixel - first];
-    rank_bits |= static_cast<uint32_t>(r.rank);
-  });
+  const auto count = [&](const RawBatch& raw) {
+    const uint64_t* key = raw.key.data();
+    for (size_t i = 0, n = raw.size; i < n; ++i) ++end[static_cast<int32_t>(static_cast<uint32_t>(key[i])) - first];
+    for (const RawBatch::Face& f : raw.faces) rank_bits |= static_cast<uint32_t>(f.rank);
+  };
+  count(raw_);
+  for (const RawBatch* b : batches_) count(*b);
   ranks_fit_ = rank_bits < (1u << 27);
   for (int64_t p = 1; p < pixels_; ++p) end[p] += end[p - 1];
   offsets_[pixels_] = static_cast<int32_t>(entries_);
@@ -47,16 +51,20 @@ void ABuffer::gather() {
   // Pixels come at random: the place of the entry kDist ahead is asked for before its
   // write (its list end may still move before then; a stale guess only costs a prefetch).
   constexpr size_t kDist = 32;
-  const auto scatter = [&](const std::vector<Raw>& raw) {
-    const size_t n = raw.size();
+  const auto scatter = [&](const RawBatch& raw) {
+    const size_t n = raw.size;
+    const double* t = raw.t.data();
+    const uint64_t* key = raw.key.data();
+    const RawBatch::Face* face = raw.faces.data();
+    const auto pixel = [&](size_t i) { return static_cast<int32_t>(static_cast<uint32_t>(key[i])) - first; };
     for (size_t i = 0; i < n; ++i) {
-      if (i + kDist < n) __builtin_prefetch(&list[end[raw[i + kDist].pixel - first] - 1], 1);
-      const Raw& r = raw[i];
-      list[--end[r.pixel - first]] = {r.t, r.item, r.rank};
+      if (i + kDist < n) __builtin_prefetch(&list[end[pixel(i + kDist)] - 1], 1);
+      const RawBatch::Face& f = face[key[i] >> 32];
+      list[--end[pixel(i)]] = {t[i], f.item, f.rank};
     }
   };
   scatter(raw_);
-  for (const std::vector<Raw>* b : batches_) scatter(*b);
+  for (const RawBatch* b : batches_) scatter(*b);
 }
 
 void ABuffer::order_scalar(int32_t b, int32_t e) {

@@ -3,6 +3,7 @@
 // pairing of consecutive front-facing / back-facing entries into pseudo-neighbour (PN)
 // relations, and the PN lists, kept free of duplicates by a move-to-front search.
 #pragma once
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -44,8 +45,60 @@ class ABuffer {
   struct Raw {
     double t;
     int32_t item, pixel, rank;
-    Raw() {}  // left unset: the scan grows its batches, then writes them
-    Raw(double t_, int32_t item_, int32_t pixel_, int32_t rank_) : t(t_), item(item_), pixel(pixel_), rank(rank_) {}
+  };
+  // A batch of recorded entries, as the scans write them: two columns, each entry's depth
+  // and its key, pixel | slot << 32, the slot naming its face in the batch's face table
+  // (item and rank are the face's). 16 bytes an entry in two lane vectors: 24-byte records
+  // {t, item, pixel, rank} cost the tiny-face kernel 12% more in shuffles and stores
+  // (BM_TinyEntries). Entries [0, size) are in use; the columns stay allocated past it, so
+  // that a kernel may write whole lane vectors beyond its last entry (reserve_more()).
+  struct RawBatch {
+    struct Face {
+      int32_t item, rank;
+    };
+    std::vector<Face> faces;
+    std::vector<double> t;
+    std::vector<uint64_t> key;
+    size_t size = 0;
+    // Where entry i of each column is.
+    struct Out {
+      double* t;
+      uint64_t* key;
+      Out operator+(ptrdiff_t k) const { return {t + k, key + k}; }
+    };
+    static uint64_t make_key(int32_t pixel, int32_t slot) {
+      return static_cast<uint32_t>(pixel) | uint64_t(static_cast<uint32_t>(slot)) << 32;
+    }
+    Out at(size_t i) { return {t.data() + i, key.data() + i}; }
+    void clear() {
+      size = 0;
+      faces.clear();
+    }
+    // A face's slot, for its entries' keys.
+    int32_t add_face(int32_t item, int32_t rank) {
+      faces.push_back({item, rank});
+      return static_cast<int32_t>(faces.size() - 1);
+    }
+    // Room for n more entries past size: the columns are grown (doubled), never shrunk.
+    void reserve_more(size_t n) {
+      if (t.size() < size + n) grow(std::max(2 * t.size(), size + n + 4096));
+    }
+    void push_back(double t_, int32_t pixel, int32_t slot) {
+      reserve_more(1);
+      t[size] = t_, key[size] = make_key(pixel, slot);
+      ++size;
+    }
+    void push_back(const Raw& r) { push_back(r.t, r.pixel, add_face(r.item, r.rank)); }  // a face of its own
+    Raw operator[](size_t i) const {
+      const Face& f = faces[key[i] >> 32];
+      return {t[i], f.item, static_cast<int32_t>(static_cast<uint32_t>(key[i])), f.rank};
+    }
+    size_t bytes() const {
+      return faces.capacity() * sizeof(Face) + t.capacity() * sizeof(double) + key.capacity() * sizeof(uint64_t);
+    }
+
+   private:
+    void grow(size_t n) { t.resize(n), key.resize(n); }
   };
   // Records an entry of pixel `pixel` that arrives after every entry recorded so far.
   void insert(int64_t pixel, double t, int32_t item) {
@@ -55,9 +108,9 @@ class ABuffer {
   // any order: the ranks, not the batches, decide the arrival order). Ranks of one pixel's
   // entries must differ, except for entries of one face (which never share a pixel). The
   // batch is read in place by finish(): it must stay alive and unchanged until then.
-  void append(const std::vector<Raw>& batch) {
+  void append(const RawBatch& batch) {
     batches_.push_back(&batch);
-    entries_ += static_cast<int64_t>(batch.size());
+    entries_ += static_cast<int64_t>(batch.size);
   }
   // Builds the lists: per pixel, the entries by increasing rank inserted one by one so that
   // the list stays in decreasing t; an entry at least as far as the head becomes the head
@@ -89,21 +142,15 @@ class ABuffer {
   int64_t walk_steps() const { return walk_steps_; }  // entries passed by non-head inserts
   size_t bytes() const {
     return offsets_.capacity() * sizeof(int32_t) +
-           raw_.capacity() * sizeof(Raw) +
+           raw_.bytes() +
            (staged_.capacity() + list_.capacity()) * sizeof(PixEntry);
   }
 
  private:
   int64_t pixels_ = 0, first_ = 0;
-  template <class F>
-  void each_raw(F&& f) const {  // every recorded entry: insert()ed, then appended batches
-    for (const Raw& r : raw_) f(r);
-    for (const std::vector<Raw>* b : batches_)
-      for (const Raw& r : *b) f(r);
-  }
   int64_t entries_ = 0;
-  std::vector<Raw> raw_;           // insert()ed
-  std::vector<const std::vector<Raw>*> batches_;  // append()ed, read in place
+  RawBatch raw_;                          // insert()ed
+  std::vector<const RawBatch*> batches_;  // append()ed, read in place
   void order_scalar(int32_t b, int32_t e);  // one list: staged_[b, e) into list_[b, e)
   std::vector<int32_t> offsets_;   // pixels + 1
   std::vector<PixEntry> staged_;   // per pixel, as gathered (rank in `next`)

@@ -103,11 +103,11 @@ class SxmpvoOrderer final : public Orderer {
     size_t n = band_faces_.capacity() * sizeof(BandFace) + band_offset_.capacity() * sizeof(int32_t);
     for (const FaceRun& run : runs_) {
       n += run.faces.capacity() * sizeof(BandFace) + run.in_band.capacity() * sizeof(int32_t);
-      for (const auto& entries : run.large) n += entries.capacity() * sizeof(sxmpvo::ABuffer::Raw);
+      for (const auto& entries : run.large) n += entries.bytes();
     }
     for (const BandResult& band : bands_) n += band.pairs.capacity() * sizeof(band.pairs[0]);
     for (const BandScratch& s : band_scratch_)
-      n += s.abuf.bytes() + s.raw.capacity() * sizeof(sxmpvo::ABuffer::Raw) + s.scratch.capacity() * sizeof(PixEntry);
+      n += s.abuf.bytes() + s.raw.bytes() + s.scratch.capacity() * sizeof(PixEntry);
     return n;
   }
 
@@ -152,7 +152,10 @@ class SxmpvoOrderer final : public Orderer {
     std::vector<int32_t> in_band;  // per band: how many of them meet it, then where they go
     // per band: the entries of its larger faces (rasterized whole in pass 1, where the
     // rasterizer batches their rows, and sorted into the bands by row)
-    std::vector<std::vector<sxmpvo::ABuffer::Raw>> large;
+    std::vector<sxmpvo::ABuffer::RawBatch> large;
+    // per band: the face last given a slot in its `large` batch, and that slot
+    std::vector<int64_t> slot_face;
+    std::vector<int32_t> slot;
     int64_t tiny = 0;
   };
   struct BandResult {  // pass 2's pairs of one band (occluding, occluded), in pixel order
@@ -162,7 +165,7 @@ class SxmpvoOrderer final : public Orderer {
   };
   struct BandScratch {  // per thread
     sxmpvo::ABuffer abuf;
-    std::vector<sxmpvo::ABuffer::Raw> raw;
+    sxmpvo::ABuffer::RawBatch raw;
     std::vector<PixEntry> scratch;
   };
 
@@ -180,6 +183,8 @@ class SxmpvoOrderer final : public Orderer {
       run.in_band.assign(static_cast<size_t>(bands), 0);
       run.large.resize(static_cast<size_t>(bands));
       for (auto& entries : run.large) entries.clear();
+      run.slot_face.assign(static_cast<size_t>(bands), -1);
+      run.slot.resize(static_cast<size_t>(bands));
       run.tiny = 0;
       PolygonRaster raster;
       const int8_t* sign = core_.face_signs().data();
@@ -204,9 +209,24 @@ class SxmpvoOrderer final : public Orderer {
         for (int v = 0; v < n; ++v) proj[v] = projected_[ids[v]];
         if (!raster.setup(frame, &ext.corners[4 * i], n, proj)) continue;
         raster.scan(frame.bounds(), [&](const RowHits& hits, int m) {  // a batch at a time
-          for (int h = 0; h < m; ++h)
-            run.large[hits.sy[h] / kBandRows].emplace_back(
-                hits.t[h], item, static_cast<int32_t>(int64_t(hits.sy[h]) * cols + hits.sx[h]), rank);
+          // A triangle's rows come in order: the hits of one band at a time, under one slot.
+          for (int h = 0; h < m;) {
+            const int band = hits.sy[h] / kBandRows;
+            int e = h + 1;
+            while (e < m && hits.sy[e] / kBandRows == band) ++e;
+            sxmpvo::ABuffer::RawBatch& entries = run.large[band];
+            if (run.slot_face[band] != static_cast<int64_t>(i))
+              run.slot_face[band] = static_cast<int64_t>(i), run.slot[band] = entries.add_face(item, rank);
+            entries.reserve_more(static_cast<size_t>(e - h));
+            const sxmpvo::ABuffer::RawBatch::Out out = entries.at(entries.size);
+            const uint64_t slot = uint64_t(static_cast<uint32_t>(run.slot[band])) << 32;
+            for (int j = h; j < e; ++j) {
+              out.t[j - h] = hits.t[j];
+              out.key[j - h] = slot | static_cast<uint32_t>(int64_t(hits.sy[j]) * cols + hits.sx[j]);
+            }
+            entries.size += static_cast<size_t>(e - h);
+            h = e;
+          }
         });
       }
     });
@@ -238,15 +258,9 @@ class SxmpvoOrderer final : public Orderer {
     BandResult& out = bands_[k];
     const int cols = frame.cols();
     const int y0 = k * kBandRows, y1 = std::min(frame.rows(), y0 + kBandRows) - 1;
-    // The entries are grown (Raw's constructor leaves them unset) and written by index; the
-    // tiny path writes whole steps past its count, hence the room it asks for. Up to the
-    // storage at hand first (free), doubled beyond it.
-    std::vector<sxmpvo::ABuffer::Raw>& raw = s.raw;
-    size_t used = 0;
-    const auto room = [&](size_t n) {
-      if (raw.size() >= used + n) return;
-      raw.resize(raw.capacity() >= used + n ? raw.capacity() : std::max(2 * raw.capacity(), used + n + 4096));
-    };
+    // The tiny path writes whole steps past its count, hence the room it asks for.
+    sxmpvo::ABuffer::RawBatch& raw = s.raw;
+    raw.clear();
     const ExteriorFaces& ext = *ext_;
     constexpr int32_t kAhead = 8;  // a band's faces lie apart in the list: their corners asked ahead
     for (int32_t j = band_offset_[k], end = band_offset_[k + 1]; j < end; ++j) {
@@ -259,17 +273,16 @@ class SxmpvoOrderer final : public Orderer {
       SampleRect box = f.box;  // its rows in the band
       box.y0 = std::max(box.y0, y0);
       box.y1 = std::min(box.y1, y1);
-      room(sxmpvo::kTinyEntrySlots);
-      used += tiny_entries(frame, &ext.corners[4 * f.face], (f.item & 1) ? 1 : -1, box, f.item, f.rank,
-                           raw.data() + used);
+      raw.reserve_more(sxmpvo::kTinyEntrySlots);
+      raw.size += static_cast<size_t>(tiny_entries(frame, &ext.corners[4 * f.face], (f.item & 1) ? 1 : -1, box,
+                                                   raw.add_face(f.item, f.rank), raw.at(raw.size)));
     }
-    raw.resize(used);
     const int64_t pixels = int64_t(y1 - y0 + 1) * cols;
     sxmpvo::ABuffer& abuf = s.abuf;
     abuf.reset(pixels, int64_t(y0) * cols);
     abuf.append(raw);
     for (const FaceRun& run : runs_)
-      if (!run.large[k].empty()) abuf.append(run.large[k]);
+      if (run.large[k].size > 0) abuf.append(run.large[k]);
     abuf.gather();
     abuf.order(0, pixels);
     out.pairs.clear();

@@ -49,24 +49,23 @@ __attribute__((target_clones("avx2", "default"))) BoxKind sample_box(const Sampl
 
 namespace {
 
-int entries_scalar(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box, int32_t item,
-                   int32_t rank, ABuffer::Raw* dst) {
+int entries_scalar(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box, int32_t slot, ABuffer::RawBatch::Out dst) {
   const int64_t cols = fr.cols();
   int n = 0;
   scan_tiny_triangle(fr, v, phase1_sign, box, [&](int sx, int sy, double t) {
-    dst[n++] = ABuffer::Raw(t, item, static_cast<int32_t>(sy * cols + sx), rank);
+    dst.t[n] = t, dst.key[n] = ABuffer::RawBatch::make_key(static_cast<int32_t>(sy * cols + sx), slot);
+    ++n;
   });
   return n;
 }
 
 // A step's four entries, the lanes of mask `m` first (pixels from `pixel`, the step's first).
-__attribute__((target("avx2"), always_inline)) inline void write_step(__m256d t, int m, int32_t pixel, int32_t item,
-                                                                       int32_t rank, ABuffer::Raw* dst) {
-  alignas(32) double ts[4];
-  alignas(16) int32_t px[4];
-  _mm256_store_pd(ts, RowStepAvx2::compact_t(t, m));
-  _mm_store_si128(reinterpret_cast<__m128i*>(px), _mm_add_epi32(_mm_set1_epi32(pixel), RowStepAvx2::compact_lanes(m)));
-  for (int j = 0; j < 4; ++j) dst[j] = ABuffer::Raw(ts[j], item, px[j], rank);
+__attribute__((target("avx2"), always_inline)) inline void write_step(__m256d t, int m, int32_t pixel, int32_t slot,
+                                                                       ABuffer::RawBatch::Out dst) {
+  const __m128i px = _mm_add_epi32(_mm_set1_epi32(pixel), RowStepAvx2::compact_lanes(m));
+  _mm256_storeu_pd(dst.t, RowStepAvx2::compact_t(t, m));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(dst.key),
+                      _mm256_or_si256(_mm256_cvtepu32_epi64(px), _mm256_set1_epi64x(int64_t(uint32_t(slot)) << 32)));
 }
 
 // The row kernel's steps (row_step_avx2.h) over the box, each step's four entries written
@@ -77,8 +76,8 @@ __attribute__((target("avx2"), always_inline)) inline void write_step(__m256d t,
 // again by the full mask, a jump that is predicted right.
 template <bool kOrtho>
 __attribute__((target("avx2,popcnt"))) int entries_avx2(const SampleFrame& fr, const RowEdges& e, const RowDepth& p,
-                                                 const SampleRect& box, int32_t item, int32_t rank,
-                                                 ABuffer::Raw* dst) {
+                                                 const SampleRect& box, int32_t slot,
+                                                 ABuffer::RawBatch::Out dst) {
   const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
   const RowStepAvx2 k(e, p);
   const int cols = fr.cols();
@@ -91,9 +90,9 @@ __attribute__((target("avx2,popcnt"))) int entries_avx2(const SampleFrame& fr, c
       int inside;
       const int mask = k.step<kOrtho>(rx, ry, rz, cx, cy, cz, sx, box.x1, t, inside);
       const int32_t pixel = sy * cols + sx;
-      write_step(t, inside, pixel, item, rank, dst + n);
+      write_step(t, inside, pixel, slot, dst + n);
       if (__builtin_expect(mask != inside, 0)) {
-        write_step(t, mask, pixel, item, rank, dst + n);
+        write_step(t, mask, pixel, slot, dst + n);
         n += __builtin_popcount(mask);
       } else {
         n += __builtin_popcount(inside);
@@ -120,46 +119,36 @@ __attribute__((target("avx2"))) bool tiny_triangle_rows_avx2(const SampleFrame& 
 
 namespace {
 
-int entries_avx2_any(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box, int32_t item,
-                     int32_t rank, ABuffer::Raw* dst) {
+int entries_avx2_any(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box, int32_t slot, ABuffer::RawBatch::Out dst) {
   RowEdges e;
   RowDepth depth;
   if (!tiny_triangle_rows_avx2(fr, v, phase1_sign, e, depth)) return 0;
-  return fr.ortho() ? entries_avx2<true>(fr, e, depth, box, item, rank, dst)
-                    : entries_avx2<false>(fr, e, depth, box, item, rank, dst);
+  return fr.ortho() ? entries_avx2<true>(fr, e, depth, box, slot, dst)
+                    : entries_avx2<false>(fr, e, depth, box, slot, dst);
 }
 
-// Eight entries {t, item, pixel, rank} from the lanes of mask m (in lane order) at dst,
-// whatever m holds: three 64-byte stores of the 24-byte entries.
+// Eight entries from the lanes of mask m (in lane order) at dst, whatever m holds: a lane
+// vector of depths and one of keys.
 __attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) inline void write8(__m512d t, __m256i pixel,
-                                                                                      __mmask8 m, int32_t item,
-                                                                                      int32_t rank, ABuffer::Raw* dst) {
-  static_assert(sizeof(ABuffer::Raw) == 24 && offsetof(ABuffer::Raw, item) == 8 && offsetof(ABuffer::Raw, pixel) == 12 &&
-                offsetof(ABuffer::Raw, rank) == 16);
-  const __m512d ts = _mm512_maskz_compress_pd(m, t);
+                                                                                      __mmask8 m, int32_t slot,
+                                                                                      ABuffer::RawBatch::Out dst) {
+  _mm512_storeu_pd(dst.t, _mm512_maskz_compress_pd(m, t));
   const __m256i px = _mm256_maskz_compress_epi32(m, pixel);
-  const __m512d w1 = _mm512_castsi512_pd(_mm512_or_si512(_mm512_set1_epi64(static_cast<uint32_t>(item)),
-                                                         _mm512_slli_epi64(_mm512_cvtepu32_epi64(px), 32)));
-  const __m512d w2 = _mm512_castsi512_pd(_mm512_set1_epi64(static_cast<uint32_t>(rank)));
-  double* out = reinterpret_cast<double*>(dst);
-  const __m512i i0 = _mm512_setr_epi64(0, 8, 0, 1, 9, 0, 2, 10), i1 = _mm512_setr_epi64(0, 3, 11, 0, 4, 12, 0, 5),
-                i2 = _mm512_setr_epi64(13, 0, 6, 14, 0, 7, 15, 0);
-  _mm512_storeu_pd(out, _mm512_mask_blend_pd(0x24, _mm512_permutex2var_pd(ts, i0, w1), w2));
-  _mm512_storeu_pd(out + 8, _mm512_mask_blend_pd(0x49, _mm512_permutex2var_pd(ts, i1, w1), w2));
-  _mm512_storeu_pd(out + 16, _mm512_mask_blend_pd(0x92, _mm512_permutex2var_pd(ts, i2, w1), w2));
+  _mm512_storeu_si512(dst.key, _mm512_or_si512(_mm512_cvtepu32_epi64(px),
+                                               _mm512_set1_epi64(int64_t(uint32_t(slot)) << 32)));
 }
 
 // One step's entries at dst; returns their number.
 template <bool kOrtho>
 __attribute__((target("avx512f,avx512vl,avx512dq,popcnt"), always_inline)) inline int step_entries(
-    const RowStepAvx512& k, __m512d X, __m512d Y, __m512d Z, __mmask8 valid, __m256i pixel, int32_t item, int32_t rank,
-    ABuffer::Raw* dst) {
+    const RowStepAvx512& k, __m512d X, __m512d Y, __m512d Z, __mmask8 valid, __m256i pixel, int32_t slot,
+    ABuffer::RawBatch::Out dst) {
   __m512d t;
   __mmask8 inside;
   const __mmask8 mask = k.template step<kOrtho>(X, Y, Z, valid, t, inside);
-  write8(t, pixel, inside, item, rank, dst);
+  write8(t, pixel, inside, slot, dst);
   if (__builtin_expect(mask != inside, 0)) {
-    write8(t, pixel, mask, item, rank, dst);
+    write8(t, pixel, mask, slot, dst);
     return __builtin_popcount(mask);
   }
   return __builtin_popcount(inside);
@@ -198,7 +187,7 @@ static_assert(kTinyMaxSamples <= 64, "kDense covers eight steps of eight samples
 // loop serves every shape: no jump on the width.
 template <bool kOrtho>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) inline int dense_box(
-    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
+    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t slot, ABuffer::RawBatch::Out dst) {
   const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
   const __mmask8 in_row = static_cast<__mmask8>((1u << w) - 1);
   const __m512d bx = _mm512_maskz_loadu_pd(in_row, fr.col_x() + box.x0);  // the box's column terms
@@ -220,7 +209,7 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) 
     const __m256i offsets =
         _mm256_add_epi32(_mm256_mullo_epi32(_mm256_cvtepu8_epi32(rb), vcols), _mm256_cvtepu8_epi32(cb));
     n += step_entries<kOrtho>(k, X, Y, Z, valid, _mm256_add_epi32(_mm256_set1_epi32(r0 * cols + box.x0), offsets),
-                              item, rank, dst + n);
+                              slot, dst + n);
   }
   return n;
 }
@@ -229,12 +218,12 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"), always_inline)) 
 // step (dense_box), wider ones eight columns of a row a step.
 template <bool kOrtho>
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"))) int entries_avx512(
-    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t item, int32_t rank, ABuffer::Raw* dst) {
+    const SampleFrame& fr, const RowStepAvx512& k, const SampleRect& box, int32_t slot, ABuffer::RawBatch::Out dst) {
   const double *cx = fr.col_x(), *cy = fr.col_y(), *cz = fr.col_z();
   const int cols = fr.cols(), w = box.x1 - box.x0 + 1;
   int n = 0;
   if (w <= 8) {
-    n = dense_box<kOrtho>(fr, k, box, item, rank, dst);
+    n = dense_box<kOrtho>(fr, k, box, slot, dst);
   } else {
     const __m256i offsets = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
     for (int sy = box.y0; sy <= box.y1; ++sy) {
@@ -245,7 +234,7 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"))) int entries_avx
         n += step_entries<kOrtho>(k, _mm512_add_pd(rx, _mm512_maskz_loadu_pd(valid, cx + sx)),
                                   _mm512_add_pd(ry, _mm512_maskz_loadu_pd(valid, cy + sx)),
                                   _mm512_add_pd(rz, _mm512_maskz_loadu_pd(valid, cz + sx)), valid,
-                                  _mm256_add_epi32(_mm256_set1_epi32(sy * cols + sx), offsets), item, rank, dst + n);
+                                  _mm256_add_epi32(_mm256_set1_epi32(sy * cols + sx), offsets), slot, dst + n);
       }
     }
   }
@@ -254,14 +243,14 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2,popcnt"))) int entries_avx
 
 __attribute__((target("avx512f,avx512vl,avx512dq,avx2"))) int entries_avx512_any(const SampleFrame& fr, const Vec3* v,
                                                                                  int phase1_sign, const SampleRect& box,
-                                                                                 int32_t item, int32_t rank,
-                                                                                 ABuffer::Raw* dst) {
+                                                                                 int32_t slot,
+                                                                                 ABuffer::RawBatch::Out dst) {
   RowDepth depth;
   if (!detail::depth_plane(fr, v, depth)) return 0;
   const avx2::EdgeLanes l = avx2::edge_lanes(fr, v, -phase1_sign);  // facing as tiny_triangle_rows
   const RowStepAvx512 k(l, avx2::owns_zero(fr, l), depth);
-  return fr.ortho() ? entries_avx512<true>(fr, k, box, item, rank, dst)
-                    : entries_avx512<false>(fr, k, box, item, rank, dst);
+  return fr.ortho() ? entries_avx512<true>(fr, k, box, slot, dst)
+                    : entries_avx512<false>(fr, k, box, slot, dst);
 }
 
 }  // namespace

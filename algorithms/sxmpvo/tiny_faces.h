@@ -50,13 +50,14 @@ template <class Emit>
 void scan_tiny_triangle(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
                         Emit&& emit);
 
-// scan_tiny_triangle's samples written straight as A-buffer entries {t, item, pixel, rank},
-// in the same order, to dst; returns their number. The lane kernels write a whole step's
-// entries (four in AVX2, eight in AVX-512) whatever their coverage (no jump per sample or
-// per hit): dst needs kTinyEntrySlots.
+// scan_tiny_triangle's samples written straight as A-buffer entries (t, and the key of the
+// sample's pixel and the face's `slot` in the batch), in the same order, to dst; returns
+// their number. The lane kernels write a whole step's entries (four in AVX2, eight in
+// AVX-512) whatever their coverage (no jump per sample or per hit): dst needs
+// kTinyEntrySlots.
 constexpr int kTinyEntrySlots = kTinyMaxSamples + 8;
 using TinyEntriesFn = int (*)(const SampleFrame& fr, const Vec3* v, int phase1_sign, const SampleRect& box,
-                              int32_t item, int32_t rank, ABuffer::Raw* dst);
+                              int32_t slot, ABuffer::RawBatch::Out dst);
 TinyEntriesFn tiny_entries();           // the widest kernel this CPU runs: AVX-512, AVX2, else the scalar loop
 TinyEntriesFn tiny_entries_baseline();  // through scan_tiny_triangle (tests compare the kernels to it)
 TinyEntriesFn tiny_entries_avx2();      // the AVX2 kernel alone; nullptr without AVX2

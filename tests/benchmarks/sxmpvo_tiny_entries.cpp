@@ -72,16 +72,19 @@ void BM_TinyEntries(benchmark::State& state) {
       vob::fibonacci_view(scene.bounds(), 14, static_cast<int>(state.range(1)), vob::ViewOptions{512, 512});
   const vob::SampleFrame frame(view, 1);
   const std::vector<TinyFace> faces = tiny_faces(frame);
-  std::vector<vob::sxmpvo::ABuffer::Raw> entries(faces.size() * 4 + vob::sxmpvo::kTinyEntrySlots);
+  vob::sxmpvo::ABuffer::RawBatch entries;
+  entries.reserve_more(faces.size() * 4 + vob::sxmpvo::kTinyEntrySlots);
   size_t used = 0;
   for (auto _ : state) {
-    used = 0;
+    entries.clear();
     for (size_t i = 0; i < faces.size(); ++i) {
-      if (entries.size() < used + vob::sxmpvo::kTinyEntrySlots) entries.resize(2 * entries.size());
-      used += fn(frame, faces[i].v, faces[i].sign, faces[i].box, static_cast<int32_t>(i), static_cast<int32_t>(i),
-                 entries.data() + used);
+      entries.reserve_more(vob::sxmpvo::kTinyEntrySlots);
+      entries.size += static_cast<size_t>(fn(frame, faces[i].v, faces[i].sign, faces[i].box,
+                                             entries.add_face(static_cast<int32_t>(i), static_cast<int32_t>(i)),
+                                             entries.at(entries.size)));
     }
-    benchmark::DoNotOptimize(entries.data());
+    used = entries.size;
+    benchmark::DoNotOptimize(entries.t.data());
   }
   state.counters["faces"] = static_cast<double>(faces.size());
   state.counters["entries"] = static_cast<double>(used);
@@ -113,14 +116,13 @@ void BM_ABufferOrder(benchmark::State& state) {
   std::stable_sort(by_distance.begin(), by_distance.end(),
                    [&](int32_t a, int32_t b) { return distance[a] < distance[b]; });
   for (size_t k = 0; k < faces.size(); ++k) rank[by_distance[k]] = static_cast<int32_t>(k);
-  std::vector<vob::sxmpvo::ABuffer::Raw> entries(faces.size() * 4 + vob::sxmpvo::kTinyEntrySlots);
-  size_t used = 0;
+  vob::sxmpvo::ABuffer::RawBatch entries;
   for (size_t i = 0; i < faces.size(); ++i) {
-    if (entries.size() < used + vob::sxmpvo::kTinyEntrySlots) entries.resize(2 * entries.size());
-    used += fn(frame, faces[i].v, faces[i].sign, faces[i].box, static_cast<int32_t>(2 * i), rank[i],
-               entries.data() + used);
+    entries.reserve_more(vob::sxmpvo::kTinyEntrySlots);
+    entries.size += static_cast<size_t>(fn(frame, faces[i].v, faces[i].sign, faces[i].box,
+                                           entries.add_face(static_cast<int32_t>(2 * i), rank[i]), entries.at(entries.size)));
   }
-  entries.resize(used);
+  const size_t used = entries.size;
   vob::sxmpvo::ABuffer abuf;
   abuf.set_lanes(lanes);
   abuf.reset(frame.num_samples());

@@ -16,6 +16,14 @@ namespace {
 int32_t front(int32_t cell) { return cell * 2 + 1; }
 int32_t back(int32_t cell) { return cell * 2; }
 
+// Entries as a batch, as the scans record them (each its own face).
+ABuffer::RawBatch batch_of(std::vector<ABuffer::Raw>::const_iterator b, std::vector<ABuffer::Raw>::const_iterator e) {
+  ABuffer::RawBatch c;
+  for (; b != e; ++b) c.push_back(*b);
+  return c;
+}
+ABuffer::RawBatch batch_of(const std::vector<ABuffer::Raw>& v) { return batch_of(v.begin(), v.end()); }
+
 std::vector<double> depths(const ABuffer& a, int64_t pixel) {
   std::vector<double> t;
   for (int32_t i = a.head(pixel); i >= 0; i = a.entry(i).next) t.push_back(a.entry(i).t);
@@ -79,8 +87,8 @@ TEST(ABuffer, ReplaysArrivalsByRank) {
   by_rank.insert(0, 0.5, back(3));
   by_rank.finish();
   // The same entries with their ranks, recorded last rank first, in two batches.
-  const std::vector<ABuffer::Raw> b1{{0.5, back(3), 0, 4}, {2.0, front(2), 0, 3}};
-  const std::vector<ABuffer::Raw> b2{{5.0, back(1), 1, 2}, {3.0, back(1), 0, 1}, {1.0, back(0), 0, 0}};
+  const ABuffer::RawBatch b1 = batch_of({{0.5, back(3), 0, 4}, {2.0, front(2), 0, 3}});
+  const ABuffer::RawBatch b2 = batch_of({{5.0, back(1), 1, 2}, {3.0, back(1), 0, 1}, {1.0, back(0), 0, 0}});
   shuffled.reset(2);
   shuffled.append(b1);
   shuffled.append(b2);
@@ -115,8 +123,8 @@ int64_t expect_naive_lists(std::vector<ABuffer::Raw> all, int64_t pixels, std::m
     l.insert(l.begin() + j, {r.t, r.item});
   }
   std::shuffle(all.begin(), all.end(), rng);  // recorded in any order
-  const std::vector<ABuffer::Raw> b1(all.begin(), all.begin() + all.size() / 3),
-      b2(all.begin() + all.size() / 3, all.end());
+  const ABuffer::RawBatch b1 = batch_of(all.begin(), all.begin() + all.size() / 3),
+                         b2 = batch_of(all.begin() + all.size() / 3, all.end());
   ABuffer a;
   a.reset(pixels);
   a.append(b2);
@@ -193,7 +201,8 @@ TEST(ABuffer, LanesGiveTheScalarListsAndCounts) {
       all.push_back({t[i], int32_t(rng() % 2 ? front(i) : back(i)), int32_t(p), next_rank += 1 + int32_t(rng() % 3)});
   }
   std::shuffle(all.begin(), all.end(), rng);  // recorded in any order
-  const std::vector<ABuffer::Raw> b1(all.begin(), all.begin() + all.size() / 2), b2(all.begin() + all.size() / 2, all.end());
+  const ABuffer::RawBatch b1 = batch_of(all.begin(), all.begin() + all.size() / 2),
+                         b2 = batch_of(all.begin() + all.size() / 2, all.end());
   ABuffer lanes, scalar;
   scalar.set_lanes(false);
   for (ABuffer* a : {&lanes, &scalar}) {

@@ -59,15 +59,17 @@ Hits by_tiny_path(const SampleFrame& f, const Vec3* v, bool& taken, SampleRect& 
     for (const sxmpvo::TinyEntriesFn fn : {sxmpvo::tiny_entries_avx512(), sxmpvo::tiny_entries_avx2(),
                                            sxmpvo::tiny_entries_baseline()}) {
       if (!fn) continue;  // a kernel this CPU cannot run
-      sxmpvo::ABuffer::Raw e[sxmpvo::kTinyEntrySlots];
-      const int n = fn(f, v, s, box, 17, 5, e);
+      sxmpvo::ABuffer::RawBatch columns;
+      columns.reserve_more(sxmpvo::kTinyEntrySlots);
+      const int n = fn(f, v, s, box, columns.add_face(17, 5), columns.at(0));
       EXPECT_EQ(n, static_cast<int>(h.size()));
       for (int j = 0; j < n && j < static_cast<int>(h.size()); ++j) {
         const auto [x, y, t] = h[j];
-        EXPECT_EQ(e[j].pixel, y * f.cols() + x);
-        EXPECT_EQ(std::memcmp(&e[j].t, &t, sizeof t), 0) << e[j].t << " " << t;
-        EXPECT_EQ(e[j].item, 17);
-        EXPECT_EQ(e[j].rank, 5);
+        const sxmpvo::ABuffer::Raw e = columns[static_cast<size_t>(j)];
+        EXPECT_EQ(e.pixel, y * f.cols() + x);
+        EXPECT_EQ(std::memcmp(&e.t, &t, sizeof t), 0) << e.t << " " << t;
+        EXPECT_EQ(e.item, 17);
+        EXPECT_EQ(e.rank, 5);
       }
     }
   }
