@@ -81,7 +81,7 @@ class ABuffer {
     }
     // Room for n more entries past size: the columns are grown (doubled), never shrunk.
     void reserve_more(size_t n) {
-      if (t.size() < size + n) grow(std::max(2 * t.size(), size + n + 4096));
+      if (t.size() < size + n) grow(std::max(2 * t.size(), size + n + 64));
     }
     void push_back(double t_, int32_t pixel, int32_t slot) {
       reserve_more(1);
