@@ -219,10 +219,11 @@ class SxmpvoOrderer final : public Orderer {
               run.slot_face[band] = static_cast<int64_t>(i), run.slot[band] = entries.add_face(item, rank);
             entries.reserve_more(static_cast<size_t>(e - h));
             const sxmpvo::ABuffer::RawBatch::Out out = entries.at(entries.size);
-            const uint64_t slot = uint64_t(static_cast<uint32_t>(run.slot[band])) << 32;
+            const int32_t slot = run.slot[band];
             for (int j = h; j < e; ++j) {
               out.t[j - h] = hits.t[j];
-              out.key[j - h] = slot | static_cast<uint32_t>(int64_t(hits.sy[j]) * cols + hits.sx[j]);
+              out.key[j - h] =
+                  sxmpvo::ABuffer::RawBatch::make_key(static_cast<int32_t>(int64_t(hits.sy[j]) * cols + hits.sx[j]), slot);
             }
             entries.size += static_cast<size_t>(e - h);
             h = e;
