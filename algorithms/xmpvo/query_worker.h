@@ -29,6 +29,10 @@ struct Wedge {
   int32_t pos;  // number of inside faces in front of it
 };
 
+// Where faces g0 and g1 first occur in l[0, n), n where one does not (edge_sweep.cpp's
+// swaps); `lanes`: in AVX-512 lanes where the CPU has them (the same answers).
+void first_of_two(const int32_t* l, int32_t n, int32_t g0, int32_t g1, int32_t& i0, int32_t& i1, bool lanes = true);
+
 // What every worker reads of a view besides QueryInput, made once per view
 // (run_ray_queries).
 struct ViewTables {

@@ -5,10 +5,13 @@
 #include <tbb/global_control.h>
 
 #include <map>
+#include <numeric>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "algorithms/xmpvo/edge_contacts.h"
+#include "algorithms/xmpvo/query_worker.h"
 #include "algorithms/xmpvo/ray_queries.h"
 #include "datasets/datasets.h"
 #include "datasets/generators/view_cases.h"
@@ -223,4 +226,27 @@ TEST(XmpvoEdgeSweep, PointOnAnotherEdgeAfterASweepStillGathers) {
   EXPECT_EQ(ends.stats.sweep_crossings, 0);
   EXPECT_EQ(ends.pairs, gathered.pairs);
   EXPECT_EQ(ends.stats.vertex_queries, gathered.stats.vertex_queries);
+}
+
+// The swaps' search for the two faces of a crossed edge: in lanes and one face at a time,
+// the first place of each, or n where it is not listed, over every list length up to three
+// lane widths and every place (a face is listed once in a sweep's list).
+TEST(XmpvoEdgeSweep, FirstOfTwoFindsBothFacesInLanesAndOneAtATime) {
+  std::mt19937 rng(7);
+  for (int32_t n = 0; n <= 48; ++n) {
+    std::vector<int32_t> l(static_cast<size_t>(n));
+    std::iota(l.begin(), l.end(), 100);
+    std::shuffle(l.begin(), l.end(), rng);
+    for (int32_t p0 = 0; p0 <= n; ++p0)
+      for (int32_t p1 : {0, n / 2, n - 1, n}) {
+        if (p1 < 0) continue;
+        const int32_t g0 = p0 < n ? l[p0] : 7, g1 = p1 < n ? l[p1] : 8;  // 7, 8: listed nowhere
+        for (const bool lanes : {false, true}) {
+          int32_t i0 = -1, i1 = -1;
+          xmpvo::detail::first_of_two(l.data(), n, g0, g1, i0, i1, lanes);
+          EXPECT_EQ(i0, p0) << "n " << n << " lanes " << lanes;
+          EXPECT_EQ(i1, p1) << "n " << n << " lanes " << lanes;
+        }
+      }
+  }
 }
