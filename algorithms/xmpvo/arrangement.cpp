@@ -24,17 +24,22 @@ struct BucketEdge {
   bool unswept;  // Arrangement::unswept(id)
 };
 
-// A bucket's edges as the pair loop's first pass reads them, one array per field, four
-// entries of padding at the end (never read as edges: lanes past n are masked).
+// A bucket's edges as the pair loop's first pass reads them, one array per field, eight
+// entries of padding at the end (never read as edges: lanes past n are masked). The edges'
+// points (ux, uy: the first; vx, vy: the second) only for the AVX-512 pass.
 struct BucketLanes {
-  std::vector<double> x0, y0, y1;
+  std::vector<double> x0, y0, y1, ux, uy, vx, vy;
   std::vector<int32_t> a, b, unswept;  // unswept: -1 for an unswept edge, else 0
-  void fill(const std::vector<BucketEdge>& local) {
-    const size_t n = local.size();
-    x0.resize(n + 4), y0.resize(n + 4), y1.resize(n + 4), a.resize(n + 4), b.resize(n + 4), unswept.resize(n + 4);
+  void fill(const std::vector<BucketEdge>& local, bool points) {
+    const size_t n = local.size(), m = n + 8;
+    x0.resize(m), y0.resize(m), y1.resize(m), a.resize(m), b.resize(m), unswept.resize(m);
     for (size_t i = 0; i < n; ++i)
       x0[i] = local[i].box.x0, y0[i] = local[i].box.y0, y1[i] = local[i].box.y1, a[i] = local[i].a, b[i] = local[i].b,
       unswept[i] = -int32_t(local[i].unswept);
+    if (!points) return;
+    ux.resize(m), uy.resize(m), vx.resize(m), vy.resize(m);
+    for (size_t i = 0; i < n; ++i)
+      ux[i] = local[i].ua.first, uy[i] = local[i].ua.second, vx[i] = local[i].ub.first, vy[i] = local[i].ub.second;
   }
 };
 
@@ -141,6 +146,86 @@ __attribute__((target("avx2"))) size_t filter_pairs_avx2(const BucketEdge& ix, c
   }
   return q;
 }
+// Both passes at once for edge ix, eight later edges a step (AVX-512): the candidates of
+// near_pairs_avx2, then the double filter of filter_pairs_avx2 on them, computed for every
+// lane from the bucket's point arrays (no gather of scattered copies). Writes {candidate,
+// f} to maybe[q] for f != 0 in candidate order, as filter_pairs_avx2 does, and up to seven
+// entries past its last (room the caller gives); returns q. Adds the candidates to
+// `candidates` and those left to `scalar` that it could not decide (f = 2) to `unsure`.
+// The same comparisons and the same double operations, lane by lane (no FMA: this file is
+// built with -ffp-contract=off).
+template <class OwnCorner, class Scalar>
+__attribute__((target("avx512f,avx512vl,avx512dq,avx2"))) size_t near_filter_avx512(
+    const BucketEdge& ix, const BucketEdge* local, const BucketLanes& l, size_t y0, size_t n, bool below, double floor,
+    double x_in, double y_in, double quick, OwnCorner own_corner, Scalar&& scalar, std::pair<uint32_t, int>* maybe,
+    int64_t& candidates, int64_t& unsure) {
+  const __m512d ax1 = _mm512_set1_pd(ix.box.x1), ay0 = _mm512_set1_pd(ix.box.y0), ay1 = _mm512_set1_pd(ix.box.y1);
+  const __m512d vfloor = _mm512_set1_pd(floor), vx_in = _mm512_set1_pd(x_in), vy_in = _mm512_set1_pd(y_in);
+  const __m256i ia = _mm256_set1_epi32(ix.a), ib = _mm256_set1_epi32(ix.b);
+  const __m256i ix_unswept = _mm256_set1_epi32(-int32_t(ix.unswept));
+  const __mmask8 below_mask = below ? 0xFF : 0;
+  const __m512d hi = _mm512_set1_pd(1.001 * quick), lo = _mm512_set1_pd(-1.001 * quick);
+  const __m512d ax = _mm512_set1_pd(ix.ua.first), ay = _mm512_set1_pd(ix.ua.second);
+  const __m512d bx = _mm512_set1_pd(ix.ub.first), by = _mm512_set1_pd(ix.ub.second);
+  const __m512d abx = _mm512_sub_pd(bx, ax), aby = _mm512_sub_pd(by, ay);
+  // Lane j's entry {y + j, 1}, as std::pair<uint32_t, int> lies in memory.
+  const __m512i sure_entry = _mm512_add_epi64(_mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0), _mm512_set1_epi64(int64_t(1) << 32));
+  size_t q = 0;
+  for (size_t y = y0; y < n; y += 8) {
+    const __mmask8 valid = n - y >= 8 ? __mmask8(0xFF) : __mmask8((1u << (n - y)) - 1);
+    const __m512d x0 = _mm512_loadu_pd(&l.x0[y]), by0 = _mm512_loadu_pd(&l.y0[y]), by1 = _mm512_loadu_pd(&l.y1[y]);
+    const unsigned in_run = _mm512_cmp_pd_mask(x0, ax1, _CMP_LE_OQ) & valid;
+    const int end = __builtin_ctz(~in_run);  // lanes [0, end) are in the run
+    const __mmask8 overlap = _mm512_cmp_pd_mask(ay0, by1, _CMP_LE_OQ) & _mm512_cmp_pd_mask(by0, ay1, _CMP_LE_OQ);
+    const __m512d ly = _mm512_max_pd(by0, ay0);
+    const __mmask8 low = _mm512_cmp_pd_mask(ly, vfloor, _CMP_LT_OQ) & below_mask;
+    const __mmask8 inside = _mm512_cmp_pd_mask(x0, vx_in, _CMP_GT_OQ) & _mm512_cmp_pd_mask(ly, vy_in, _CMP_GT_OQ);
+    const __m256i pa = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&l.a[y]));
+    const __m256i pb = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&l.b[y]));
+    const __mmask8 shared = _mm256_cmpeq_epi32_mask(ia, pa) | _mm256_cmpeq_epi32_mask(ia, pb) |
+                            _mm256_cmpeq_epi32_mask(ib, pa) | _mm256_cmpeq_epi32_mask(ib, pb);
+    const __m256i pu = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(&l.unswept[y]));
+    const __mmask8 both_unswept = _mm256_test_epi32_mask(ix_unswept, pu);
+    unsigned keep = overlap & ~shared & ~low & ~both_unswept & ((1u << end) - 1);
+    // Corners near the bucket's sides (rare): the bucket's own column and row decide.
+    for (unsigned edge = keep & ~unsigned(inside); edge != 0; edge &= edge - 1) {
+      const int j = __builtin_ctz(edge);
+      if (!own_corner(y + j)) keep &= ~(1u << j);
+    }
+    candidates += __builtin_popcount(keep);
+    // ca = sign(a, c, d), cb = sign(b, c, d), ac = sign(c, a, b), ad = sign(d, a, b).
+    const __m512d cx = _mm512_loadu_pd(&l.ux[y]), cy = _mm512_loadu_pd(&l.uy[y]);
+    const __m512d dx = _mm512_loadu_pd(&l.vx[y]), dy = _mm512_loadu_pd(&l.vy[y]);
+    const __m512d dcx = _mm512_sub_pd(dx, cx), dcy = _mm512_sub_pd(dy, cy);
+    const __m512d oca = _mm512_sub_pd(_mm512_mul_pd(dcx, _mm512_sub_pd(ay, cy)), _mm512_mul_pd(dcy, _mm512_sub_pd(ax, cx)));
+    const __m512d ocb = _mm512_sub_pd(_mm512_mul_pd(dcx, _mm512_sub_pd(by, cy)), _mm512_mul_pd(dcy, _mm512_sub_pd(bx, cx)));
+    const __m512d oac = _mm512_sub_pd(_mm512_mul_pd(abx, _mm512_sub_pd(cy, ay)), _mm512_mul_pd(aby, _mm512_sub_pd(cx, ax)));
+    const __m512d oad = _mm512_sub_pd(_mm512_mul_pd(abx, _mm512_sub_pd(dy, ay)), _mm512_mul_pd(aby, _mm512_sub_pd(dx, ax)));
+    const unsigned pca = _mm512_cmp_pd_mask(oca, hi, _CMP_GT_OQ), nca = _mm512_cmp_pd_mask(oca, lo, _CMP_LT_OQ);
+    const unsigned pcb = _mm512_cmp_pd_mask(ocb, hi, _CMP_GT_OQ), ncb = _mm512_cmp_pd_mask(ocb, lo, _CMP_LT_OQ);
+    const unsigned pac = _mm512_cmp_pd_mask(oac, hi, _CMP_GT_OQ), nac = _mm512_cmp_pd_mask(oac, lo, _CMP_LT_OQ);
+    const unsigned pad = _mm512_cmp_pd_mask(oad, hi, _CMP_GT_OQ), nad = _mm512_cmp_pd_mask(oad, lo, _CMP_LT_OQ);
+    const unsigned certain = (pca | nca) & (pcb | ncb) & (pac | nac) & (pad | nad);
+    const unsigned apart = (pca & pcb) | (nca & ncb) | (pac & pad) | (nac & nad);
+    if ((keep & ~certain) == 0) {  // nearly always: every kept pair decided here
+      const __mmask8 sure = static_cast<__mmask8>(keep & ~apart);
+      const __m512i entries = _mm512_add_epi64(sure_entry, _mm512_set1_epi64(int64_t(y)));
+      _mm512_storeu_si512(maybe + q, _mm512_maskz_compress_epi64(sure, entries));
+      q += static_cast<size_t>(__builtin_popcount(sure));
+    } else {
+      for (unsigned bits = keep; bits != 0; bits &= bits - 1) {
+        const int j = __builtin_ctz(bits);
+        const int f = (certain >> j) & 1 ? !((apart >> j) & 1) : scalar(local[y + j]);
+        unsure += f == 2;
+        maybe[q] = {static_cast<uint32_t>(y + j), f};
+        q += f != 0;
+      }
+    }
+    if (end < 8) break;
+  }
+  return q;
+}
+
 // Where the crossing of the edges e = (a, b) and f = (c, d) lies in projected doubles: the
 // computed point with a generous error radius, inside both edges' boxes; their whole
 // common box when the doubles are too close to call. From the bucket's copies (the
@@ -237,6 +322,9 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   lines_marked = filter;
   point_on_line.assign(points.size(), 0);
   const bool avx2 = lanes && cpu_has_avx2();
+  // Both passes at once in AVX-512 lanes; with the double filter only (the exact and
+  // double modes' other paths stay with the two passes).
+  const bool avx512 = avx2 && lanes_avx512 && cpu_has_avx512() && signs.mode == Mode::Exact && proj.uv_filter;
   edge_vertex_off.assign(edges.size() + 1, 0);  // crossings per edge, at e + 1
   // Proper crossing from the double filter: 1 / 0 when certain, 2 when not. No early exit:
   // its outcomes are unpredictable, all four signs cost less than a mispredicted branch.
@@ -299,8 +387,8 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
       // `near`; of those, the ones the filter does not rule out, with its answer, in
       // `maybe`; then the crossings, in run order.
       near.resize(n + 4);  // the lanes' first pass writes up to three past its last
-      maybe.resize(n);
-      if (avx2) bucket_lanes.fill(local);
+      maybe.resize(n + 8);  // the AVX-512 pass writes up to seven past its last
+      if (avx2) bucket_lanes.fill(local, avx512);
       for (size_t x = 0; x < n; ++x) {
         const Item& ix = local[x];
         const Box& ba = ix.box;
@@ -310,60 +398,70 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
           const double lx = local[y].box.x0, ly = std::max(ba.y0, local[y].box.y0);  // lx = max(ba.x0, bb.x0): sorted
           return grid.col(lx) == c && grid.row(ly) == r;
         };
-        size_t nc = 0;
-        if (avx2) {
-          nc = near_pairs_avx2(ix, bucket_lanes, std::max(x + 1, first), n, r > 0, cy0 - ty, cx0 + tx, cy0 + ty,
-                               own_corner, near.data());
-        } else {
-          size_t m = 0;
-          for (size_t y = std::max(x + 1, first); y < n && local[y].box.x0 <= ba.x1; ++y) {
-            const Item& iy = local[y];
-            const Box& bb = iy.box;
-            // Overlap in y, no shared point (no proper crossing), and the corner not clearly
-            // below this bucket's row.
-            const double ly = std::max(ba.y0, bb.y0);
-            const bool keep = (ba.y0 <= bb.y1) & (bb.y0 <= ba.y1) & (ix.a != iy.a) & (ix.a != iy.b) &
-                              (ix.b != iy.a) & (ix.b != iy.b) & !((r > 0) & (ly < cy0 - ty));
-            near[m] = static_cast<uint32_t>(y);
-            m += keep;
-          }
-          for (size_t k = 0; k < m; ++k) {
-            const Item& iy = local[near[k]];
-            const double lx = iy.box.x0, ly = std::max(ba.y0, iy.box.y0);
-            const bool inside = (lx > cx0 + tx) & (ly > cy0 + ty);
-            near[nc] = near[k];
-            nc += inside || own_corner(near[k]);
-          }
-        }
-        // Crossings of two inner edges of the unswept sheet: read by no sweep (the lanes
-        // drop them themselves).
-        if (ix.unswept && !avx2) {
-          size_t m = 0;
-          for (size_t k = 0; k < nc; ++k) {
-            near[m] = near[k];
-            m += !local[near[k]].unswept;
-          }
-          nc = m;
-        }
-        candidates += static_cast<int64_t>(nc);
+        auto scalar = [&](const Item& iy) { return filtered_cross(ix.ua, ix.ub, iy.ua, iy.ub); };
+        // The pairs the filter does not rule out, with its answers, in `maybe[0, q)`.
         size_t q = 0;
-        if (!filter) {
-          for (size_t k = 0; k < nc; ++k) maybe[q++] = {near[k], 2};
+        if (avx512) {
+          int64_t nc = 0, unsure = 0;
+          q = near_filter_avx512(ix, local.data(), bucket_lanes, std::max(x + 1, first), n, r > 0, cy0 - ty, cx0 + tx,
+                                 cy0 + ty, quick, own_corner, scalar, maybe.data(), nc, unsure);
+          candidates += nc;
+          crossings_filtered += nc - unsure;
+          crossings_rechecked += unsure;
         } else {
-          auto scalar = [&](const Item& iy) { return filtered_cross(ix.ua, ix.ub, iy.ua, iy.ub); };
+          size_t nc = 0;
           if (avx2) {
-            q = filter_pairs_avx2(ix, local.data(), near.data(), nc, quick, maybe.data(), scalar);
+            nc = near_pairs_avx2(ix, bucket_lanes, std::max(x + 1, first), n, r > 0, cy0 - ty, cx0 + tx, cy0 + ty,
+                                 own_corner, near.data());
           } else {
-            for (size_t k = 0; k < nc; ++k) {
-              const int f = scalar(local[near[k]]);
-              maybe[q] = {near[k], f};
-              q += f != 0;
+            size_t m = 0;
+            for (size_t y = std::max(x + 1, first); y < n && local[y].box.x0 <= ba.x1; ++y) {
+              const Item& iy = local[y];
+              const Box& bb = iy.box;
+              // Overlap in y, no shared point (no proper crossing), and the corner not clearly
+              // below this bucket's row.
+              const double ly = std::max(ba.y0, bb.y0);
+              const bool keep = (ba.y0 <= bb.y1) & (bb.y0 <= ba.y1) & (ix.a != iy.a) & (ix.a != iy.b) &
+                                (ix.b != iy.a) & (ix.b != iy.b) & !((r > 0) & (ly < cy0 - ty));
+              near[m] = static_cast<uint32_t>(y);
+              m += keep;
+            }
+            for (size_t k = 0; k < m; ++k) {
+              const Item& iy = local[near[k]];
+              const double lx = iy.box.x0, ly = std::max(ba.y0, iy.box.y0);
+              const bool inside = (lx > cx0 + tx) & (ly > cy0 + ty);
+              near[nc] = near[k];
+              nc += inside || own_corner(near[k]);
+            }
+            // Crossings of two inner edges of the unswept sheet: read by no sweep (the
+            // lanes drop them themselves).
+            if (ix.unswept) {
+              size_t u = 0;
+              for (size_t k = 0; k < nc; ++k) {
+                near[u] = near[k];
+                u += !local[near[k]].unswept;
+              }
+              nc = u;
             }
           }
-          int64_t unsure = 0;
-          for (size_t k = 0; k < q; ++k) unsure += maybe[k].second == 2;
-          crossings_filtered += static_cast<int64_t>(nc) - unsure;
-          crossings_rechecked += unsure;
+          candidates += static_cast<int64_t>(nc);
+          if (!filter) {
+            for (size_t k = 0; k < nc; ++k) maybe[q++] = {near[k], 2};
+          } else {
+            if (avx2) {
+              q = filter_pairs_avx2(ix, local.data(), near.data(), nc, quick, maybe.data(), scalar);
+            } else {
+              for (size_t k = 0; k < nc; ++k) {
+                const int f = scalar(local[near[k]]);
+                maybe[q] = {near[k], f};
+                q += f != 0;
+              }
+            }
+            int64_t unsure = 0;
+            for (size_t k = 0; k < q; ++k) unsure += maybe[k].second == 2;
+            crossings_filtered += static_cast<int64_t>(nc) - unsure;
+            crossings_rechecked += unsure;
+          }
         }
         for (size_t k = 0; k < q; ++k) {
           const Item& iy = local[maybe[k].first];

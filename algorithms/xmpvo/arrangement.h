@@ -58,6 +58,9 @@ struct Arrangement {
   // The pair loop's first pass and double filter four pairs a step in AVX2 lanes where the
   // CPU has them (the same answers: tests compare the two).
   bool lanes = true;
+  // Where the CPU has AVX-512 too: both passes at once, eight pairs a step (the same
+  // answers: tests compare it with the other two).
+  bool lanes_avx512 = true;
   // The sheet whose inner edges the sweeps leave out (edge_sweep.cpp; +1 front, -1 back, 0
   // none), set before build(): an edge with two kept faces on either side of it, both
   // facing this way. Such edges get no crossing lists, and a pair of two of them is not

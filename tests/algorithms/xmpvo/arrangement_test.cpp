@@ -191,8 +191,28 @@ TEST(XmpvoArrangement, EachEdgeHoldsItsCrossingsByKey) {
   EXPECT_EQ(arr.edge_crossings.size(), 2 * crossings);
 }
 
-// The double filter in AVX2 lanes and one pair at a time find the same crossings, in the
-// same order, with the same counts of pairs decided and left to the exact test.
+namespace {
+// The lane kinds each test runs against the scalar pass: AVX2's two passes, and where the
+// CPU has it AVX-512's single pass.
+std::vector<bool> avx512_kinds() { return cpu_has_avx512() ? std::vector<bool>{false, true} : std::vector<bool>{false}; }
+
+// The same crossings, in the same order, with the same counts of pairs decided and left to
+// the exact test.
+void expect_same_arrangement(const Arrangement& lanes, const Arrangement& scalar, const std::string& what) {
+  ASSERT_EQ(lanes.vertices.size(), scalar.vertices.size()) << what;
+  for (size_t v = 0; v < lanes.vertices.size(); ++v) {
+    const ArrVertex &x = lanes.vertices[v], &y = scalar.vertices[v];
+    EXPECT_TRUE(x.a == y.a && x.b == y.b && x.c == y.c && x.d == y.d && x.e1 == y.e1 && x.e2 == y.e2 &&
+                x.t == y.t && x.box.x0 == y.box.x0 && x.box.y0 == y.box.y0 && x.box.x1 == y.box.x1 &&
+                x.box.y1 == y.box.y1)
+        << what << " vertex " << v;
+  }
+  EXPECT_EQ(lanes.crossings_filtered, scalar.crossings_filtered) << what;
+  EXPECT_EQ(lanes.crossings_rechecked, scalar.crossings_rechecked) << what;
+}
+}  // namespace
+
+// The double filter in lanes and one pair at a time find the same crossings.
 // Views along the axes of structured blocks put many pairs' corners on the lines between
 // buckets, where the lanes' first pass asks the bucket's own column and row.
 TEST(XmpvoArrangement, LanesMatchTheScalarPassOnBucketSides) {
@@ -206,12 +226,18 @@ TEST(XmpvoArrangement, LanesMatchTheScalarPassOnBucketSides) {
       Signs signs;
       Projection proj;
       project(s, views[vi], signs, proj);
-      Arrangement lanes, scalar;
+      Arrangement scalar;
       scalar.lanes = false;
-      lanes.set_faces(ext);
       scalar.set_faces(ext);
-      EXPECT_EQ(lanes.build(ext, proj, signs), scalar.build(ext, proj, signs)) << name << " view " << vi;
-      EXPECT_EQ(lanes.vertices.size(), scalar.vertices.size()) << name << " view " << vi;
+      const int64_t candidates = scalar.build(ext, proj, signs);
+      for (const bool wide : avx512_kinds()) {
+        Arrangement lanes;
+        lanes.lanes_avx512 = wide;
+        lanes.set_faces(ext);
+        const std::string what = name + " view " + std::to_string(vi) + (wide ? " avx512" : " avx2");
+        EXPECT_EQ(lanes.build(ext, proj, signs), candidates) << what;
+        expect_same_arrangement(lanes, scalar, what);
+      }
     }
   }
 }
@@ -231,22 +257,21 @@ TEST(XmpvoArrangement, FilterLanesMatchTheScalarFilter) {
       Signs signs;
       Projection proj;
       project(s, view, signs, proj);
-      Arrangement lanes, scalar;
+      Arrangement scalar;
       scalar.lanes = false;
-      lanes.unswept_sheet = scalar.unswept_sheet = sheet;
-      lanes.set_faces(ext);
+      scalar.unswept_sheet = sheet;
       scalar.set_faces(ext);
-      EXPECT_EQ(lanes.build(ext, proj, signs), scalar.build(ext, proj, signs)) << name << " view " << vi << " sheet " << sheet;
-      ASSERT_EQ(lanes.vertices.size(), scalar.vertices.size()) << name << " view " << vi << " sheet " << sheet;
-      for (size_t v = 0; v < lanes.vertices.size(); ++v) {
-        const ArrVertex &x = lanes.vertices[v], &y = scalar.vertices[v];
-        EXPECT_TRUE(x.a == y.a && x.b == y.b && x.c == y.c && x.d == y.d && x.e1 == y.e1 && x.e2 == y.e2 &&
-                    x.t == y.t && x.box.x0 == y.box.x0 && x.box.y0 == y.box.y0 && x.box.x1 == y.box.x1 &&
-                    x.box.y1 == y.box.y1)
-            << name << " view " << vi << " vertex " << v;
+      const int64_t candidates = scalar.build(ext, proj, signs);
+      for (const bool wide : avx512_kinds()) {
+        Arrangement lanes;
+        lanes.lanes_avx512 = wide;
+        lanes.unswept_sheet = sheet;
+        lanes.set_faces(ext);
+        const std::string what =
+            name + " view " + std::to_string(vi) + " sheet " + std::to_string(sheet) + (wide ? " avx512" : " avx2");
+        EXPECT_EQ(lanes.build(ext, proj, signs), candidates) << what;
+        expect_same_arrangement(lanes, scalar, what);
       }
-      EXPECT_EQ(lanes.crossings_filtered, scalar.crossings_filtered) << name << " view " << vi;
-      EXPECT_EQ(lanes.crossings_rechecked, scalar.crossings_rechecked) << name << " view " << vi;
     }
   }
 }
