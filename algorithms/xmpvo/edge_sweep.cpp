@@ -57,25 +57,38 @@
 namespace vob::xmpvo::detail {
 
 namespace {
-// first_of_two in AVX-512 lanes: sixteen faces a compare.
-__attribute__((target("avx512f,avx512vl,avx512dq,avx2"))) void first_of_two_avx512(const int32_t* l, int32_t n, int32_t g0,
-                                                                                   int32_t g1, int32_t& i0, int32_t& i1) {
+// first_of_two in AVX-512 lanes: the first 32 places in two compares each with no branch
+// (most lists hold 5 to 17 faces, unpredictably either side of 16), the rest sixteen a step.
+__attribute__((target("avx512f,avx512vl,avx512dq,avx2"))) void first_of_two_avx512(
+    const int32_t* l, int32_t n, int32_t g0, int32_t g1, int32_t& i0, int32_t& i1) {
+  if (n <= 0) {  // l may be null: no l + 16
+    i0 = i1 = n;
+    return;
+  }
   const __m512i v0 = _mm512_set1_epi32(g0), v1 = _mm512_set1_epi32(g1);
-  int32_t f0 = n, f1 = n;
-  for (int32_t j = 0; j < n; j += 16) {
-    const __mmask16 valid = n - j >= 16 ? __mmask16(0xFFFF) : __mmask16((1u << (n - j)) - 1);
+  const unsigned in0 = (1u << std::min(n, 16)) - 1, in1 = (1u << std::clamp(n - 16, 0, 16)) - 1;
+  const __m512i x0 = _mm512_maskz_loadu_epi32(static_cast<__mmask16>(in0), l);
+  const __m512i x1 = _mm512_maskz_loadu_epi32(static_cast<__mmask16>(in1), l + 16);
+  const uint32_t m0 = _mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(in0), x0, v0) |
+                      uint32_t(_mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(in1), x1, v0)) << 16;
+  const uint32_t m1 = _mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(in0), x0, v1) |
+                      uint32_t(_mm512_mask_cmpeq_epi32_mask(static_cast<__mmask16>(in1), x1, v1)) << 16;
+  int32_t f0 = m0 ? __builtin_ctz(m0) : n, f1 = m1 ? __builtin_ctz(m1) : n;
+  for (int32_t j = 32; j < n; j += 16) {
+    const __mmask16 valid = static_cast<__mmask16>((1u << std::min(n - j, 16)) - 1);
     const __m512i x = _mm512_maskz_loadu_epi32(valid, l + j);
-    const unsigned m0 = _mm512_mask_cmpeq_epi32_mask(valid, x, v0), m1 = _mm512_mask_cmpeq_epi32_mask(valid, x, v1);
-    f0 = std::min(f0, m0 ? j + __builtin_ctz(m0) : n);
-    f1 = std::min(f1, m1 ? j + __builtin_ctz(m1) : n);
+    const unsigned k0 = _mm512_mask_cmpeq_epi32_mask(valid, x, v0), k1 = _mm512_mask_cmpeq_epi32_mask(valid, x, v1);
+    f0 = std::min(f0, k0 ? j + __builtin_ctz(k0) : n);
+    f1 = std::min(f1, k1 ? j + __builtin_ctz(k1) : n);
   }
   i0 = f0, i1 = f1;
 }
 }  // namespace
 
 // Both in one pass with no jump on the faces: where std::find stopped was a coin toss, a
-// mispredicted exit per search. In lanes about 4% of the 200k helix's ray queries at view
-// 0 (the scalar loop was about 40% of the sweep's samples).
+// mispredicted exit per search. In lanes: the 200k helix's ray queries at view 0 about 3%
+// faster (the scalar loop was about 40% of the sweep's samples), and 3.5% more with the
+// first 32 places in two compares instead of a loop of sixteen a step.
 void first_of_two(const int32_t* l, int32_t n, int32_t g0, int32_t g1, int32_t& i0, int32_t& i1, bool lanes) {
   static const bool avx512 = cpu_has_avx512();
   if (lanes && avx512) return first_of_two_avx512(l, n, g0, g1, i0, i1);
