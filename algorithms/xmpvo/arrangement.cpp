@@ -322,9 +322,9 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   lines_marked = filter;
   point_on_line.assign(points.size(), 0);
   const bool avx2 = lanes && cpu_has_avx2();
-  // Both passes at once in AVX-512 lanes; with the double filter only (the exact and
-  // double modes' other paths stay with the two passes).
-  const bool avx512 = avx2 && lanes_avx512 && cpu_has_avx512() && signs.mode == Mode::Exact && proj.uv_filter;
+  // Both passes at once in AVX-512 lanes; with the double filter only (without it the two
+  // passes stay).
+  const bool avx512 = avx2 && lanes_avx512 && cpu_has_avx512() && filter;
   edge_vertex_off.assign(edges.size() + 1, 0);  // crossings per edge, at e + 1
   // Proper crossing from the double filter: 1 / 0 when certain, 2 when not. No early exit:
   // its outcomes are unpredictable, all four signs cost less than a mispredicted branch.
