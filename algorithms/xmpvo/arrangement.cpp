@@ -355,7 +355,7 @@ int64_t Arrangement::build(const ExteriorFaces& ext, const Projection& proj, Sig
   std::vector<uint32_t> near;
   std::vector<std::pair<uint32_t, int>> maybe;
   BucketLanes bucket_lanes;
-  const double tx = 1e-9 * grid.cw, ty = 1e-9 * grid.ch;
+  const double tx = kSideBand * grid.cw, ty = kSideBand * grid.ch;
   // NaN first and never overlapping, as Box::overlaps has it.
   auto left = [](const Item& i) { return std::isnan(i.box.x0) ? -INFINITY : i.box.x0; };
   for (int r = 0; r < grid.gh; ++r)

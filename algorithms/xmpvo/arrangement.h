@@ -79,6 +79,12 @@ struct Arrangement {
   const std::array<int32_t, 2>& swap_faces(int32_t e) const { return swap_[e]; }
   // Whether edge e is an inner edge of the unswept sheet. After build().
   bool unswept(int32_t e) const { return unswept_[e] != 0; }
+  // The edges' buckets. After build().
+  const BucketGrid& grid() const { return grid_; }
+  // A pair is tested in the bucket of its boxes' common lower corner. A corner within this
+  // fraction of a bucket's width (height) of the bucket's left (lower) side is placed by
+  // the grid's col() and row(); one further in is the bucket's without asking.
+  static constexpr double kSideBand = 1e-9;
 
  private:
   // set_faces' edge lists (as edges, edge_face_off, edge_faces, edge_face_dir) for every

@@ -275,3 +275,114 @@ TEST(XmpvoArrangement, FilterLanesMatchTheScalarFilter) {
     }
   }
 }
+
+// A crossing whose pair's common lower corner lies just left of a column line (just below a
+// row line), within Arrangement::kSideBand of the next bucket's side: both edges lie in
+// that bucket too, where the pair loop must ask the grid and leave the pair to the bucket
+// owning its corner. Every pass finds such a crossing once, the same way. No scene puts a
+// corner there by itself (the lines fall between lattice points), so one is planted: the
+// exterior point whose box side lies nearest a line is moved, across the view, until its
+// box side lies half the band short of the line.
+TEST(XmpvoArrangement, CornersJustShortOfABucketSideAreFoundOnce) {
+  if (!cpu_has_avx2()) GTEST_SKIP() << "no AVX2 on this CPU";
+  const Scene s = dataset("helix", {{"cells", "5000"}});
+  const Camera view = fibonacci_view(s.bounds(), 14, 3, ViewOptions{256, 256});
+  const Aabb bounds = s.mesh().bounds();
+  for (const int axis : {0, 1}) {  // 0: a column line (the boxes' left sides), 1: a row line
+    const std::string along = axis == 0 ? "column line" : "row line";
+    ExteriorFaces ext = s.exterior_faces();
+    Signs signs;
+    Projection proj;
+    auto reproject = [&] {
+      signs.g = ViewGeometry::of(view);
+      proj.run(ext, view, signs, bounds.center(), bounds.radius());
+    };
+    reproject();
+    Arrangement first;
+    first.set_faces(ext);
+    first.build(ext, proj, signs);
+    const BucketGrid grid = first.grid();
+    const double side = axis == 0 ? grid.cw : grid.ch, band = Arrangement::kSideBand * side;
+    auto low = [&](int32_t p) { return axis == 0 ? proj.point_box(p).x0 : proj.point_box(p).y0; };
+    auto high = [&](int32_t p) { return axis == 0 ? proj.point_box(p).x1 : proj.point_box(p).y1; };
+    auto line_above = [&](double x) {
+      return axis == 0 ? grid.gx0 + (grid.col(x) + 1) * grid.cw : grid.gy0 + (grid.row(x) + 1) * grid.ch;
+    };
+    // Candidates: the points used, nearest a line first (the smallest move).
+    std::vector<std::pair<double, int32_t>> near_line;
+    for (size_t p = 0; p < ext.points.size(); ++p) {
+      if (!proj.point_used[p]) continue;
+      const double x = low(static_cast<int32_t>(p)), up = line_above(x);
+      near_line.push_back({std::min(up - x, x - (up - side)), static_cast<int32_t>(p)});
+    }
+    std::sort(near_line.begin(), near_line.end());
+    const Vec3 across = axis == 0 ? view.right() : view.true_up();
+    bool planted = false;
+    for (size_t k = 0; k < near_line.size() && k < 40 && !planted; ++k) {
+      const int32_t p = near_line[k].second;
+      const Vec3 home = ext.points[p];
+      const double x = low(p), up = line_above(x);
+      const double line = up - x < x - (up - side) ? up : up - side;
+      const double want = line - 0.5 * band;
+      // Secant steps along `across` until the box side lies within the band short of the line.
+      auto move_to = [&](double t) {
+        ext.points[p] = home + across * t;
+        reproject();
+        return low(p);
+      };
+      double t0 = 0, x0 = x, t1 = 1e-3 * bounds.radius(), x1 = move_to(t1);
+      for (int i = 0; i < 20 && !(x1 < line && x1 >= line - band); ++i) {
+        if (x1 == x0) break;
+        const double t2 = t1 + (want - x1) * (t1 - t0) / (x1 - x0);
+        t0 = t1, x0 = x1, t1 = t2, x1 = move_to(t1);
+      }
+      if (!(x1 < line && x1 >= line - band)) {
+        move_to(0);
+        continue;
+      }
+      for (size_t f = 0; f < ext.face.size(); ++f)
+        for (int j = 0; j < ext.size[f]; ++j)
+          if (ext.vertex[4 * f + j] == p) ext.corners[4 * f + j] = ext.points[p];
+      Arrangement scalar;
+      scalar.lanes = false;
+      scalar.set_faces(ext);
+      const int64_t candidates = scalar.build(ext, proj, signs);
+      const BucketGrid& g = scalar.grid();
+      const bool same_grid = g.gw == grid.gw && g.gh == grid.gh && g.gx0 == grid.gx0 && g.gy0 == grid.gy0 &&
+                             g.cw == grid.cw && g.ch == grid.ch;
+      // The crossings whose corner is planted: its side within the band short of the line, and
+      // both edges' boxes reaching past the line (so both lie in the next bucket too).
+      size_t corners = 0;
+      std::map<std::pair<int32_t, int32_t>, int> pairs;
+      for (size_t v = scalar.projected_vertices; v < scalar.vertices.size(); ++v) {
+        const ArrVertex& w = scalar.vertices[v];
+        ++pairs[{std::min(w.e1, w.e2), std::max(w.e1, w.e2)}];
+        double corner = -INFINITY, reach = INFINITY;
+        for (const int32_t e : {w.e1, w.e2}) {
+          const auto [a, b] = scalar.edges[e];
+          corner = std::max(corner, std::min(low(a), low(b)));
+          reach = std::min(reach, std::max(high(a), high(b)));
+        }
+        corners += corner < line && corner >= line - band && reach >= line;
+      }
+      if (!same_grid || corners == 0) {
+        move_to(0);
+        for (size_t f = 0; f < ext.face.size(); ++f)
+          for (int j = 0; j < ext.size[f]; ++j)
+            if (ext.vertex[4 * f + j] == p) ext.corners[4 * f + j] = home;
+        continue;
+      }
+      planted = true;
+      for (const auto& [pair, count] : pairs) EXPECT_EQ(count, 1) << along << ": edges " << pair.first << ", " << pair.second;
+      for (const bool wide : avx512_kinds()) {
+        Arrangement lanes;
+        lanes.lanes_avx512 = wide;
+        lanes.set_faces(ext);
+        const std::string what = along + " point " + std::to_string(p) + (wide ? " avx512" : " avx2");
+        EXPECT_EQ(lanes.build(ext, proj, signs), candidates) << what;
+        expect_same_arrangement(lanes, scalar, what);
+      }
+    }
+    EXPECT_TRUE(planted) << "no crossing's corner could be put just short of a " << along;
+  }
+}
