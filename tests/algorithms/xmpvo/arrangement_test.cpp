@@ -210,6 +210,22 @@ void expect_same_arrangement(const Arrangement& lanes, const Arrangement& scalar
   EXPECT_EQ(lanes.crossings_filtered, scalar.crossings_filtered) << what;
   EXPECT_EQ(lanes.crossings_rechecked, scalar.crossings_rechecked) << what;
 }
+
+// The arrangement built by AVX2's passes and, where the CPU has it, by AVX-512's single pass,
+// each compared with `scalar`, built from the same faces and projection (its build returned
+// `candidates`).
+void expect_lanes_match(const ExteriorFaces& ext, const Projection& proj, Signs& signs, const Arrangement& scalar,
+                        int64_t candidates, const std::string& what) {
+  for (const bool wide : avx512_kinds()) {
+    Arrangement lanes;
+    lanes.lanes_avx512 = wide;
+    lanes.unswept_sheet = scalar.unswept_sheet;
+    lanes.set_faces(ext);
+    const std::string which = what + (wide ? " avx512" : " avx2");
+    EXPECT_EQ(lanes.build(ext, proj, signs), candidates) << which;
+    expect_same_arrangement(lanes, scalar, which);
+  }
+}
 }  // namespace
 
 // The double filter in lanes and one pair at a time find the same crossings.
@@ -230,14 +246,7 @@ TEST(XmpvoArrangement, LanesMatchTheScalarPassOnBucketSides) {
       scalar.lanes = false;
       scalar.set_faces(ext);
       const int64_t candidates = scalar.build(ext, proj, signs);
-      for (const bool wide : avx512_kinds()) {
-        Arrangement lanes;
-        lanes.lanes_avx512 = wide;
-        lanes.set_faces(ext);
-        const std::string what = name + " view " + std::to_string(vi) + (wide ? " avx512" : " avx2");
-        EXPECT_EQ(lanes.build(ext, proj, signs), candidates) << what;
-        expect_same_arrangement(lanes, scalar, what);
-      }
+      expect_lanes_match(ext, proj, signs, scalar, candidates, name + " view " + std::to_string(vi));
     }
   }
 }
@@ -262,16 +271,8 @@ TEST(XmpvoArrangement, FilterLanesMatchTheScalarFilter) {
       scalar.unswept_sheet = sheet;
       scalar.set_faces(ext);
       const int64_t candidates = scalar.build(ext, proj, signs);
-      for (const bool wide : avx512_kinds()) {
-        Arrangement lanes;
-        lanes.lanes_avx512 = wide;
-        lanes.unswept_sheet = sheet;
-        lanes.set_faces(ext);
-        const std::string what =
-            name + " view " + std::to_string(vi) + " sheet " + std::to_string(sheet) + (wide ? " avx512" : " avx2");
-        EXPECT_EQ(lanes.build(ext, proj, signs), candidates) << what;
-        expect_same_arrangement(lanes, scalar, what);
-      }
+      expect_lanes_match(ext, proj, signs, scalar, candidates,
+                         name + " view " + std::to_string(vi) + " sheet " + std::to_string(sheet));
     }
   }
 }
@@ -325,8 +326,11 @@ TEST(XmpvoArrangement, CornersJustShortOfABucketSideAreFoundOnce) {
       const double line = up - x < x - (up - side) ? up : up - side;
       const double want = line - 0.5 * band;
       // Secant steps along `across` until the box side lies within the band short of the line.
-      auto move_to = [&](double t) {
+      auto move_to = [&](double t) {  // the point and the face corners it is
         ext.points[p] = home + across * t;
+        for (size_t f = 0; f < ext.face.size(); ++f)
+          for (int j = 0; j < ext.size[f]; ++j)
+            if (ext.vertex[4 * f + j] == p) ext.corners[4 * f + j] = ext.points[p];
         reproject();
         return low(p);
       };
@@ -340,9 +344,6 @@ TEST(XmpvoArrangement, CornersJustShortOfABucketSideAreFoundOnce) {
         move_to(0);
         continue;
       }
-      for (size_t f = 0; f < ext.face.size(); ++f)
-        for (int j = 0; j < ext.size[f]; ++j)
-          if (ext.vertex[4 * f + j] == p) ext.corners[4 * f + j] = ext.points[p];
       Arrangement scalar;
       scalar.lanes = false;
       scalar.set_faces(ext);
@@ -367,21 +368,11 @@ TEST(XmpvoArrangement, CornersJustShortOfABucketSideAreFoundOnce) {
       }
       if (!same_grid || corners == 0) {
         move_to(0);
-        for (size_t f = 0; f < ext.face.size(); ++f)
-          for (int j = 0; j < ext.size[f]; ++j)
-            if (ext.vertex[4 * f + j] == p) ext.corners[4 * f + j] = home;
         continue;
       }
       planted = true;
       for (const auto& [pair, count] : pairs) EXPECT_EQ(count, 1) << along << ": edges " << pair.first << ", " << pair.second;
-      for (const bool wide : avx512_kinds()) {
-        Arrangement lanes;
-        lanes.lanes_avx512 = wide;
-        lanes.set_faces(ext);
-        const std::string what = along + " point " + std::to_string(p) + (wide ? " avx512" : " avx2");
-        EXPECT_EQ(lanes.build(ext, proj, signs), candidates) << what;
-        expect_same_arrangement(lanes, scalar, what);
-      }
+      expect_lanes_match(ext, proj, signs, scalar, candidates, along + " point " + std::to_string(p));
     }
     EXPECT_TRUE(planted) << "no crossing's corner could be put just short of a " << along;
   }
