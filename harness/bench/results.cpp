@@ -16,6 +16,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
 #include "harness/bench/json_input.h"
 #include "harness/scene/input_error.h"
@@ -211,6 +212,45 @@ bool ResultsFile::append(const nlohmann::json& record) {
   ++records_;
   keys_.insert(key);
   return true;
+}
+
+std::vector<nlohmann::json> ResultsFile::remove_records(const std::function<bool(const nlohmann::json&)>& drop) {
+  std::vector<nlohmann::json> removed;
+  {
+    Lock lock(*this);
+    read_new_lines();  // a torn last line repaired first
+    std::string buf(size_t(read_to_), '\0');
+    for (size_t got = 0; got < buf.size();) {
+      const ssize_t n = ::pread(fd_, buf.data() + got, buf.size() - got, off_t(got));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) throw InputError(path_, "results", "cannot be read: " + reason(n < 0 ? errno : EIO));
+      got += size_t(n);
+    }
+    std::string kept;
+    size_t line_no = 0;
+    for (size_t start = 0, nl; (nl = buf.find('\n', start)) != std::string::npos; start = nl + 1) {
+      ++line_no;
+      const std::string_view line = std::string_view(buf).substr(start, nl - start);
+      if (blank(line)) continue;
+      nlohmann::json r = parse_json_input(line, path_, "line " + std::to_string(line_no));
+      if (!is_context_line(r) && drop(r)) {
+        removed.push_back(std::move(r));
+      } else {
+        kept.append(line);
+        kept.push_back('\n');
+      }
+    }
+    if (removed.empty()) return removed;
+    write_file_atomically(path_, kept);
+  }
+  // Our descriptor still names the old file: look again from the start of the new one.
+  ::close(fd_);
+  fd_ = -1;
+  forget_contents();
+  open_file();
+  Lock lock(*this);
+  read_new_lines();
+  return removed;
 }
 
 }  // namespace vob

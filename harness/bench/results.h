@@ -13,6 +13,7 @@
 #pragma once
 #include <sys/types.h>
 
+#include <functional>
 #include <set>
 #include <string>
 #include <vector>
@@ -37,6 +38,12 @@ class ResultsFile {
   // Appends the record (it must carry a string "key") unless a record with its key is in
   // the file already; returns whether it was written.
   bool append(const nlohmann::json& record);
+  // Takes out the records for which `drop` holds and returns them; context lines and every
+  // other record stay, in file order. The only rewrite of a results file (`--force` on one
+  // reproduction of a shared folder): under the lock the kept lines go to a new file that
+  // is renamed over this one, so a reader sees the old file or the new one, and a writer
+  // holding the old one finds it replaced at its next lock and reads the new one.
+  std::vector<nlohmann::json> remove_records(const std::function<bool(const nlohmann::json&)>& drop);
   // Records in the file as of the last look.
   size_t size() const { return records_; }
   const std::string& path() const { return path_; }

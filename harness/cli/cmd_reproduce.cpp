@@ -96,8 +96,9 @@ Command add_reproduce_command(CLI::App& app) {
                   "output folder (default reports/out/NAME, NAME-tiny or NAME-full in the source "
                   "tree; installed: the same names under ./vobench-out/)");
   cmd->add_flag("--force", *force,
-                "start afresh: drop the records (and images) of an earlier run in the output folder; "
-                "without it a rerun keeps them and computes only what is missing");
+                "start afresh: drop this reproduction's records (and their images) from the output "
+                "folder, keeping other reproductions' records there; without it a rerun keeps them "
+                "and computes only what is missing");
   auto* full_flag = cmd->add_flag("--full", *full, "the paper's full sizes where they are opt-in");
   cmd->add_flag("--tiny", *tiny, "the smallest sizes (seconds; the repro tests)")->excludes(full_flag);
   auto dry_run = std::make_shared<bool>(false);

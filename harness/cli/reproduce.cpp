@@ -56,6 +56,43 @@ PartCount count_part(const RunPlan& plan, const std::string& suite_name, const R
       }
   return c;
 }
+// --force: the records of these reproductions leave the folder's results file, with the
+// images they name and, when one of their suites renders with VTK, the vtk folder. Other
+// reproductions' records stay: `reproduce all` writes every paper into one folder, and a
+// finished record is only ever dropped by the reproduction that made it.
+void drop_records_of(const std::set<std::string>& names, const std::vector<SuiteSpec>& suites,
+                     const std::string& out_dir) {
+  const std::string results = results_of(out_dir);
+  std::error_code ec;
+  if (fs::exists(results, ec)) {
+    ResultsFile file(results);
+    size_t kept = 0;
+    const std::vector<nlohmann::json> removed = file.remove_records([&](const nlohmann::json& r) {
+      const std::string key = r.value("key", "");
+      const size_t slash = key.find('/');
+      const bool ours = names.count(r.value("reproduction", "")) > 0 ||
+                        (slash != std::string::npos && names.count(key.substr(0, slash)) > 0);
+      kept += !ours;
+      return ours;
+    });
+    for (const nlohmann::json& r : removed) {
+      if (!r.contains("images") || !r["images"].is_object()) continue;
+      for (const auto& [kind, path] : r["images"].items())
+        if (path.is_string() && fs::path(path.get<std::string>()).is_relative())
+          fs::remove(fs::path(out_dir) / path.get<std::string>(), ec);
+    }
+    std::string what;
+    for (const std::string& n : names) what += (what.empty() ? "" : ", ") + n;
+    std::fprintf(stderr, "--force: %zu records of %s removed from %s; %zu records of others kept\n",
+                 removed.size(), what.c_str(), results.c_str(), kept);
+  }
+  for (const SuiteSpec& suite : suites)
+    if (suite.vtk_render) {
+      fs::remove_all(fs::path(out_dir) / "vtk", ec);
+      if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
+      break;
+    }
+}
 }  // namespace
 
 int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& name,
@@ -63,13 +100,7 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
                     const RunPart* part) {
   require_writable_folder(out_dir);
   const std::string results = results_of(out_dir);
-  if (force) {
-    std::error_code ec;
-    fs::remove(results, ec);
-    if (!ec) fs::remove_all(fs::path(out_dir) / "images", ec);
-    if (!ec) fs::remove_all(fs::path(out_dir) / "vtk", ec);
-    if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
-  }
+  if (force) drop_records_of({name}, suites, out_dir);
   const StopSignals signals;
   // [k/N] over every suite of the reproduction, counted before the first scene is made.
   const KnownRecords known = KnownRecords::read(results);
@@ -145,11 +176,13 @@ void prepare_folder(const std::vector<Reproduction>& reps, const std::string& ou
   for (const Reproduction& rep : reps)
     if (!force) check_scale_of_folder(rep, results_of(out_dir));
   if (!force) return;
-  std::error_code ec;
-  fs::remove(results_of(out_dir), ec);
-  if (!ec) fs::remove_all(fs::path(out_dir) / "images", ec);
-  if (!ec) fs::remove_all(fs::path(out_dir) / "vtk", ec);
-  if (ec) throw InputError(out_dir, "folder", "cannot be cleared (--force): " + ec.message());
+  std::set<std::string> names;
+  std::vector<SuiteSpec> suites;
+  for (const Reproduction& rep : reps) {
+    names.insert(rep.name);
+    suites.insert(suites.end(), rep.suites.begin(), rep.suites.end());
+  }
+  drop_records_of(names, suites, out_dir);
 }
 
 int reproduce(const Reproduction& rep, const std::string& out_dir, bool force, ProgressTracker* all,
@@ -184,11 +217,10 @@ int reproduce_all(const std::vector<Reproduction>& reps, const std::string& out_
     std::cerr << "reproduce all: " << reps.size() << " reproductions, " << all.total() << " jobs\n";
   }
   int first_failure = 0;
-  bool drop = force;
+  if (force) prepare_folder(reps, out_dir, true);  // every one's records dropped before the first runs
   for (const Reproduction& rep : reps) {
     std::cerr << "reproduce all: " << rep.name << "\n";
-    const int status = reproduce(rep, out_dir, drop, &all, part);
-    drop = false;
+    const int status = reproduce(rep, out_dir, false, &all, part);
     if (status == StopSignals::exit_code(SIGINT) || status == StopSignals::exit_code(SIGTERM)) return status;
     if (status != 0) {
       std::cerr << "reproduce all: " << rep.name << " failed (exit " << status << "); going on\n";

@@ -21,7 +21,8 @@ struct RunPart {
 };
 
 // Runs the suites into out_dir/results.jsonl, keeping the records already there unless
-// `force` (which also drops out_dir/images), printing progress: [k/N] over all the suites
+// `force` (which drops the records of reproduction `name` and the images they name; other
+// reproductions' records in the folder stay), printing progress: [k/N] over all the suites
 // (and over `all`, reproduce all's tracker, when given); after each suite its vtk_render
 // entry (vtk_render_child.h; not in a shard). Returns 0, 130 / 143 when SIGINT / SIGTERM
 // stopped the run (every finished record is on disk), or vobench-vtk's failing status.
@@ -35,7 +36,7 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
 int reproduce(const Reproduction& rep, const std::string& out_dir, bool force, ProgressTracker* all = nullptr,
               const RunPart* part = nullptr);
 // What reproduce does around its runs, for the MPI farm (rank 0): the folder checked (scale)
-// and, with `force`, cleared; and the tables once the records are in.
+// and, with `force`, rid of these reproductions' records; and the tables once the records are in.
 void prepare_folder(const std::vector<Reproduction>& reps, const std::string& out_dir, bool force);
 int build_tables(const Reproduction& rep, const std::string& out_dir);
 

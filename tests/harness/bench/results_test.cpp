@@ -189,6 +189,32 @@ TEST(ResultsFile, RemovedFileIsCreatedAgain) {
   EXPECT_EQ(key_counts(p).size(), 1u);
 }
 
+// `--force` on one reproduction: its records go, context lines and others' records stay in
+// order, and a writer that had the file open before goes on in the new file.
+TEST(ResultsFile, RemoveRecordsKeepsTheOthersAndTheWritersGoOn) {
+  const fs::path p = scratch("remove.jsonl");
+  put(p, R"({"type":"context","key":"context|r1","run_id":"r1","context":{}})" "\n"
+         R"({"key":"a/1","reproduction":"a"})" "\n"
+         R"({"key":"b/1","reproduction":"b"})" "\n"
+         R"({"key":"a/2","reproduction":"a"})" "\n");
+  ResultsFile other(p.string());  // another run's writer, opened before
+  ResultsFile f(p.string());
+  const auto removed = f.remove_records([](const nlohmann::json& r) { return r.value("reproduction", "") == "a"; });
+  ASSERT_EQ(removed.size(), 2u);
+  EXPECT_EQ(removed[0].at("key"), "a/1");
+  EXPECT_EQ(removed[1].at("key"), "a/2");
+  EXPECT_EQ(text_of(p), R"({"type":"context","key":"context|r1","run_id":"r1","context":{}})" "\n"
+                        R"({"key":"b/1","reproduction":"b"})" "\n");
+  EXPECT_FALSE(f.has("a/1"));
+  EXPECT_TRUE(f.has("b/1"));
+  EXPECT_TRUE(f.append(record("a/1")));  // measured again
+  EXPECT_FALSE(other.has("a/2"));        // the old writer reads the new file
+  EXPECT_FALSE(other.append(record("a/1")));
+  EXPECT_TRUE(other.append(record("c/1")));
+  EXPECT_EQ(key_counts(p), (std::map<std::string, int>{{"a/1", 1}, {"b/1", 1}, {"c/1", 1}}));
+  EXPECT_TRUE(f.remove_records([](const nlohmann::json&) { return false; }).empty());
+}
+
 TEST(ResultsFile, NewFileGetsTheUmasksMode) {
   for (const mode_t mask : {mode_t(022), mode_t(027)}) {
     const mode_t old = umask(mask);

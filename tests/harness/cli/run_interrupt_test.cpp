@@ -323,3 +323,30 @@ TEST(RunInterrupt, ReproduceResumesAfterATornLineAndNamesOtherBuilds) {
   // Nothing new was measured: every job was done.
   EXPECT_NE(v.output().find(" 0 records written"), std::string::npos) << v.output();
 }
+
+// `reproduce all` writes every paper into one folder: `--force` on one reproduction drops
+// its own records and no other's (it once removed the whole results file).
+TEST(RunInterrupt, ForceDropsOnlyItsOwnReproductionsRecords) {
+  const fs::path dir = scratch("force-shared");
+  fs::remove_all(dir);
+  for (const char* name : {"quick", "threads"}) {
+    Vobench v({"reproduce", name, "--tiny", "-o", dir.string()});
+    ASSERT_EQ(v.finish(), 0) << v.output();
+  }
+  const auto count = [&](const std::string& name) {
+    size_t n = 0;
+    std::ifstream in(dir / "results.jsonl");
+    for (std::string l; std::getline(in, l);) n += nlohmann::json::parse(l).value("reproduction", "") == name;
+    return n;
+  };
+  const size_t quick = count("quick"), threads = count("threads");
+  ASSERT_GT(quick, 0u);
+  ASSERT_GT(threads, 0u);
+  Vobench v({"reproduce", "quick", "--tiny", "--force", "-o", dir.string()});
+  EXPECT_EQ(v.finish(), 0) << v.output();
+  EXPECT_NE(v.output().find("--force: " + std::to_string(quick) + " records of quick removed"), std::string::npos)
+      << v.output();
+  EXPECT_EQ(count("threads"), threads);
+  EXPECT_EQ(count("quick"), quick);  // measured again
+}
+
