@@ -11,6 +11,7 @@
 #include "algorithms/xmpvo/projection.h"
 #include "algorithms/xmpvo/ray_queries.h"
 #include "algorithms/xmpvo/signs.h"
+#include "algorithms/xmpvo/warped_quads.h"
 
 namespace vob {
 namespace {
@@ -28,6 +29,11 @@ class XmpvoOrderer final : public Orderer {
     core_.prepare(scene, clock);
     core_.set_plain_double_signs(mode_ == Mode::Double);
     { auto p = clock.phase("exterior faces"); ext_ = &scene.exterior_faces(); }
+    {
+      auto p = clock.phase("warped quads split");
+      warped_quads_ = xmpvo::split_warped_quads(*ext_, split_);
+      if (warped_quads_ > 0) ext_ = &split_;
+    }
     {
       auto p = clock.phase("exterior face planes");
       plane_.resize(ext_->face.size());
@@ -50,14 +56,16 @@ class XmpvoOrderer final : public Orderer {
 
  private:
   size_t exterior_bytes() const {
-    return plane_.capacity() * sizeof(xmpvo::FacePlane) + proj_.bytes();
+    return plane_.capacity() * sizeof(xmpvo::FacePlane) + proj_.bytes() + split_.bytes();
   }
   size_t arrangement_bytes() const { return arr_.bytes() + queries_.bytes(); }
   void add_counters(Ordering& out, int64_t candidates) const;
 
   Mode mode_;
   mpvo::MpvoCore core_;
-  const ExteriorFaces* ext_ = nullptr;  // the scene's
+  const ExteriorFaces* ext_ = nullptr;  // the scene's, or split_
+  ExteriorFaces split_;                 // the scene's with its warped quads split (warped_quads.h)
+  size_t warped_quads_ = 0;
   std::vector<xmpvo::FacePlane> plane_;  // exact-filter planes of the exterior faces
   Vec3 centre_{};
   double radius_ = 0;
@@ -115,6 +123,7 @@ void XmpvoOrderer::add_counters(Ordering& out, int64_t candidates) const {
   core_.add_counters(out);
   auto& k = out.counters;
   k["exterior_faces"] = static_cast<double>(ext_->face.size());
+  k["warped_quads_split"] = static_cast<double>(warped_quads_);
   k["front_facing"] = static_cast<double>(proj_.front);
   k["back_facing"] = static_cast<double>(proj_.back);
   k["edge_on_faces"] = static_cast<double>(proj_.edge_on);
