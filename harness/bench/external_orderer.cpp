@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 
 #include "datasets/datasets.h"
@@ -32,9 +33,24 @@ class ExternalOrderer final : public Orderer {
  public:
   ExternalOrderer(std::string command, double timeout) : command_(std::move(command)), timeout_(timeout) {}
   ~ExternalOrderer() override {
+    if (process_) {  // `run`: a sorter that fails at its exit cannot take back its records
+      const std::string problem = process_->finish(2.0);
+      if (!problem.empty())
+        std::cerr << "vobench: warning: " << where() << ": after its last view it " << problem << "\n";
+    }
     process_.reset();  // before the folder holding its stderr file goes
     std::error_code ec;
     if (!dir_.empty()) fs::remove_all(dir_, ec);
+  }
+  // The end of the views (`check`): the sorter must exit with status 0 once its input ends.
+  void finish() {
+    if (!process_) return;
+    const std::string problem = process_->finish(timeout_);
+    if (!problem.empty()) {
+      const std::string err = last_line_of((fs::path(dir_) / "stderr.txt").string());
+      process_.reset();
+      throw InputError(where(), "after its last view", "it " + problem + (err.empty() ? "" : " (its stderr: " + err + ")"));
+    }
   }
   Claims claims() const override { return {}; }
   size_t bytes() const override { return 0; }  // the sorter's memory is its own
@@ -55,7 +71,7 @@ class ExternalOrderer final : public Orderer {
         command_,
         std::vector<std::pair<std::string, std::string>>{{"VOBENCH_SCENE", scene_path_},
                                                          {"VOBENCH_KIND", scene_kind_name(scene.kind())}},
-        (fs::path(dir_) / "stderr.txt").string());
+        (fs::path(dir_) / "stderr.txt").string(), dir_);
   }
 
   Ordering order(const Camera& view, PhaseClock& clock) override {
@@ -134,6 +150,10 @@ std::unique_ptr<Orderer> make_external_orderer(const std::string& command, doubl
 
 void set_external_view_index(Orderer& orderer, int view_index) {
   if (auto* e = dynamic_cast<ExternalOrderer*>(&orderer)) e->set_view_index(view_index);
+}
+
+void finish_external_orderer(Orderer& orderer) {
+  if (auto* e = dynamic_cast<ExternalOrderer*>(&orderer)) e->finish();
 }
 
 void register_external_orderer(const std::string& name, const std::string& command, SceneKind kind,

@@ -25,6 +25,11 @@ std::unique_ptr<Orderer> make_external_orderer(const std::string& command, doubl
 // a no-op for any other orderer.
 void set_external_view_index(Orderer& orderer, int view_index);
 
+// After the last view (`check`): the sorter's stdin is closed and it must exit with status
+// 0 within the timeout; InputError naming the command otherwise (whatever it left running
+// is killed either way). A no-op for any other orderer.
+void finish_external_orderer(Orderer& orderer);
+
 // Registers `name` as an orderer of `kind` scenes running `command` (suite entries
 // {"name": ..., "command": ...}). Registering the same name with the same command, kind and
 // timeout again is a no-op (a suite read twice); a name taken otherwise is an InputError.

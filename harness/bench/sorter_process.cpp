@@ -44,7 +44,7 @@ ssize_t write_no_sigpipe(int fd, const char* p, size_t n) {
 
 SorterProcess::SorterProcess(const std::string& command,
                              const std::vector<std::pair<std::string, std::string>>& env,
-                             const std::string& stderr_path) {
+                             const std::string& stderr_path, const std::string& cleanup_dir) {
   int in[2], out[2];
   if (pipe2(in, O_CLOEXEC) != 0) throw InputError("command '" + command + "'", "start", std::strerror(errno));
   if (pipe2(out, O_CLOEXEC) != 0) {
@@ -99,29 +99,115 @@ SorterProcess::SorterProcess(const std::string& command,
     throw InputError("command '" + command + "'", "start", std::string("cannot run /bin/sh: ") + std::strerror(rc));
   }
   fcntl(in_, F_SETFL, fcntl(in_, F_GETFL) | O_NONBLOCK);
+  try {
+    start_guard(cleanup_dir);
+  } catch (...) {
+    kill_group();
+    reap();
+    ::close(in_);
+    ::close(out_);
+    throw;
+  }
+}
+
+void SorterProcess::start_guard(const std::string& cleanup_dir) {
+  int p[2];
+  if (pipe2(p, O_CLOEXEC) != 0) throw InputError("sorter guard", "start", std::strerror(errno));
+  // Its arguments as $1 and $2, never parsed by the shell: any folder name is safe.
+  const std::string script =
+      "trap '' INT TERM HUP QUIT; read x; [ \"$x\" = done ] && exit 0; "
+      "kill -s KILL -- \"-$1\" 2>/dev/null; [ -z \"$2\" ] || rm -rf -- \"$2\"";
+  std::string sh = "sh", dash_c = "-c", body = script, name = "vobench-sorter-guard",
+              group = std::to_string(pid_), dir = cleanup_dir;
+  char* argv[] = {sh.data(), dash_c.data(), body.data(), name.data(), group.data(), dir.data(), nullptr};
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, p[0], 0);
+  posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  posix_spawnattr_t at;
+  posix_spawnattr_init(&at);
+  posix_spawnattr_setflags(&at, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK);
+  posix_spawnattr_setpgroup(&at, 0);  // a group of its own: signals to vobench's group miss it
+  sigset_t none;
+  sigemptyset(&none);
+  posix_spawnattr_setsigmask(&at, &none);
+  const int rc = posix_spawn(&guard_, "/bin/sh", &fa, &at, argv, environ);
+  posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&at);
+  ::close(p[0]);
+  if (rc != 0) {
+    ::close(p[1]);
+    guard_ = -1;
+    throw InputError("sorter guard", "start", std::string("cannot run /bin/sh: ") + std::strerror(rc));
+  }
+  guard_fd_ = p[1];
+}
+
+void SorterProcess::dismiss_guard() {
+  if (guard_fd_ < 0) return;
+  write_no_sigpipe(guard_fd_, "done\n", 5);  // a guard already gone: EPIPE, nothing to do
+  ::close(guard_fd_);
+  guard_fd_ = -1;
+  while (waitpid(guard_, nullptr, 0) < 0 && errno == EINTR) {
+  }
 }
 
 SorterProcess::~SorterProcess() {
-  if (in_ >= 0) ::close(in_);  // end of the views: the sorter sees EOF and should exit
-  if (pid_ > 0 && !wait_for_exit(2.0)) {
-    kill_group();
-    wait_for_exit(5.0);
-  }
+  if (!finished_) finish(2.0);
   if (out_ >= 0) ::close(out_);
 }
 
+std::string SorterProcess::finish(double seconds) {
+  if (finished_) return "";
+  finished_ = true;
+  if (in_ >= 0) ::close(in_);  // end of the views: the sorter sees EOF and should exit
+  in_ = -1;
+  std::string problem;
+  if (pid_ > 0 && !wait_for_exit(seconds)) {
+    problem = "did not exit within " + std::to_string(static_cast<int>(seconds)) + " s of the end of its input (killed)";
+  } else if (pid_ > 0 && (code_ != 0 || signal_ != 0)) {
+    problem = exit_description();
+  }
+  reap();  // whatever the shell left running goes too
+  dismiss_guard();
+  return problem;
+}
+
 bool SorterProcess::wait_for_exit(double seconds) {
-  if (reaped_ || pid_ <= 0) return true;
+  if (exited_ || reaped_ || pid_ <= 0) return true;
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
   for (;;) {
-    const pid_t r = waitpid(pid_, &status_, WNOHANG);
-    if (r == pid_ || (r < 0 && errno == ECHILD)) {
-      reaped_ = true;
+    // WNOWAIT: the exited shell stays a zombie, so its id still names the group to kill.
+    siginfo_t info{};
+    const int r = waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT);
+    if (r == 0 && info.si_pid == pid_) {
+      exited_ = true;
+      if (info.si_code == CLD_EXITED) code_ = info.si_status;
+      else signal_ = info.si_status;
+      return true;
+    }
+    if (r < 0 && errno == ECHILD) {
+      exited_ = reaped_ = true;
       return true;
     }
     if (std::chrono::steady_clock::now() >= end) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
+}
+
+void SorterProcess::reap() {
+  if (reaped_ || pid_ <= 0) return;
+  ::kill(-pid_, SIGKILL);  // the shell, or what it left behind while it is a zombie
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!exited_) {
+    exited_ = true;
+    if (WIFEXITED(status)) code_ = WEXITSTATUS(status);
+    else if (WIFSIGNALED(status)) signal_ = WTERMSIG(status);
+  }
+  reaped_ = true;
 }
 
 void SorterProcess::kill_group() {
@@ -130,10 +216,8 @@ void SorterProcess::kill_group() {
 
 std::string SorterProcess::exit_description() {
   if (!wait_for_exit(1.0)) return "closed its stdout";
-  if (WIFEXITED(status_)) return "exited with status " + std::to_string(WEXITSTATUS(status_));
-  if (WIFSIGNALED(status_))
-    return "was killed by signal " + std::to_string(WTERMSIG(status_)) + " (" + strsignal(WTERMSIG(status_)) + ")";
-  return "stopped";
+  if (signal_ != 0) return "was killed by signal " + std::to_string(signal_) + " (" + strsignal(signal_) + ")";
+  return "exited with status " + std::to_string(code_);
 }
 
 SorterProcess::Io SorterProcess::write_line(const std::string& line, Deadline deadline) {

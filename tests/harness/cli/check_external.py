@@ -9,7 +9,9 @@
    Python one reading the .vtu with docs/examples/vtu_cells.py get centroid's counts, with
    their phases recorded beside the round trip;
 3. broken sorters (dropped cell, repeated cell, nonsense, crash, hang past --timeout, no
-   program) -> exit 2 and one line naming the view;
+   program, failing or lingering after its last view) -> exit 2 and one line naming the
+   view; nothing a sorter started outlives `check`, whether it ends normally or is stopped
+   by SIGINT or SIGKILL (its temporary folder goes too);
 4. a suite entry {"name": "mine", "command": ...}: records with the built-in's counts, the
    view indices sent are the suite's;
 5. --max-violating-pixels and --max-rmse pass and fail as set; --junit parses, one case per
@@ -20,8 +22,10 @@ usage: check_external.py VOBENCH EXTERNAL_SORTER SOURCE_DIR WORKDIR
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
+import time
 import xml.etree.ElementTree as ET
 
 VOBENCH, SORTER, SOURCE, WORK = sys.argv[1:5]
@@ -122,6 +126,41 @@ one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", os.path.join(WORK, "n
                "status 127")
 one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", "/usr/bin/python3 -c 'print(1/0)'"], "view 0",
                "ZeroDivisionError")
+
+one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", f"{SORTER} exit1_after"], "after its last view",
+               "exited with status 1", "failing at the end")
+one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", f"{SORTER} linger", "--timeout", "1"],
+               "after its last view", "did not exit within 1 s")
+
+
+def leftovers(marker):
+    ps = subprocess.run(["ps", "-eo", "args"], capture_output=True, text=True).stdout
+    return [l for l in ps.splitlines() if marker in l]
+
+
+# A background child of the sorter's shell is stopped when the sorter is done.
+expect(["check", *CELLS, *CELL_VIEWS, "--command", f"sleep 9871 & {SORTER}"], 1)  # centroid: violations
+if leftovers("sleep 9871"):
+    fail(f"a child of the sorter outlived check: {leftovers('sleep 9871')}")
+# vobench stopped by SIGINT (Ctrl-C, whose signal the sorter's own group never gets) or
+# killed outright (a CI job's timeout): its guard stops the sorter and removes the folder.
+tmp = os.path.join(WORK, "tmp")
+for sig in (signal.SIGINT, signal.SIGKILL):
+    shutil.rmtree(tmp, ignore_errors=True)
+    os.makedirs(tmp)
+    p = subprocess.Popen([VOBENCH, "check", *CELLS, *CELL_VIEWS, "--command", f"sleep 9872 & exec {SORTER} hang"],
+                         env={**os.environ, "TMPDIR": tmp}, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.time() + 60
+    while not leftovers("sleep 9872") and time.time() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.5)  # the sorter reads its scene and waits for its first answer
+    p.send_signal(sig)
+    p.wait(timeout=60)
+    deadline = time.time() + 10
+    while (leftovers("sleep 9872") or os.listdir(tmp)) and time.time() < deadline:
+        time.sleep(0.05)
+    if leftovers("sleep 9872") or os.listdir(tmp):
+        fail(f"{signal.Signals(sig).name}: left {leftovers('sleep 9872')} and {os.listdir(tmp)}")
 
 # 4. a suite entry runs the sorter; the view indices sent are the suite's
 log = os.path.join(WORK, "views.log")

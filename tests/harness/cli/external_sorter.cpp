@@ -2,7 +2,9 @@
 // the protocol tests: cells back to front by centroid eye distance (what the built-in
 // `centroid` does), or, by its first argument, a broken sorter:
 //   drop: leaves out the last cell; crash: aborts at view 1; hang: never answers;
-//   nonsense: answers a line that is not JSON; repeat: lists cell 0 twice.
+//   nonsense: answers a line that is not JSON; repeat: lists cell 0 twice;
+//   exit1_after: answers every view, then fails (stderr line, status 1) at the end of its
+//   input; linger: answers every view, then never exits.
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -49,5 +51,10 @@ int main(int argc, char** argv) {
     if (mode == "repeat") answer[1] = answer[0];
     std::cout << nlohmann::json{{"order", answer}, {"phases", {{"sort", sort_seconds}}}}.dump() << std::endl;
   }
+  if (mode == "exit1_after") {
+    std::cerr << "external_sorter: failing at the end" << std::endl;
+    return 1;
+  }
+  if (mode == "linger") std::this_thread::sleep_for(std::chrono::hours(1));
   return 0;
 }
