@@ -15,9 +15,12 @@ Exit 1 on a regression, each named on stderr:
     (0.05 ms: frames of microseconds shift by tens of percent on a busy machine) with
     U-test p < --alpha (0.05). When the sample counts cannot reach p < alpha (e.g. 3 against 3) the row says
     so and is not flagged.
-Exit 0 otherwise; exit 2 on bad input (one line: file, line, reason) or when matched records
-were made with different settings (repeats, warm-up, threads, oracle, supersample, image
-error, parameters) unless --allow-different-settings.
+  - a base record with no counterpart in new (an orderer, data set or view that stopped
+    producing results), unless --allow-missing (new is meant to be a subset).
+Exit 0 otherwise; exit 2 on bad input (one line: file, line, reason), when no record
+matches (nothing was compared), or when matched records were made with different settings
+(repeats, warm-up, threads, oracle, supersample, image error, parameters) unless
+--allow-different-settings.
 """
 import argparse
 import html
@@ -159,7 +162,7 @@ def compare(base, new, a):
     rows, prow = [], []
     for b, n in pairs:
         tb, tn = b["total"]["median"], n["total"]["median"]
-        ratio = tn / tb if tb > 0 else float("inf")
+        ratio = tn / tb if tb > 0 else (1.0 if tn == 0 else float("inf"))
         p, note = u_test(samples(b["total"]), samples(n["total"]), a.alpha)
         verdict = ""
         if ratio > 1 + a.threshold and (tn - tb) * 1e3 < a.min_ms:
@@ -210,6 +213,9 @@ def compare(base, new, a):
     for title, lst in (("Only in base", only_base), ("Only in new", only_new)):
         if lst:
             md += ["", f"## {title}", ""] + [f"- {label(r)} (`{r['key']}`)" for r in lst]
+    if only_base and not a.allow_missing:
+        regress.append(f"{len(only_base)} base record(s) missing from new (first: {label(only_base[0])}); "
+                       f"--allow-missing if new is meant to be a subset")
     md += ["", "## Verdict", ""] + ([f"- REGRESSION: {r}" for r in regress] or ["No regression."])
     return md, regress, diffs
 
@@ -259,12 +265,17 @@ def main():
     ap.add_argument("--pixel-growth", type=float, default=0.10, help="heuristic pixel growth fraction (0.10)")
     ap.add_argument("--pixel-slack", type=int, default=10, help="heuristic pixel growth in pixels (10)")
     ap.add_argument("--allow-different-settings", action="store_true")
+    ap.add_argument("--allow-missing", action="store_true", help="base records absent from new are not a regression")
     a = ap.parse_args()
     try:
         base, _ = load(a.base)
         new, _ = load(a.new)
     except BadInput as e:
         print(f"compare: {e}", file=sys.stderr)
+        return 2
+    if not pair_up(base, new)[0]:
+        print(f"compare: nothing to compare: none of the {len(new)} orderer records of {a.new} matches one of the "
+              f"{len(base)} of {a.base}", file=sys.stderr)
         return 2
     md, regress, diffs = compare(base, new, a)
     if diffs and not a.allow_different_settings:

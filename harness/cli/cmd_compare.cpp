@@ -1,6 +1,7 @@
 // vobench compare BASE.jsonl NEW.jsonl: time ratios with a Mann-Whitney U test on the
 // per-repeat samples, and correctness changes, per matched record (reports/compare.py does
-// the work; docs/pipeline.md "vobench compare"). Exit 1 on a regression, 2 on bad input.
+// the work; docs/pipeline.md "vobench compare"). Exit 1 on a regression (a base record
+// missing from new included), 2 on bad input or when nothing matches.
 #include <sstream>
 
 #include "harness/cli/commands.h"
@@ -14,7 +15,7 @@ Command add_compare_command(CLI::App& app) {
     std::string base, fresh, out;
     double threshold = 0.10, alpha = 0.05, pixel_growth = 0.10, min_ms = 0.05;
     int pixel_slack = 10;
-    bool allow = false;
+    bool allow = false, allow_missing = false;
   };
   auto o = std::make_shared<Opts>();
   cmd->add_option("base", o->base, "the baseline results.jsonl")->required()->check(CLI::ExistingFile);
@@ -30,6 +31,8 @@ Command add_compare_command(CLI::App& app) {
       ->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--pixel-slack", o->pixel_slack, "... and in pixels (default 10)")->check(CLI::Range(0, 1 << 30));
   cmd->add_flag("--allow-different-settings", o->allow, "compare records made with different settings");
+  cmd->add_flag("--allow-missing", o->allow_missing,
+                "base records absent from new are not a regression (new is meant to be a subset)");
   return [o]() {
     auto num = [](double v) {
       std::ostringstream s;
@@ -41,6 +44,7 @@ Command add_compare_command(CLI::App& app) {
                                      std::to_string(o->pixel_slack)};
     if (!o->out.empty()) args.insert(args.end(), {"-o", o->out});
     if (o->allow) args.push_back("--allow-different-settings");
+    if (o->allow_missing) args.push_back("--allow-missing");
     return run_python_script("compare.py", args);
   };
 }

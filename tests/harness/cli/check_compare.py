@@ -9,7 +9,8 @@
    fixed samples, so no timing noise is judged);
 4. records of different settings (repeats; the sampling rule, |rgl) -> refused (exit 2) naming
    the setting, and compared with --allow-different-settings;
-5. a malformed line -> exit 2 naming file and line;
+5. a malformed line -> exit 2 naming file and line; no record matching -> exit 2;
+   an orderer's records missing from new -> exit 1 (exit 0 with --allow-missing);
 6. results.gbench.json has Google Benchmark's structure.
 
 usage: check_compare.py VOBENCH WORKDIR
@@ -108,6 +109,16 @@ broken = os.path.join(WORK, "broken.jsonl")
 with open(broken, "w") as f:
     f.write(open(base).readline() + "{not json\n")
 expect([base, broken], 2, "broken.jsonl: line 2")
+
+# An orderer that stopped producing records must not pass a gate; nothing matched is no verdict.
+fewer = [r for r in recs if r.get("algorithm") != "centroid"]
+write(os.path.join(WORK, "fewer.jsonl"), fewer)
+expect([base, os.path.join(WORK, "fewer.jsonl"), "--threshold", "100"], 1, "missing from new", "centroid")
+expect([base, os.path.join(WORK, "fewer.jsonl"), "--threshold", "100", "--allow-missing"], 0, "No regression")
+expect([os.path.join(WORK, "fewer.jsonl"), base, "--threshold", "100"], 0, "Only in new")
+disjoint = [dict(r, key=r["key"].replace("gap(", "gap2("), dataset="gap2") if "algorithm" in r else r for r in recs]
+write(os.path.join(WORK, "disjoint.jsonl"), disjoint)
+expect([base, os.path.join(WORK, "disjoint.jsonl")], 2, "nothing to compare")
 
 g = json.load(open(os.path.join(WORK, "base", "results.gbench.json")))
 orderers = [r for r in recs if "algorithm" in r]
