@@ -52,6 +52,9 @@ def load(path):
             try:
                 r = json.loads(raw)
             except json.JSONDecodeError as e:
+                if not raw.endswith("\n"):  # torn by a writer killed mid-write: left out, as run does
+                    print(f"compare: note: {path}: line {n}: an incomplete last line left out", file=sys.stderr)
+                    continue
                 raise BadInput(f"{path}: line {n}: not JSON ({e.msg})")
             if not isinstance(r, dict) or not isinstance(r.get("key"), str):
                 raise BadInput(f"{path}: line {n}: not a results record (no string \"key\")")

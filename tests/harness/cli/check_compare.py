@@ -109,6 +109,10 @@ broken = os.path.join(WORK, "broken.jsonl")
 with open(broken, "w") as f:
     f.write(open(base).readline() + "{not json\n")
 expect([base, broken], 2, "broken.jsonl: line 2")
+torn = os.path.join(WORK, "torn.jsonl")  # a run killed mid-write: its finished records compare
+with open(torn, "w") as f:
+    f.write(open(base).read() + '{"key": "cmp/cmp|xmp')
+expect([base, torn, "--threshold", "100"], 0, "incomplete last line left out", "No regression")
 
 # An orderer that stopped producing records must not pass a gate; nothing matched is no verdict.
 fewer = [r for r in recs if r.get("algorithm") != "centroid"]

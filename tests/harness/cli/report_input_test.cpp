@@ -83,3 +83,19 @@ TEST(ReportInput, ContextLinesAreAcceptedButAreNoRecords) {
   }
   std::filesystem::remove(path);
 }
+
+// A run killed mid-write leaves a last line without its newline: the report of its
+// finished records must still be possible (run, merge and the table scripts skip it too);
+// the same text with its newline, or anywhere else, stays bad input.
+TEST(ReportInput, ATornLastLineIsLeftOutNotRefused) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("vob_report_torn_" + std::to_string(getpid()) + ".jsonl");
+  const std::string torn = record().dump().substr(0, 40);
+  std::ofstream(path) << record().dump() << "\n" << torn;
+  EXPECT_NO_THROW(check_report_inputs({path.string()}));
+  std::ofstream(path) << record().dump() << "\n" << torn << "\n";
+  EXPECT_THROW(check_report_inputs({path.string()}), InputError);
+  std::ofstream(path) << torn << "\n" << record().dump() << "\n";
+  EXPECT_THROW(check_report_inputs({path.string()}), InputError);
+  std::filesystem::remove(path);
+}
