@@ -2,8 +2,11 @@
 // shards of a run, farms, runs on other machines) in one file, every key once, each run's
 // context line before the first of its records (docs/pipeline.md "Shards, merge and the MPI
 // farm"). Two records with one key are duplicates: the first (in argument order) is kept.
-// A duplicate that differs in settings, source revision or oracle verdict is a conflict:
-// each is named on stderr and the exit code is 1 (the merged file is still written).
+// A duplicate that differs in settings, source revision, host or oracle verdict is a
+// conflict: each is named on stderr and the exit code is 1 (the merged file is still
+// written). Another host's measurement of the same job cannot share the file (every key
+// once), and dropping it silently lost a machine's results; `report A B` or `compare A B`
+// keep both. A duplicate from another run on the same host is counted as measured again.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -76,6 +79,8 @@ std::string difference(const nlohmann::json& a, const nlohmann::json& b, const s
     if (x != y) add(std::string("settings: ") + k, x, y);
   }
   if (rev_a != rev_b) add("revision", rev_a, rev_b);
+  if (a.value("host", nlohmann::json()) != b.value("host", nlohmann::json()))
+    add("host", a.value("host", nlohmann::json()), b.value("host", nlohmann::json()));
   const nlohmann::json oa = a.value("oracle", nlohmann::json()), ob = b.value("oracle", nlohmann::json());
   for (const char* k : {"supersample", "covered_pixels", "violating_pixels", "violating_fragments"}) {
     const nlohmann::json x = oa.is_object() ? oa.value(k, nlohmann::json()) : nlohmann::json();
@@ -111,7 +116,7 @@ Command add_merge_command(CLI::App& app) {
     };
     std::map<std::string, const Line*> first;  // key -> the record kept
     std::vector<const Line*> kept;
-    size_t duplicates = 0, conflicts = 0;
+    size_t duplicates = 0, conflicts = 0, measured_again = 0;
     for (const auto& f : files)
       for (const Line& l : f) {
         if (is_context_line(l.j)) continue;
@@ -125,7 +130,10 @@ Command add_merge_command(CLI::App& app) {
         const nlohmann::json& a = it->second->j;
         if (a.value("run_id", "") == l.j.value("run_id", "") && a == l.j) continue;  // the same record twice
         const std::string why = difference(a, l.j, revision(a), revision(l.j));
-        if (why.empty()) continue;
+        if (why.empty()) {
+          measured_again += a.value("run_id", "") != l.j.value("run_id", "");
+          continue;
+        }
         if (++conflicts <= 20)
           std::cerr << "vobench: merge: conflict: " << key << ": " << l.where << " differs from " << it->second->where
                     << " (kept): " << why << "\n";
@@ -146,7 +154,8 @@ Command add_merge_command(CLI::App& app) {
     }
     write_file_atomically(*out, text);
     std::cerr << "merge: " << kept.size() << " records from " << inputs->size() << " files, " << duplicates
-              << " duplicate keys dropped (" << conflicts << " conflicting), " << context_lines
+              << " duplicate keys dropped (" << conflicts << " conflicting), " << measured_again
+              << " measured again by another run on the same host (the first kept), " << context_lines
               << " run contexts -> " << *out << "\n";
     return conflicts > 0 ? 1 : 0;
   };

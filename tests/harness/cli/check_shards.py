@@ -6,7 +6,8 @@
    oracle verdict record by record; records name host, rank and shard;
 2. `report` and `compare` take the merged file;
 3. merging a file with itself keeps every key once, no conflict (exit 0); a duplicate with
-   other settings or another revision is a conflict named on stderr (exit 1);
+   other settings, another revision or another host is a conflict named on stderr (exit 1);
+   one measured again on the same host is counted (exit 0);
 4. `--dry-run --ranks R` prints the makespan and the largest indivisible group; with
    `--costs FILE` the total line is calibrated from FILE's records.
 
@@ -74,6 +75,22 @@ for word in (rec["key"], "settings: repeats", "revision", "0123abc"):
 kept = by_key(WHO, out("conflict"))
 if len(kept) != len(serial) or kept[rec["key"]]["repeats"] != serial[rec["key"]]["repeats"]:
     fail(WHO, "the conflicting merge did not keep every key once, the first file's record")
+
+# The same job measured on another machine: a conflict naming the host (every key once:
+# its record cannot share the file); measured again on the same host: counted, exit 0.
+other_host = dict(lines[lines.index(next(r for r in lines if r.get("type") != "context" and "oracle" in r))],
+                  run_id=lines[0]["run_id"], host="another-machine")
+with open(out("host"), "w") as f:
+    f.write(json.dumps(lines[0]) + "\n" + json.dumps(other_host) + "\n")
+p = run([VOBENCH, "merge", out("merged"), out("host"), "-o", out("hosts")], WHO, codes=(1,))
+if "host" not in p.stderr or "another-machine" not in p.stderr:
+    fail(WHO, f"another host's record was dropped without a word:\n{p.stderr[-1500:]}")
+again = dict(other_host, host=rec.get("host"), run_id="again-run", total=dict(rec["total"], median=1.0))
+with open(out("again"), "w") as f:
+    f.write(json.dumps(dict(lines[0], run_id="again-run", key="context|again-run")) + "\n" + json.dumps(again) + "\n")
+p = run([VOBENCH, "merge", out("merged"), out("again"), "-o", out("agains")], WHO)
+if "1 measured again by another run on the same host" not in p.stderr:
+    fail(WHO, f"a record measured again was not counted:\n{p.stderr[-1500:]}")
 
 p = run([VOBENCH, "run", suite, "-o", out("serial"), "--dry-run", "--ranks", "3"], WHO)
 if "makespan on 3 ranks" not in p.stdout or "largest indivisible group" not in p.stdout:
