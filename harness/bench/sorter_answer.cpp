@@ -39,7 +39,7 @@ class AnswerSax final : public nlohmann::json_sax<json> {
       ++depth_;
       return true;
     }
-    if (depth_ == 1 && key_ == "phases") field_ = Field::Phases;
+    if (depth_ == 1 && key_ == "phases") field_ = Field::Phases, saw_phases_ = true;
     else if (depth_ == 1 && key_ == "order") return fail("\"order\" is not an array of ids");
     else if (field_ == Field::Order && depth_ == 2) return scalar("an object");
     else if (field_ == Field::Phase) return fail("phase '" + key_ + "' is an object, not seconds");
@@ -64,8 +64,14 @@ class AnswerSax final : public nlohmann::json_sax<json> {
   }
   bool end_array() override { return end(); }
   bool key(string_t& k) override {
-    if (depth_ == 1) key_ = k;
+    // A repeated member is refused: one JSON library keeps the last, another joins them.
+    if (depth_ == 1) {
+      if ((k == "order" && saw_order) || (k == "phases" && saw_phases_)) return fail("answered \"" + k + "\" twice");
+      key_ = k;
+    }
     if (depth_ == 2 && field_ == Field::Phases) {
+      for (const auto& [name, seconds] : out_.phases)
+        if (name == k) return fail("phase '" + k + "' given twice");
       key_ = k;
       field_ = Field::Phase;
     }
@@ -80,6 +86,7 @@ class AnswerSax final : public nlohmann::json_sax<json> {
   enum class Field { Other, Order, Phases, Phase };
   SorterAnswer& out_;
   int depth_ = 0;
+  bool saw_phases_ = false;
   std::string key_;
   Field field_ = Field::Other;
 

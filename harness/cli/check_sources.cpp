@@ -1,7 +1,10 @@
 #include "harness/cli/check_sources.h"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <vector>
 
 #include "harness/bench/external_orderer.h"
 #include "harness/bench/suite.h"
@@ -54,16 +57,30 @@ OrderFile read_order_file(const std::string& path) {
   }
   f.label = j.contains("algorithm") && j["algorithm"].is_string() ? j["algorithm"].get<std::string>()
                                                                    : std::filesystem::path(path).filename().string();
+  for (char& c : f.label)  // printed at the start of lines: no line of its own making
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
   if (j.contains("camera")) {
     try {
       f.camera = Camera::from_json(j["camera"]);
     } catch (const InputError& e) {
-      throw InputError(path, "camera", e.what());
+      std::string why = e.what();
+      if (why.rfind("camera: ", 0) == 0) why.erase(0, 8);
+      throw InputError(path, "camera", why);
     } catch (const nlohmann::json::exception&) {
       throw InputError(path, "camera", "needs eye, target, up (3 numbers each), width, height and fov or ortho_height");
     }
   }
-  if (j.contains("view_index") && j["view_index"].is_number_integer()) f.view_index = j["view_index"].get<int>();
+  if (j.contains("view_index")) {
+    if (!j["view_index"].is_number_integer() || j["view_index"].get<int64_t>() < -1 ||
+        j["view_index"].get<int64_t>() > INT32_MAX)
+      throw InputError(path, "view_index", j["view_index"].dump().substr(0, 30) + " is not a view index");
+    f.view_index = j["view_index"].get<int>();
+  }
+  if (j.contains("primitives")) {
+    if (!j["primitives"].is_number_integer() || j["primitives"].get<int64_t>() < 0)
+      throw InputError(path, "primitives", j["primitives"].dump().substr(0, 30) + " is not a count");
+    f.primitives = j["primitives"].get<int64_t>();
+  }
   if (j.contains("dataset")) f.dataset = j["dataset"];
   if (j.contains("primitive_kind") && j["primitive_kind"].is_string()) f.kind = j["primitive_kind"];
   return f;
@@ -75,7 +92,22 @@ void scene_from_order_file(const OrderFile& f, SceneArgs& args) {
   if (!d.is_object())
     throw InputError(f.path, "dataset", "is not in the file: give the scene with --dataset or --input");
   if (d.contains("input") && d["input"].is_string()) {
-    args.input = d["input"];
+    // Written absolute since the fingerprint came in; an older file's relative path is
+    // taken from the order file's folder when it does not name a file from here.
+    namespace fs = std::filesystem;
+    std::string input = d["input"];
+    std::error_code ec;
+    if (fs::path(input).is_relative() && !fs::exists(input, ec)) {
+      const fs::path beside = fs::path(f.path).parent_path() / input;
+      if (fs::exists(beside, ec)) input = beside.string();
+    }
+    if (d.contains("input_fingerprint") && d["input_fingerprint"].is_string() && fs::exists(input, ec)) {
+      const std::string now = input_fingerprint(input);
+      if (now != d["input_fingerprint"].get<std::string>())
+        throw InputError(f.path, "dataset.input", input + " has changed since the order was written (fingerprint " +
+                                                      d["input_fingerprint"].get<std::string>() + ", now " + now + ")");
+    }
+    args.input = input;
     args.tetrahedralize = d.value("tetrahedralize", false);
     return;
   }
@@ -86,7 +118,24 @@ void scene_from_order_file(const OrderFile& f, SceneArgs& args) {
     for (const auto& [k, v] : d["set"].items()) args.sets.push_back(k + "=" + (v.is_string() ? v.get<std::string>() : v.dump()));
 }
 
+std::string input_fingerprint(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "file", "cannot be read");
+  uint64_t h = 0xcbf29ce484222325ull;  // FNV-1a 64
+  std::vector<char> buf(1 << 20);
+  while (in) {
+    in.read(buf.data(), static_cast<std::streamsize>(buf.size()));
+    for (std::streamsize i = 0, n = in.gcount(); i < n; ++i) h = (h ^ static_cast<unsigned char>(buf[i])) * 0x100000001b3ull;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
 PreparedOrderer prepare_fixed_order(const OrderFile& f, const Scene& scene) {
+  if (f.primitives >= 0 && static_cast<size_t>(f.primitives) != scene.num_primitives())
+    throw InputError(f.path, "primitives", "is " + std::to_string(f.primitives) + ", but the scene has " +
+                                               std::to_string(scene.num_primitives()) + ": the order is of another scene");
   if (!f.kind.empty() && f.kind != scene_kind_name(scene.kind()))
     throw InputError(f.path, "primitive_kind", "is " + f.kind + ", but the scene has " + scene_kind_name(scene.kind()));
   const std::string problem = permutation_problem(scene, f.order);

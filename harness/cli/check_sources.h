@@ -21,7 +21,12 @@ struct OrderFile {
   int view_index = -1;           // its "view_index"
   nlohmann::json dataset;        // its "dataset" (null when absent)
   std::string kind;              // its "primitive_kind" (empty when absent)
+  int64_t primitives = -1;       // its "primitives" (-1 when absent)
 };
+// The fingerprint `order` writes beside an input file's path (FNV-1a 64 of its bytes, in
+// hex): `check --order` refuses a file that changed since (another mesh of the same size
+// would be judged as if it were the one ordered).
+std::string input_fingerprint(const std::string& path);
 // InputError naming the file and the key for anything malformed.
 OrderFile read_order_file(const std::string& path);
 // Neither --dataset nor --input given: the scene the file names in "dataset".

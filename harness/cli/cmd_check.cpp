@@ -118,6 +118,9 @@ Command add_check_command(CLI::App& app) {
       view_options = view_options || cmd->get_option(o)->count() > 0;
     if (file && !view_options && !file->camera)
       throw InputError(file->path, "camera", "is not in the file: give view options (--views, --eye/--target, ...)");
+    if (file && view_options && file->camera)  // an order is of one view: judging it at others says nothing
+      throw InputError(file->path, "camera", "is in the file (the view its order is of): drop the view options "
+                                             "(--views, --size, --eye, ...) or order again at those views");
     const Scene scene = scene_args->load(spec);
     const auto cams = file && !view_options ? std::vector<std::pair<int, Camera>>{{file->view_index, *file->camera}}
                                             : view_args->cameras(spec, scene);
@@ -211,8 +214,10 @@ Command add_check_command(CLI::App& app) {
                       std::to_string(c.forced_pairs) + ", excess " + std::to_string(c.excess) +
                       (c.unbounded ? ", components without a minimum " + std::to_string(c.unbounded) : "") + "]";
         }
-        std::printf("view %3d: %s  covered %lld  violating pixels %lld  fragments %lld%s  max_k %d%s%s%s%s\n",
-                    vi, r.ok() ? "ok  " : "FAIL", (long long)r.covered_pixels,
+        const std::string name = vi >= 0 ? "view " + std::string(vi < 10 ? "  " : vi < 100 ? " " : "") + std::to_string(vi)
+                                         : "camera  ";
+        std::printf("%s: %s  covered %lld  violating pixels %lld  fragments %lld%s  max_k %d%s%s%s%s\n",
+                    name.c_str(), r.ok() ? "ok  " : "FAIL", (long long)r.covered_pixels,
                     (long long)r.violating_pixels, (long long)r.violating_fragments, pairs.c_str(), r.max_k,
                     m.ordering.cycles.cycles ? ("  cycles " + std::to_string(m.ordering.cycles.cycles)).c_str() : "",
                     rmse.c_str(), derived.c_str(), on_cycles.c_str());

@@ -1,11 +1,13 @@
 // vobench order: run one orderer for one view and write ORDER.json, enough for another
 // program to verify the order independently.
+#include <filesystem>
 #include <iostream>
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/runner.h"
 #include "harness/bench/verdict.h"
 #include "harness/oracle/oracle.h"
+#include "harness/cli/check_sources.h"
 #include "harness/cli/commands.h"
 #include "harness/cli/paraview_files.h"
 #include "harness/cli/scene_args.h"
@@ -52,6 +54,11 @@ Command add_order_command(CLI::App& app) {
     j["algorithm"] = *algorithm;
     j["parameters"] = resolved_parameters(*algorithm);
     j["dataset"] = spec.to_json();
+    if (j["dataset"].contains("input") && j["dataset"]["input"].is_string()) {  // found from any folder, and checked
+      const std::string input = j["dataset"]["input"];
+      j["dataset"]["input"] = std::filesystem::absolute(input).lexically_normal().string();
+      j["dataset"]["input_fingerprint"] = input_fingerprint(input);
+    }
     j["primitive_kind"] = scene_kind_name(scene.kind());
     j["primitives"] = scene.num_primitives();
     j["camera"] = cam.to_json();

@@ -99,6 +99,8 @@ Camera Camera::from_json(const nlohmann::json& j) {
   c.up = v("up");
   c.width = j.at("width").get<int>();
   c.height = j.at("height").get<int>();
+  if (j.contains("ortho_height") && j.contains("fov"))
+    throw InputError("camera", "fov and ortho_height", "name two projections: give one");
   if (j.contains("ortho_height")) {
     c.ortho = true;
     c.ortho_height = j["ortho_height"].get<double>();

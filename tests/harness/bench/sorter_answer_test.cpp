@@ -48,6 +48,11 @@ TEST(SorterAnswer, NamesEveryFault) {
       {"{\"order\": [1], \"phases\": [1]}", "\"phases\" is not an object"},
       {"{\"order\": [1], \"phases\": {\"sort\": -1}}", "phase 'sort' is -1, not seconds"},
       {"{\"order\": [1], \"phases\": {\"sort\": \"fast\"}}", "phase 'sort' is \"fast\""},
+      // Repeated members: the order-file reader kept the last "order", this decoder joined them.
+      {"{\"order\": [0], \"order\": [1]}", "answered \"order\" twice"},
+      {"{\"order\": [0], \"phases\": {}, \"order\": []}", "answered \"order\" twice"},
+      {"{\"order\": [0], \"phases\": {}, \"phases\": {}}", "answered \"phases\" twice"},
+      {"{\"order\": [0], \"phases\": {\"sort\": 1, \"sort\": 2}}", "phase 'sort' given twice"},
   };
   for (const auto& [line, want] : cases) {
     SorterAnswer a;

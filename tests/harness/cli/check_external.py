@@ -95,6 +95,35 @@ j["order"].pop()
 json.dump(j, open(os.path.join(WORK, "dropped.json"), "w"))
 one_line_error(["check", "--order", os.path.join(WORK, "dropped.json")], "dropped.json", "767 ids for 768")
 
+# An order file is of one scene and one view: what contradicts that is refused, not judged.
+def edited(name, change):
+    j = json.load(open(exact))
+    change(j)
+    path = os.path.join(WORK, name)
+    json.dump(j, open(path, "w"))
+    return path
+
+
+one_line_error(["check", "--order", edited("two-projections.json", lambda j: j["camera"].update(ortho_height=3.0))],
+               "two-projections.json", "name two projections")
+one_line_error(["check", "--order", edited("primitives.json", lambda j: j.update(primitives=100))],
+               "primitives.json", "is 100, but the scene has 768")
+one_line_error(["check", "--order", edited("view-index.json", lambda j: j.update(view_index="zero"))],
+               "view-index.json", "is not a view index")
+one_line_error(["check", "--order", exact, "--size", "32x32"], "sxmpvo.json", "camera", "is in the file")
+label = edited("label.json", lambda j: j.update(algorithm="evil\nview   0: ok"))
+if "\nview   0: ok" in vob("check", "--order", label).stdout:
+    fail("an order file's label printed a line of its own")
+# An input mesh: the path is found from any folder, and a mesh changed since is named.
+mesh = os.path.join(WORK, "mesh.vtu")
+expect(["generate", *CELLS, "-o", mesh], 0)
+rel_order = os.path.join(WORK, "of-input.json")
+subprocess.run([VOBENCH, "order", "-a", "sxmpvo", "-i", "mesh.vtu", "--views", "3", "--view-index", "1",
+                "--size", "64x64", "-o", rel_order], cwd=WORK, check=True, capture_output=True)
+expect(["check", "--order", rel_order], 0)  # from the test's own folder, not WORK
+expect(["generate", *CELLS[:-2], "--set", "gaps=3", "-o", mesh], 0)  # another mesh at the same path
+one_line_error(["check", "--order", rel_order], "of-input.json", "has changed since the order was written")
+
 # 2. sorters in Python and C++ get the counts of the built-in they imitate
 readme = open(os.path.join(SOURCE, "README.md")).read()
 if open(PY_SORTER).read().split("\n", 1)[1] not in readme:
@@ -127,6 +156,8 @@ one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", os.path.join(WORK, "n
 one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", "/usr/bin/python3 -c 'print(1/0)'"], "view 0",
                "ZeroDivisionError")
 
+one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", f"{SORTER} slowclock"], "view 0",
+               "reported phases summing to 1e+03 s, longer than the")
 one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", f"{SORTER} exit1_after"], "after its last view",
                "exited with status 1", "failing at the end")
 one_line_error(["check", *CELLS, *CELL_VIEWS, "--command", f"{SORTER} linger", "--timeout", "1"],

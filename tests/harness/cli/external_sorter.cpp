@@ -4,7 +4,8 @@
 //   drop: leaves out the last cell; crash: aborts at view 1; hang: never answers;
 //   nonsense: answers a line that is not JSON; repeat: lists cell 0 twice;
 //   exit1_after: answers every view, then fails (stderr line, status 1) at the end of its
-//   input; linger: answers every view, then never exits.
+//   input; linger: answers every view, then never exits; slowclock: claims a sort phase of
+//   1000 s (longer than any round trip).
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -49,7 +50,8 @@ int main(int argc, char** argv) {
     std::vector<int32_t> answer = order;
     if (mode == "drop") answer.pop_back();
     if (mode == "repeat") answer[1] = answer[0];
-    std::cout << nlohmann::json{{"order", answer}, {"phases", {{"sort", sort_seconds}}}}.dump() << std::endl;
+    std::cout << nlohmann::json{{"order", answer}, {"phases", {{"sort", mode == "slowclock" ? 1000.0 : sort_seconds}}}}.dump()
+              << std::endl;
   }
   if (mode == "exit1_after") {
     std::cerr << "external_sorter: failing at the end" << std::endl;
