@@ -248,4 +248,17 @@ failed = [c.get("name") for c in cases if c.find("failure") is not None]
 want = [f"view {i}" for i, v in enumerate(report["views"]) if v["violating_pixels"]]
 if len(cases) != 3 or failed != want or "violating pixels" not in cases[0].find("system-out").text:
     fail(f"junit: {len(cases)} cases, failed {failed} (want {want})")
+# With a limit over all views, the JUnit file fails exactly when the exit code does, however
+# far one view alone is over it.
+loose = max(100.0 * v["violating_pixels"] / v["covered_pixels"] for v in report["views"]) * 0.99
+if loose > pct:
+    expect([*gate, "--max-violating-pixels", f"{pct * 1.01:.6f}", "--junit", xml], 0)
+    root = ET.parse(xml).getroot()
+    if any(c.find("failure") is not None for c in root.findall(".//testcase")):
+        fail("a passing --max-violating-pixels check wrote a failing JUnit case")
+expect([*gate, "--max-violating-pixels", f"{pct * 0.99:.6f}", "--junit", xml], 1)
+root = ET.parse(xml).getroot()
+failed = [c.get("name") for c in root.findall(".//testcase") if c.find("failure") is not None]
+if failed != ["violating pixels over all views"]:
+    fail(f"a failing --max-violating-pixels check: JUnit failures {failed}")
 print("check_external: ok")
