@@ -177,8 +177,8 @@ def table4(records, paper, doc):
               paper=f"{min(pq.values()):.2f} (smallest ratio in Table 4); {paper['claims']['always slower']}",
               criterion="ours > 1", holds=None if min_view_ratio(records) is None else min_view_ratio(records) > 1)
     # 'The time for both MPVONC and SXMPVO grows approximately linearly in the number of cells.'
-    for name, f in (("SXMPVO", fs), ("MPVONC", fn)):
-        doc.claim(f"{name} time grows approximately linearly in the number of cells (helices; least-squares line "
+    for who, f in (("SXMPVO", fs), ("MPVONC", fn)):
+        doc.claim(f"{who} time grows approximately linearly in the number of cells (helices; least-squares line "
                   + ("-" if not f else f"{f['slope'] * 1e6:.3g} us per cell, intercept {f['intercept']:.3g} s") + ")",
                   ours=None if not f else f["r2"], paper="grows approximately linearly",
                   criterion="r^2 of the line >= 0.95 over at least 3 helix sizes",
@@ -194,7 +194,7 @@ def table4(records, paper, doc):
         finish_figure(doc, fig, ax, "cells n (helix)",
                       "seconds per frame (%s)" % ("fitted windows" if fitted(records) else f"{w}x{h}"),
                       f"SXMPVO vs MPVONC by mesh size (fits dotted; {cond})",
-                      f"{name}.png", "time against n over the helices, with linear fits")
+                      f"{name}-time-by-n.png", "time against n over the helices, with linear fits")
 
 
 def row_max_view_ratio(recs):

@@ -1,6 +1,7 @@
 """What the cook-* table scripts share (reports/papers/cook.py): row labels, the size of a
 record's image (the suite's size entry, also for fitted windows), notes and figure finishing."""
 import re
+import textwrap
 
 from vobtables import metrics as m
 
@@ -87,7 +88,8 @@ def finish_figure(doc, fig, ax, xlabel, ylabel, title, file_name, caption):
     """Labels, title, axes from zero, grid and legend; then the figure is saved beside the document."""
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
-    ax.set_title(title)
+    # Wrapped and smaller than the axis labels, so a long title stays inside the figure.
+    ax.set_title("\n".join(textwrap.wrap(title, 60)), fontsize=10)
     ax.set_ylim(bottom=0)
     ax.set_xlim(left=0)
     ax.grid(alpha=0.3)
