@@ -118,3 +118,47 @@ def fit_line(x, y):
     ss_tot = syy - sy * sy / n
     ss_res = sum((b - intercept - slope * a) ** 2 for a, b in zip(x, y))
     return {"slope": slope, "intercept": intercept, "r2": 1 - ss_res / ss_tot if ss_tot > 0 else 1.0}
+
+
+# --- matched records: what two orderers' numbers may be compared on ------------------------
+
+def size_of(r):
+    """The suite's size entry of a record (the WxH part of its key; with fitted windows the
+    record's w and h differ per view), else its w x h."""
+    for part in str(r.get("key", "")).split("|"):
+        a, x, b = part.partition("x")
+        if x and a.isdigit() and b.isdigit():
+            return part
+    return f"{r.get('w')}x{r.get('h')}"
+
+
+def match_key(r):
+    """What records of two orderers must share to be compared: the view, the size entry and
+    the thread count (the data set is the caller's group)."""
+    return (r.get("view_index"), size_of(r), r.get("threads"))
+
+
+def expected_keys(group, views=None):
+    """Every (view, size, threads) a data set's records cover: the set each orderer of it is
+    expected to have (a suite gives every orderer of a data set the same views). With `views`
+    (every view index of the reproduction, when all its suites measure the same views), each
+    of those views at each of the group's sizes and thread counts, so a view missing for every
+    orderer of one data set counts as missing too."""
+    keys = {match_key(r) for r in group}
+    if views is not None:
+        keys |= {(v, s, t) for v in views for _, s, t in keys}
+    return keys
+
+
+def views_text(have, of):
+    """A cell or reason for a mean that would cover fewer views than expected."""
+    return "not measured" if have == 0 else f"incomplete: {have} of {of} views"
+
+
+def complete_mean(recs, metric, expected):
+    """(mean over recs, None) when recs cover every expected key and the metric is known on
+    each; else (None, 'incomplete: N of M views' / 'not measured'), never a mean over fewer."""
+    have = {match_key(r) for r in recs if metric(r) is not None} & set(expected)
+    if not expected or have != set(expected):
+        return None, views_text(len(have), len(expected))
+    return mean(recs, metric), None
