@@ -148,8 +148,10 @@ def table4(records, paper, doc):
         pts = [(n, t[o]) for _, n, t, _ in helices if t[o] is not None]
         gaps = [f"{who} on {row}: {'no records' if why[o] == 'not measured' else why[o]}"
                 for row, _, _, why in helices if why[o]]
-        f = m.fit_line([p[0] for p in pts], [p[1] for p in pts]) if not gaps else None
-        lines[o] = (pts, f, gaps)
+        # Judged (and drawn, and noted) only over every helix size, and at least 3 of them.
+        reason = ("; ".join(gaps) if gaps else
+                  f"{len(pts)} helix size{'' if len(pts) == 1 else 's'}" if len(pts) < 3 else "")
+        lines[o] = (pts, None if reason else m.fit_line([p[0] for p in pts], [p[1] for p in pts]), reason)
     fs, fn = lines["sxmpvo"][1], lines["mpvonc"][1]
     ours.notes = size_note(records, "helix 1.0M-4.5M")
     fitted_text = [f"{who} %.3g us per cell (r^2 = %.4f)" % (lines[o][1]["slope"] * 1e6, lines[o][1]["r2"])
@@ -198,9 +200,7 @@ def table4(records, paper, doc):
               holds=None if smallest is None else smallest > 1)
     # 'The time for both MPVONC and SXMPVO grows approximately linearly in the number of cells.'
     for o, who in ORDERERS4[:2]:
-        pts, f, gaps = lines[o]
-        reason = ("; ".join(gaps) if gaps else
-                  f"{len(pts)} helix size{'' if len(pts) == 1 else 's'}" if len(pts) < 3 else "")
+        pts, f, reason = lines[o]
         doc.claim(f"{who} time grows approximately linearly in the number of cells (helices; least-squares line "
                   + ("-" if not f or reason else f"{f['slope'] * 1e6:.3g} us per cell, intercept {f['intercept']:.3g} s")
                   + ")",
@@ -324,22 +324,32 @@ def table6(records, paper, doc):
                 if all(m.get(r, "result.fit") for r in records) else
                 " Square images; the whole bounding sphere is in view, so the mesh covers a smaller share of the "
                 "image than the paper's windows fitted to the bounding box."))
-    helix_tiny, shrinking = [], []
+    helix_tiny, helix_lacking, shrinking, lacking = [], [], [], []
     for row, recs in by_row(records):
         counts = [m.get((m.select(recs, **{"result.side": s}) or [{}])[0], "result.tiny_cells") for s in sides]
         t.row(row, recs[0]["n"], *counts)
+        absent = [size_name(s, s) for s, c in zip(sides, counts) if c is None]
         if row.startswith("helix"):
             helix_tiny += [c for c in counts if c is not None]
-        if None not in counts and len(counts) > 1:
+            helix_lacking += [f"{row} at {x}" for x in absent]
+        if absent:
+            lacking.append(f"{row} at {', '.join(absent)}")
+        else:
             shrinking.append(all(a >= b for a, b in zip(counts, counts[1:])))
     paper_table(doc, paper["table6"], "Paper, Table 6")
+    # A data set or size without its count leaves the claim not measured (said), never judged on the rest.
     doc.claim("the helix has no tiny cells at any image size (most tiny cells over sizes)",
-              ours=max(helix_tiny) if helix_tiny else None, paper=0, criterion="ours == 0",
-              holds=max(helix_tiny) == 0 if helix_tiny else None)
+              ours=max(helix_tiny) if helix_tiny and not helix_lacking else None, paper=0,
+              criterion="ours == 0" + (f"; not measured: no count for {'; '.join(helix_lacking)}" if helix_lacking
+                                       else "" if helix_tiny else "; not measured: no helix"),
+              holds=max(helix_tiny) == 0 if helix_tiny and not helix_lacking else None)
+    reason = ("no count for " + "; ".join(lacking) if lacking else
+              f"{len(sides)} image size{'' if len(sides) == 1 else 's'}" if len(sides) < 2 else "")
     doc.claim("fewer tiny cells at larger images (data sets whose count never grows with size)",
-              ours=sum(shrinking), paper="never more at a larger size, in every row of Table 6",
-              criterion=f"ours == {len(shrinking)} (every data set measured at every size)",
-              holds=all(shrinking) if shrinking else None)
+              ours=None if reason else sum(shrinking), paper="never more at a larger size, in every row of Table 6",
+              criterion=f"ours == {len(shrinking) + len(lacking)} (every data set measured at every size)"
+              + (f"; not measured: {reason}" if reason else ""),
+              holds=None if reason or not shrinking else all(shrinking))
 
 
 # --- Fig. 11 ----------------------------------------------------------------------------------
@@ -351,34 +361,49 @@ def fig11(records, paper, doc):
     w, h = records[0]["w"], records[0]["h"]
     t = doc.table(f"Ours: SXMPVO at {w}x{h}, mesh turned 45 degrees about x and y",
                   ["gaps", "n", "b", "a", "SXMPVO s", "III s", "MPVONC s", "head insertion rate", "PN relations", "oracle"])
-    pts = []
+    views = sorted({r["view_index"] for r in records})
+    pts, lacking = [], []
     for _, recs in m.group(records, lambda r: int(r["dataset_spec"]["set"]["gaps"])):
         sx, nc = m.select(recs, orderer="sxmpvo"), m.select(recs, orderer="mpvonc")
         gaps = int(recs[0]["dataset_spec"]["set"]["gaps"])
-        a = m.mean(sx, m.counter("abuffer_entries"))
-        ts, tn = m.mean(sx, m.frame_seconds), m.mean(nc, m.frame_seconds)
+        # Each mesh's values over all its views, else the cell says what is missing (no mean over fewer).
+        expected = m.expected_keys(recs, views)
+        a, why_a = m.complete_mean(sx, m.counter("abuffer_entries"), expected)
+        ts, why_s = m.complete_mean(sx, m.frame_seconds, expected)
+        tn, why_n = m.complete_mean(nc, m.frame_seconds, expected)
+        whole = not why_s
         ok = None if not sx or "oracle" not in sx[0] else ("violations" if views_violating(sx) else "ok")
-        t.row(gaps, recs[0]["n"], recs[0]["b"], a, ts, m.mean(sx, m.phase(PHASES[2])), tn,
-              m.mean(sx, m.counter("head_insertion_rate")), m.mean(sx, m.counter("pn_relations")), ok)
+        t.row(gaps, recs[0]["n"], recs[0]["b"], why_a or a, why_s or ts,
+              m.mean(sx, m.phase(PHASES[2])) if whole else None, why_n or tn,
+              m.mean(sx, m.counter("head_insertion_rate")) if whole else None,
+              m.mean(sx, m.counter("pn_relations")) if whole else None, ok)
         if a is not None and ts is not None:
             pts.append((gaps, a, ts, tn))
+        else:
+            lacking.append(f"{gaps} gaps: SXMPVO " + ("time " + why_s if why_s else "a " + why_a))
     pts.sort()
     f = m.fit_line([p[1] for p in pts], [p[2] for p in pts])
+    # Fewer than 3 meshes, or a mesh without its SXMPVO time or a, cannot be judged: not measured.
+    reason = "; ".join(lacking) if lacking else (f"{len(pts)} mesh{'' if len(pts) == 1 else 'es'}"
+                                                 if len(pts) < 3 else "")
+    judged = bool(f) and not reason
     t.notes = size_note(records, "the paper's 1.5M-cell meshes (50x50x100 hexes; default 20x20x100 = 240k cells)")
-    if f:
+    if judged:
         t.notes += (" Linear fit of SXMPVO time against a: %.3g us per pixel entry, intercept %.3g s, r^2 = %.4f."
                     % (f["slope"] * 1e6, f["intercept"], f["r2"]))
     doc.claim("the time to sort the cells is a linear function of the projected exterior-face area a (least-squares "
-              "line of SXMPVO time against a: " + ("-" if not f else "%.3g us per pixel entry, intercept %.3g s"
+              "line of SXMPVO time against a: " + ("-" if not judged else "%.3g us per pixel entry, intercept %.3g s"
                                                    % (f["slope"] * 1e6, f["intercept"])) + f"; {len(pts)} meshes)",
-              ours=f["r2"] if f else None, paper="a linear function of the projected area (Fig. 11)",
-              criterion="r^2 of the line >= 0.95 and slope > 0, over at least 3 meshes",
-              holds=(f["r2"] >= 0.95 and f["slope"] > 0 and len(pts) >= 3) if f else None)
+              ours=f["r2"] if judged else None, paper="a linear function of the projected area (Fig. 11)",
+              criterion="r^2 of the line >= 0.95 and slope > 0, over at least 3 meshes"
+              + (f"; not measured: {reason}" if reason else ""),
+              holds=(f["r2"] >= 0.95 and f["slope"] > 0) if judged else None)
     if pts:
         fig, ax = plt.subplots(figsize=(6.4, 4.4))
         ax.plot([p[1] for p in pts], [p[2] for p in pts], "o", label="SXMPVO")
-        ax.plot([p[1] for p in pts], [p[3] for p in pts], "s", label="MPVONC", alpha=0.6)
-        if f:
+        nc_pts = [p for p in pts if p[3] is not None]
+        ax.plot([p[1] for p in nc_pts], [p[3] for p in nc_pts], "s", label="MPVONC", alpha=0.6)
+        if judged:
             amax = max(p[1] for p in pts)
             ax.plot([0, amax], [f["intercept"], f["intercept"] + f["slope"] * amax], "-", color="grey",
                     label="fit: %.3g us/pixel entry, r$^2$=%.3f" % (f["slope"] * 1e6, f["r2"]))
