@@ -97,7 +97,7 @@ def build(a):
     write_atomic(os.path.join(out, "report.md"), text)
     for name, body in pages.items():
         write_atomic(os.path.join(out, name), body)
-    clean = [{k: v for k, v in r.items() if k != "dataset_spec"} for r in rows]
+    clean = [{k: v for k, v in r.items() if k != "dataset_spec" and not k.startswith("_")} for r in rows]
     write_atomic(os.path.join(out, "summary.json"), json.dumps(clean, indent=1) + "\n")
     if a.name:
         write_atomic(os.path.join(out, a.name + ".md"), text)

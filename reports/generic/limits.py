@@ -106,18 +106,21 @@ def section(page, rows, recs):
               "and all threads the run may use:")
     runs_table(page, recs)
     multi = len({r["revision"] for r in rows}) > 1
+    # Records of several machines or runs: each row says whose it is (two hosts' rows look alike otherwise).
+    where = (len({h for r in rows for h in r.get("hosts", [])}) > 1 or len({x for r in rows for x in r["runs"]}) > 1)
     out, classes = [], []
     for r in rows:
         ratio = frame_over_stream(r)
         nm = r["stream_s"] is None
         out.append([r["algorithm"], r["scene"]] + ([r["revision"]] if multi else []) +
+                   ([", ".join(r.get("hosts", [])) + " / " + (r["run"] or ", ".join(r["runs"]))] if where else []) +
                    [str(r["threads"]) if r["threads"] is not None else "?", human_seconds(r["seconds"]),
                     human_bytes(r["working_set"]) + (" (fits in LLC)" if r.get("fits_llc") else ""),
                     NOT_MEASURED if nm else per_second(r["triad_bps"], "B"),
                     NOT_MEASURED if nm else human_seconds(r["stream_s"]),
                     NOT_MEASURED if nm else sig(ratio)])
         classes.append([None] * (len(out[-1]) - 3) + ["nc" if nm else None] * 3)
-    page.table(["orderer", "scene"] + (["revision"] if multi else []) +
+    page.table(["orderer", "scene"] + (["revision"] if multi else []) + (["host / run"] if where else []) +
                ["threads", "time/frame", "working set", "triad at these threads", "stream once",
                 "frame / stream"], out, classes)
     ratios = [(frame_over_stream(r), r) for r in rows if frame_over_stream(r) is not None]

@@ -105,14 +105,20 @@ def summarise(recs):
             for name, v in r["phases"].items():
                 phases.setdefault(name, []).append(v["median"])
         views = collections.Counter(r.get("view_index") for r in rs)
+        per_view = collections.defaultdict(list)
+        for r in rs:
+            per_view[r.get("view_index")].append(r["total"]["median"])
         rows.append({
             "scene": scene, "dataset": rs[0]["dataset"], "dataset_spec": rs[0].get("dataset_spec"),
             "w": rs[0]["w"], "h": rs[0]["h"], "revision": rev,
             "runs": sorted({run_of(r) for r in rs}), "run": run, "algorithm": algo, "threads": threads,
+            "hosts": sorted({str(r.get("host") or (r.get("context") or {}).get("host_name") or "?") for r in rs}),
             "n": rs[0]["n"],
             "b": rs[0].get("b"), "views": len(rs),
             "repeated_views": sum(1 for c in views.values() if c > 1),
             "seconds": statistics.median(times),
+            # Per view (median over that view's records): ratios against a reference use common views only.
+            "_view_seconds": {v: statistics.median(t) for v, t in per_view.items()},
             "prepare_s": rs[0]["prepare"]["seconds"],
             "checked_views": len(chk),
             "judged": judged(chk[0]) if chk else None,
@@ -142,13 +148,17 @@ def summarise(recs):
         counts[row["scene"]].add(row["threads"])
     for row in rows:
         row["multi_threads"] = len(counts[row["scene"]]) > 1
-    # Ratios against a reference under the same thread count.
+    # Ratios against a reference under the same thread count (and scene: data set and size), over the views
+    # both measured: medians over the same views, never over different view sets.
     base = {(r["scene"], r["revision"], r["run"], r["algorithm"], r["threads"]): r for r in rows}
     for row in rows:
         for ref in ("mpvonc", "vtk-centroid"):
             b = base.get((row["scene"], row["revision"], row["run"], ref, row["threads"])) or base.get(
                 (row["scene"], row["revision"], None, ref, row["threads"]))
-            row["vs_" + ref] = row["seconds"] / b["seconds"] if b and b["seconds"] > 0 else None
+            q, views = vs_reference(row, b)
+            row["vs_" + ref] = q
+            # [views compared, views either measured] when they differ; None when the view sets agree.
+            row["vs_" + ref + "_views"] = views
         row["verdict"] = verdict_text(row)
     # One orderer's rows of several revisions side by side.
     first_scene, first_algo = {}, {}
@@ -157,6 +167,30 @@ def summarise(recs):
         first_algo.setdefault(r["algorithm"], len(first_algo))
     rows.sort(key=lambda r: (first_scene[r["scene"]], first_algo[r["algorithm"]], r["threads"] or 0))
     return rows
+
+
+def vs_reference(row, ref):
+    """(row time / reference time over the views both measured, None or [common, all] when their view
+    sets differ). No reference row: (None, None)."""
+    if ref is None:
+        return None, None
+    mine, theirs = row["_view_seconds"], ref["_view_seconds"]
+    common = [v for v in mine if v in theirs]
+    every = set(mine) | set(theirs)
+    views = None if len(common) == len(every) else [len(common), len(every)]
+    if not common:
+        return None, views
+    a = statistics.median(mine[v] for v in common)
+    b = statistics.median(theirs[v] for v in common)
+    return (a / b if b > 0 else None), views
+
+
+def vs_text(row, ref, sig):
+    """The 'vs REF' cell: the ratio, and 'incomplete: N of M views' when only some views are common."""
+    q, views = row["vs_" + ref], row.get("vs_" + ref + "_views")
+    if views is None:
+        return sig(q)
+    return (f"{sig(q)} " if q is not None else "") + f"(incomplete: {views[0]} of {views[1]} views)"
 
 
 def thread_pairs(rows):

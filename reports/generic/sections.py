@@ -4,7 +4,7 @@ import collections
 import os
 
 from . import figures, gallery
-from .rows import scene_key, thread_pairs
+from .rows import scene_key, thread_pairs, vs_text
 from .units import human_bytes, human_seconds, sig
 from vobtables.conditions import shared_host_warning
 
@@ -81,7 +81,7 @@ def scene_table(page, rows, revisions):
         claimed = r["exact"] + (f" ({r['exact_under']})" if r["exact"] == "image" and r.get("exact_under") not in (None, "exact") else "")
         cells = ([r["algorithm"], claimed] + ([r["revision"]] if multi else []) +
                  ([r["run"] or "all"] if by_run else []) +
-                 [str(r["threads"]) if r["threads"] is not None else "?", views, human_seconds(r["seconds"]), sig(r["vs_mpvonc"]), sig(r["vs_vtk-centroid"]),
+                 [str(r["threads"]) if r["threads"] is not None else "?", views, human_seconds(r["seconds"]), vs_text(r, "mpvonc", sig), vs_text(r, "vtk-centroid", sig),
                   human_seconds(r["prepare_s"]), r["verdict"], err] +
                  ([sig(r["cell_order_px"]) if r["cell_order_px"] is not None else "–"] if derived else []) +
                  [sig(r["max_k"]) if r["max_k"] is not None else "–", sig(r["rmse"]), sig(r["cycles"]),
@@ -181,9 +181,9 @@ def overview(page, scenes, rows):
         cls = [None]
         for s in scenes:
             r = cell.get((algo, rev, run, threads, s))
-            if r is None:
-                line.append("")
-                cls.append(None)
+            if r is None:  # no record of this orderer on this scene
+                line.append("not measured")
+                cls.append("nc")
                 continue
             mark = " ?" if r["checked_views"] == 0 else (" ✗" if r["failing_views"] else "")
             line.append(human_seconds(r["seconds"]) + mark)
@@ -192,4 +192,5 @@ def overview(page, scenes, rows):
         classes.append(cls)
     page.table(["orderer"] + [f"S{k + 1}" for k in range(len(scenes))], out, classes)
     page.para("Median time per frame per scene (S1, S2, ... as listed below); ✗ = violating pixels in some "
-              "checked view, ? = not checked, no mark = no violation in any checked view.")
+              "checked view, ? = not checked, no mark = no violation in any checked view; not measured = no "
+              "record of that orderer on that scene.")
