@@ -22,6 +22,18 @@ def counts(rows):
     return c
 
 
+def title_of(docs, scale):
+    """What the folder holds: the reproductions and their papers (never 'every paper' for a folder
+    holding some of them)."""
+    papers = list(dict.fromkeys(p for p, _ in docs))
+    named = [PAPERS.get(p, p) for p in papers if p != "vobench"] + (
+        ["vobench's speed targets"] if "vobench" in papers else [])
+    holds = named[0] if len(named) == 1 else "; ".join(named[:-1]) + " and " + named[-1]
+    n = len(docs)
+    return (f"vobench: the claims of {n} reproduction{'' if n == 1 else 's'}: {holds}"
+            + ("" if scale == "default" else f" ({scale} scale)"))
+
+
 def write_summary(docs, out_dir, scale):
     """docs: [(paper, Doc)] in build order; writes claims-summary.md, .json and .html (summary.json is the generic report's)."""
     rows = []
@@ -32,10 +44,10 @@ def write_summary(docs, out_dir, scale):
                          "criterion": c["criterion"]})
     total = counts(rows)
     per_paper = [(p, counts([r for r in rows if r["paper"] == p])) for p in sorted({r["paper"] for r in rows})]
-    title = ("vobench: every claim of the four papers" + (" and vobench's speed targets" if "vobench" in {p for p, _ in docs} else "")
-             + ("" if scale == "default" else f" ({scale} scale)"))
+    title = title_of(docs, scale)
     intro = (f"{len(rows)} claims from {len(docs)} reproductions: {total['holds']} hold, {total['does not hold']} do "
-             f"not hold, {total['not measured']} not measured (a record they need is missing). Every verdict is "
+             f"not hold, {total['not measured']} not measured (a record they need is missing, or too few to apply the "
+             "criterion: each says which). Every verdict is "
              "computed from the records by the criterion shown; each experiment's page (EXPERIMENT.md) has the "
              "tables, the stand-ins and the machines.")
     if scale == "tiny":
