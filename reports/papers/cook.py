@@ -170,14 +170,30 @@ def table4(records, paper, doc):
     above = about["cells above"]
     hi = max(q for n, q in pq.items() if n > above)
     hi_n = max((n for n in pq if n > above), key=lambda n: pq[n])
-    for row, n, t, why in rows:
-        if n <= above:
-            continue
-        q, v = m.ratio(t["sxmpvo"], t["mpvonc"]), m.ratio(t["sxmpvo"], t["vtk-centroid"])
-        missing = "; ".join(f"{who} {why[o]}" for o, who in ORDERERS4[:2] if why[o])
+    # One claim per Table 4 mesh above 100,000 cells (our helix with the paper's n; measured or not, so
+    # none drops out with its records), then any other mesh we measured above it (the gap mesh, helices
+    # of --full that Table 4 does not list).
+    def cells_of(row):
+        spec = recs_of[row][0].get("dataset_spec") or {}
+        return (spec.get("set") or {}).get("cells") if spec.get("name") == "helix" else None
+
+    listed, judged_rows = [], set()
+    for pn in sorted(k for k in pq if k > above):
+        hit = [r for r in rows if cells_of(r[0]) == pn]
+        listed.append(hit[0] if hit else (f"helix {pn / 1e6:.3g}M", pn, None, None))
+        judged_rows.update(r[0] for r in hit[:1])
+    listed += [r for r in rows if r[1] > above and r[0] not in judged_rows]
+    for row, n, t, why in listed:
+        if t is None:
+            q = v = None
+            missing = f"no records of a helix with the paper's n = {n:,}"
+        else:
+            q, v = m.ratio(t["sxmpvo"], t["mpvonc"]), m.ratio(t["sxmpvo"], t["vtk-centroid"])
+            missing = "; ".join(f"{who} {why[o]}" for o, who in ORDERERS4[:2] if why[o])
         near = min(pq, key=lambda k: abs(k - n))
         doc.claim(f"SXMPVO at about the same speed as MPVONC for more than {above:,} cells: SXMPVO/MPVONC on {row} "
-                  f"(n = {n:,}; SXMPVO/vtk-centroid = {'-' if v is None else '%.2f' % v})",
+                  f"({'not run' if t is None else f'n = {n:,}'}; SXMPVO/vtk-centroid = "
+                  f"{'-' if v is None else '%.2f' % v})",
                   ours=q, paper=f"{pq[near]:.2f} at n = {near:,} (Table 4)",
                   criterion=f"ours <= {hi:.2f} (the largest ratio the paper calls about the same: Table 4 at n = {hi_n:,})"
                   + (f"; not measured: {missing}" if missing else ""),
@@ -185,8 +201,9 @@ def table4(records, paper, doc):
         # Table 4's ratios from 1M cells on are 1.01 to 1.20: issue 16 asks for that band at every size above
         # 100k, on the mean and on the worst view, which is stricter than the paper's own 1.71.
         worst = None if q is None else max(view_ratios(recs_of[row], expected[row]).values())
+        n_text = f"n = {n:,}" if t is not None else "not run"
         doc.claim(f"our check, not a claim of the paper (issue 16): SXMPVO/MPVONC within Table 4's large-mesh band "
-                  f"on {row} (n = {n:,}), mean over views and worst view "
+                  f"on {row} ({n_text}), mean over views and worst view "
                   f"({'-' if worst is None else '%.2f' % worst})",
                   ours=q, paper=f"{min(pq[k] for k in pq if k >= 1000000):.2f} to "
                   f"{max(pq[k] for k in pq if k >= 1000000):.2f} (Table 4, n >= 1,000,000)",
