@@ -20,6 +20,10 @@ sys.path.insert(0, HERE)
 from vobtables import Doc, load_records  # noqa: E402
 from vobtables.summary import write_summary  # noqa: E402
 from vobtables.conditions import conditions  # noqa: E402
+import signal  # noqa: E402
+
+# Ctrl-C during `vobench reproduce` stops the script as it stops vobench, without a traceback.
+signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 def load_paper(paper):

@@ -29,6 +29,10 @@ import math
 import os
 import re
 import sys
+import signal  # noqa: E402
+
+# Ctrl-C during `vobench reproduce` stops the script as it stops vobench, without a traceback.
+signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 # Key parts that are settings, not identity (jobs.cpp); "s1" is the old supersample part.
 SETTING_PART = re.compile(r"^(r\d+w\d+|oracle|nooracle|ss\d+|s\d+|imgerr|t\d+|rgl|interleaved)$")

@@ -17,6 +17,10 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from compare import identity  # noqa: E402
+import signal  # noqa: E402
+
+# Ctrl-C during `vobench reproduce` stops the script as it stops vobench, without a traceback.
+signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 def size_bytes(text):

@@ -18,6 +18,10 @@ from generic import figures, limits, sections, vtk_render  # noqa: E402
 from generic.load import load, revision  # noqa: E402
 from generic.page import Page, anchor  # noqa: E402
 from generic.rows import summarise  # noqa: E402
+import signal  # noqa: E402
+
+# Ctrl-C during `vobench reproduce` stops the script as it stops vobench, without a traceback.
+signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 PAGE_SCENES = 6  # more scenes: an index page and one page per scene
 
