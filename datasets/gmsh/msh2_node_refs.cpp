@@ -54,11 +54,29 @@ bool numbers(std::string_view line, std::vector<int64_t>& out) {
   }
 }
 
-// The first whole number of a line (a node's tag; the coordinates after it are not read).
+// The first whole number of a line (a node's tag; the coordinates after it are not read);
+// one too large for int64_t is read as INT64_MAX (a tag check refuses it).
 bool first_number(std::string_view line, int64_t& v) {
   const char *p = line.data(), *end = p + line.size();
   while (p < end && (*p == ' ' || *p == '\t')) ++p;
-  return std::from_chars(p, end, v).ec == std::errc();
+  const std::errc ec = std::from_chars(p, end, v).ec;
+  if (ec == std::errc::result_out_of_range && p < end && *p != '-') v = INT64_MAX;
+  return ec == std::errc() || v == INT64_MAX;
+}
+
+// "line N" of the byte at `at` (counted only for a message).
+std::string line_of(const std::string& s, size_t at) {
+  return "line " + std::to_string(std::count(s.begin(), s.begin() + std::min(at, s.size()), '\n') + 1);
+}
+
+// A node or element tag of an ASCII line gmsh would narrow (see kMaxGmshTag) is refused.
+void check_tag(const std::string& path, const char* kind, int64_t tag, const std::string& s, size_t line_start) {
+  if (tag <= int64_t(kMaxGmshTag)) return;
+  std::string_view word(s.data() + line_start, s.size() - line_start);
+  word.remove_prefix(std::min(word.find_first_not_of(" \t"), word.size()));
+  word = word.substr(0, word.find_first_of(" \t\r\n"));  // the tag as written
+  throw InputError(path, std::string(kind) + " " + std::string(word) + " (" + line_of(s, line_start) + ")",
+                   std::string("tag ") + kGmshTagLimit);
 }
 
 }  // namespace
@@ -95,7 +113,9 @@ void check_msh2_node_refs(const std::string& path, const std::function<int(int)>
           tags.push_back(tag);
         } else {
           int64_t tag = 0;
+          const size_t start = c.at;
           if (!c.line(line) || !first_number(line, tag)) return;
+          check_tag(path, "node", tag, s, start);
           tags.push_back(tag);
         }
       }
@@ -153,7 +173,11 @@ void check_msh2_node_refs(const std::string& path, const std::function<int(int)>
       }
     } else {
       for (int64_t e = 0; e < m; ++e) {  // id type ntags tag... node...
-        if (!c.line(line) || !numbers(line, v) || v.size() < 3 || v[2] < 0 || int64_t(v.size()) < 3 + v[2]) return;
+        const size_t start = c.at;
+        int64_t id = 0;
+        if (!c.line(line) || !first_number(line, id)) return;
+        check_tag(path, "element", id, s, start);
+        if (!numbers(line, v) || v.size() < 3 || v[2] < 0 || int64_t(v.size()) < 3 + v[2]) return;
         for (size_t k = 3 + size_t(v[2]); k < v.size(); ++k) check(v[0], v[k]);
       }
     }

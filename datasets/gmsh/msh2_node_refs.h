@@ -1,7 +1,9 @@
 // MSH 2.x files: every node an element names must be a node of $Nodes (or
 // $ParametricNodes). gmsh 4.8's MSH 2 reader lets the tag just past the last of densely
 // numbered nodes through as a null node, then crashes on it
-// (GModel::_associateEntityWithMeshVertices), so such a file is refused here first.
+// (GModel::_associateEntityWithMeshVertices), so such a file is refused here first; so is
+// a node or element tag of an ASCII file beyond what gmsh holds (kMaxGmshTag, msh_text.h;
+// binary files hold 32-bit tags).
 // Other versions, and files this scan cannot follow (cut, garbled), are left to gmsh,
 // which reports them.
 #pragma once

@@ -157,6 +157,7 @@ void read_nodes(Fields& f, std::vector<uint64_t>& tags) {
     for (uint64_t i = 0; i < n; ++i) {
       const uint64_t tag = f.size();
       if (tag == 0) f.fail("node tag 0 (tags start at 1)");
+      if (tag > kMaxGmshTag) f.fail("node tag " + std::to_string(tag) + " " + kGmshTagLimit);
       tags.push_back(tag);
     }
     f.skip_reals(n * per_node);
@@ -224,6 +225,7 @@ void read_elements(Fields& f, const NodeSet& nodes, const std::function<GmshElem
       f.fail("holds " + std::to_string(seen) + " elements so far but the section declares " + std::to_string(total));
     for (uint64_t e = 0; e < n; ++e) {
       const uint64_t tag = f.size();
+      if (tag > kMaxGmshTag) f.fail("element tag " + std::to_string(tag) + " " + kGmshTagLimit);
       for (int k = 0; k < type.nodes; ++k) {
         const uint64_t node = f.size();
         if (!nodes.has(node))

@@ -5,7 +5,8 @@
 // mutations), fewer left entries it reads later uninitialised; it also sizes vectors from
 // counts before reading them. So a file is refused here when a count exceeds the bytes
 // left or the header's total, the blocks hold fewer entries than the header, a section's
-// data do not end at its $End line, or a node tag is 0 or given twice. Element types
+// data do not end at its $End line, a node tag is 0 or given twice, or a node or element
+// tag is beyond what gmsh holds (kMaxGmshTag, msh_text.h). Element types
 // unknown to gmsh or of another dimension than their entity, and elements naming a node
 // $Nodes lacks, gmsh reports itself; they are refused here too, with the element named.
 // Other versions are left to gmsh (4.0; 2.x: see msh2_node_refs.h); so are the contents

@@ -1,5 +1,6 @@
 // Readers and writers: exact round trips, and bad input as one InputError line that names
 // the file, the element and the reason.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -487,4 +488,88 @@ TEST(DatasetIO, LowerDimensionalCellsInVtuAreSkipped) {
   EXPECT_EQ(s.mesh().num_cells(), 1u);
   EXPECT_EQ(s.mesh().types[0], CellType::Tetra);
   EXPECT_TRUE(contains(note, "skipped 1 cells of lower dimension (vtkTriangle 1)")) << note;
+}
+
+namespace {
+// The gmsh reader is a module beside libvobench.so, which this test does not link: .msh
+// files are read by the program. The one line it refuses `path` with (exit 2).
+std::string msh_error(const std::string& path) {
+  const CommandOutput r = run_vobench(VOB_BINARY, "validate " + path);
+  EXPECT_EQ(r.code, 2) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+  return r.out;
+}
+// The cell count the program reads from a valid `path`.
+size_t msh_cells(const std::string& path) {
+  const CommandOutput r = run_vobench(VOB_BINARY, "validate " + path);
+  EXPECT_EQ(r.code, 0) << r.out;
+  return size_t(std::strtoull(r.out.substr(r.out.find(": ") + 2).c_str(), nullptr, 10));
+}
+
+// One tetrahedron (or more) in gmsh's MSH 4.1 ASCII format: node tags as given, one per
+// point of kTetPoints, and element lines "tag n1 n2 n3 n4".
+const char* kTetPoints[] = {"0 0 0", "1 0 0", "0 1 0", "0 0 1", "1 1 1"};
+std::string msh41(const std::vector<std::string>& node_tags, const std::vector<std::string>& elements) {
+  std::string s = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n0 0 0 1\n1 0 0 0 1 1 1 0 0\n$EndEntities\n";
+  s += "$Nodes\n1 " + std::to_string(node_tags.size()) + " 1 " + node_tags.back() + "\n3 1 0 " +
+       std::to_string(node_tags.size()) + "\n";
+  for (const std::string& t : node_tags) s += t + "\n";
+  for (size_t i = 0; i < node_tags.size(); ++i) s += std::string(kTetPoints[i]) + "\n";
+  s += "$EndNodes\n$Elements\n1 " + std::to_string(elements.size()) + " 1 " + std::to_string(elements.size()) +
+       "\n3 1 4 " + std::to_string(elements.size()) + "\n";
+  for (const std::string& e : elements) s += e + "\n";
+  return s + "$EndElements\n";
+}
+// The same in MSH 2.2 ASCII; element lines "id type ntags tags... nodes...".
+std::string msh22(const std::vector<std::string>& node_tags, const std::vector<std::string>& elements) {
+  std::string s = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" + std::to_string(node_tags.size()) + "\n";
+  for (size_t i = 0; i < node_tags.size(); ++i) s += node_tags[i] + " " + kTetPoints[i] + "\n";
+  s += "$EndNodes\n$Elements\n" + std::to_string(elements.size()) + "\n";
+  for (const std::string& e : elements) s += e + "\n";
+  return s + "$EndElements\n";
+}
+}  // namespace
+
+// gmsh 4.8 narrows node and element tags to 32-bit ints on the way: a node tag in
+// [2^31, 2^32) (mod 2^32) crashed it (SIGSEGV), 2^32 + 1 became tag 1.
+TEST(DatasetIO, GmshTagsBeyond2To31AreRefused) {
+  TempDir dir;
+  for (const std::string tag : {"3000000000", "1000000000000000", "4294967297"}) {
+    SCOPED_TRACE(tag);
+    write_text(dir.file("n.msh"), msh41({"1", "2", "3", tag}, {"1 1 2 3 " + tag}));
+    std::string e = msh_error(dir.file("n.msh"));
+    EXPECT_TRUE(contains(e, "n.msh: $Nodes: block 1: node tag " + tag + " is beyond 2147483647")) << e;
+    write_text(dir.file("e.msh"), msh41({"1", "2", "3", "4"}, {tag + " 1 2 3 4"}));
+    e = msh_error(dir.file("e.msh"));
+    EXPECT_TRUE(contains(e, "e.msh: $Elements: block 1: element tag " + tag + " is beyond 2147483647")) << e;
+    write_text(dir.file("n2.msh"), msh22({"1", "2", "3", tag}, {"1 4 2 0 1 1 2 3 " + tag}));
+    e = msh_error(dir.file("n2.msh"));
+    EXPECT_TRUE(contains(e, "n2.msh: node " + tag + " (line 9): tag is beyond 2147483647")) << e;
+    write_text(dir.file("e2.msh"), msh22({"1", "2", "3", "4"}, {tag + " 4 2 0 1 1 2 3 4"}));
+    e = msh_error(dir.file("e2.msh"));
+    EXPECT_TRUE(contains(e, "e2.msh: element " + tag + " (line 13): tag is beyond 2147483647")) << e;
+  }
+  // The binary file's tags are the same 8-byte fields.
+  std::string bin = "$MeshFormat\n4.1 1 8\n";
+  const auto put = [&](auto v) { bin.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  put(int32_t(1));
+  bin += "\n$EndMeshFormat\n$Nodes\n";
+  for (const uint64_t v : {1ull, 4ull, 1ull, 3000000000ull}) put(v);
+  put(int32_t(3)), put(int32_t(1)), put(int32_t(0)), put(uint64_t(4));
+  for (const uint64_t t : {1ull, 2ull, 3ull, 3000000000ull}) put(t);
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a) put(double(i == a + 1));
+  bin += "\n$EndNodes\n$Elements\n";
+  for (const uint64_t v : {1ull, 1ull, 1ull, 1ull}) put(v);
+  put(int32_t(3)), put(int32_t(1)), put(int32_t(4)), put(uint64_t(1));
+  for (const uint64_t v : {1ull, 1ull, 2ull, 3ull, 3000000000ull}) put(v);
+  bin += "\n$EndElements\n";
+  write_text(dir.file("b.msh"), bin);
+  std::string e = msh_error(dir.file("b.msh"));
+  EXPECT_TRUE(contains(e, "b.msh: $Nodes: block 1: node tag 3000000000 is beyond 2147483647")) << e;
+  // The largest tag gmsh holds is read.
+  write_text(dir.file("max.msh"), msh41({"1", "2", "3", "2147483647"}, {"2147483647 1 2 3 2147483647"}));
+  EXPECT_EQ(msh_cells(dir.file("max.msh")), 1u);
+  write_text(dir.file("max2.msh"), msh22({"1", "2", "3", "2147483647"}, {"2147483647 4 2 0 1 1 2 3 2147483647"}));
+  EXPECT_EQ(msh_cells(dir.file("max2.msh")), 1u);
 }
