@@ -1,5 +1,6 @@
 #include "datasets/io/vtk_prescan.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -10,6 +11,8 @@
 #include <map>
 #include <string_view>
 #include <vector>
+
+#include <vtkCellType.h>
 
 #include "harness/scene/input_error.h"
 
@@ -111,9 +114,11 @@ class ValueReader {
     v = x;
     return true;
   }
-  void finish() {
+  // Returns the line breaks read over (the caller's line count goes on from them).
+  size_t finish() {
     in_.clear();
     in_.seekg(start_ + std::streamoff(consumed_ + pos_));
+    return breaks_ + size_t(std::count(buf_.begin(), buf_.begin() + static_cast<std::ptrdiff_t>(pos_), '\n'));
   }
 
  private:
@@ -121,6 +126,7 @@ class ValueReader {
   // At least n unread bytes in the buffer, reading more if needed; false at the file's end.
   bool fill(size_t n) {
     if (end_ - pos_ >= n) return true;
+    breaks_ += size_t(std::count(buf_.begin(), buf_.begin() + static_cast<std::ptrdiff_t>(pos_), '\n'));
     buf_.erase(buf_.begin(), buf_.begin() + static_cast<std::ptrdiff_t>(pos_));
     consumed_ += pos_;
     end_ -= pos_;
@@ -135,15 +141,15 @@ class ValueReader {
   bool binary_;
   std::streampos start_;
   std::vector<char> buf_;
-  size_t pos_ = 0, end_ = 0, consumed_ = 0;
+  size_t pos_ = 0, end_ = 0, consumed_ = 0, breaks_ = 0;
 };
 
 // The cell list before format 5.1: `cells` records "k id_1 .. id_k" in `size` values (ASCII
 // words, or big-endian 32-bit integers in a binary file), which VTK walks unchecked: a
 // negative or too large k writes past its arrays (heap corruption). 5.1 files give OFFSETS
 // and CONNECTIVITY instead, whose cells are checked after reading.
-void walk_legacy_cells(std::istream& in, const std::string& path, const std::string& where, uint64_t cells,
-                       uint64_t size, bool binary) {
+size_t walk_legacy_cells(std::istream& in, const std::string& path, const std::string& where, uint64_t cells,
+                         uint64_t size, bool binary) {
   ValueReader values(in, binary);
   const auto next = [&]() -> int64_t {
     int64_t v = 0;
@@ -165,7 +171,25 @@ void walk_legacy_cells(std::istream& in, const std::string& path, const std::str
   if (used != size)
     throw InputError(path, where, std::to_string(cells) + " cells use " + std::to_string(used) + " of the list's " +
                                       std::to_string(size) + " values");
-  values.finish();
+  return values.finish();
+}
+
+// CELL_TYPES' `n` values (ASCII words or big-endian 32-bit integers): VTK keeps a cell's
+// type in a byte, so type 266 became 10 (a tetra), and 9999 was reported as type 15.
+size_t walk_cell_types(std::istream& in, const std::string& path, const std::string& where, uint64_t n,
+                       bool binary) {
+  ValueReader values(in, binary);
+  for (uint64_t c = 0; c < n; ++c) {
+    int64_t type = 0;
+    if (!values.next(type))
+      throw InputError(path, where, binary ? "the type list ends after " + std::to_string(c) + " of its " +
+                                                 std::to_string(n) + " values"
+                                           : "the type list ends early or holds a word that is not an integer");
+    if (type < 0 || type >= VTK_NUMBER_OF_CELL_TYPES)
+      throw InputError(path, where, "cell " + std::to_string(c) + ": type " + std::to_string(type) +
+                                        " is not a VTK cell type");
+  }
+  return values.finish();
 }
 
 struct Tag {
@@ -306,6 +330,15 @@ void prescan_vtk_legacy(const std::string& path) {
   int64_t number = 0;
   bool binary = false;
   bool cell_lists = true;  // cells as "k id_1 .. id_k" lists: VTK reads them so below version 5.1
+  // An unstructured grid's CELLS and CELL_TYPES must agree: VTK reads CELL_TYPES' own count
+  // and leaves the other cells' types uninitialised (a real tet dropped at random).
+  std::string cells_at, types_at;  // "CELLS (line N)", or "" until seen
+  uint64_t cells_count = 0, types_count = 0;
+  const auto agree = [&] {
+    if (!cells_at.empty() && !types_at.empty() && cells_count != types_count)
+      throw InputError(path, types_at, "type count " + std::to_string(types_count) + " differs from the cell count " +
+                                           std::to_string(cells_count) + " of " + cells_at);
+  };
   while (std::getline(in, line)) {
     ++number;
     if (number == 1) {  // "# vtk DataFile Version M.m": VTK takes what it cannot read as 0.0
@@ -336,8 +369,19 @@ void prescan_vtk_legacy(const std::string& path) {
       need(3);
       const uint64_t cells = count(path, where, t[1], bytes, "cell count");
       const uint64_t size = count(path, where, t[2], bytes, "connectivity size");
-      if (cell_lists) walk_legacy_cells(in, path, where, cells, size, binary);
-    } else if (key == "CELL_TYPES" || key == "POINT_DATA" || key == "CELL_DATA") {
+      if (cell_lists) number += int64_t(walk_legacy_cells(in, path, where, cells, size, binary));
+      if (key == "CELLS") {  // 5.1 files give the offsets' count, one more than the cells
+        cells_at = where;
+        cells_count = cell_lists || cells == 0 ? cells : cells - 1;
+        agree();
+      }
+    } else if (key == "CELL_TYPES") {
+      need(2);
+      types_at = where;
+      types_count = count(path, where, t[1], bytes, "count");
+      agree();
+      number += int64_t(walk_cell_types(in, path, where, types_count, binary));
+    } else if (key == "POINT_DATA" || key == "CELL_DATA") {
       need(2);
       count(path, where, t[1], bytes, "count");
     } else if (key == "DIMENSIONS") {
@@ -355,6 +399,9 @@ void prescan_vtk_legacy(const std::string& path) {
       }
     }
   }
+  if (!cells_at.empty() && types_at.empty())
+    throw InputError(path, cells_at, "no CELL_TYPES section follows (cell count " + std::to_string(cells_count) +
+                                         "; the file ends at line " + std::to_string(number) + ")");
 }
 
 }  // namespace vob

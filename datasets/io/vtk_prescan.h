@@ -19,7 +19,8 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type);
 // Legacy .vtk: POINTS, CELLS, CELL_TYPES, POINT_DATA, CELL_DATA and DIMENSIONS counts are
 // integers and fit the file (every value takes at least one byte); a cell list in the format
 // before 5.1 ("k id_1 .. id_k" per cell) holds exactly its declared values, every k
-// non-negative and within them (VTK walks it unchecked).
+// non-negative and within them (VTK walks it unchecked); CELL_TYPES gives one type per cell
+// of CELLS, each a VTK cell type code (VTK keeps them in a byte).
 void prescan_vtk_legacy(const std::string& path);
 
 }  // namespace vob

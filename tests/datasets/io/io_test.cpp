@@ -573,3 +573,67 @@ TEST(DatasetIO, GmshTagsBeyond2To31AreRefused) {
   write_text(dir.file("max2.msh"), msh22({"1", "2", "3", "2147483647"}, {"2147483647 4 2 0 1 1 2 3 2147483647"}));
   EXPECT_EQ(msh_cells(dir.file("max2.msh")), 1u);
 }
+
+namespace {
+// Two tetrahedra sharing a face, as a legacy ASCII .vtk file; CELLS at line 11, CELL_TYPES
+// after the cells (line 14 with two cells).
+std::string legacy_tets(const std::string& cells, const std::string& types) {
+  return "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 5 double\n"
+         "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n" + cells + types;
+}
+const std::string kTwoTetCells = "CELLS 2 10\n4 0 1 2 3\n4 4 2 1 3\n";
+}  // namespace
+
+// VTK reads CELL_TYPES' own count: fewer types than cells left the others uninitialised
+// (a tet dropped at random), and it keeps a type in a byte (266 read as 10, a tetra).
+TEST(DatasetIO, LegacyCellTypesMatchTheCellsAndAreVtkTypes) {
+  TempDir dir;
+  write_text(dir.file("ok.vtk"), legacy_tets(kTwoTetCells, "CELL_TYPES 2\n10\n10\n"));
+  EXPECT_EQ(load_input(dir.file("ok.vtk")).mesh().num_cells(), 2u);
+  write_text(dir.file("short.vtk"), legacy_tets(kTwoTetCells, "CELL_TYPES 1\n10\n"));
+  std::string e = input_error([&] { load_input(dir.file("short.vtk")); });
+  EXPECT_TRUE(contains(e, "short.vtk: CELL_TYPES (line 14): type count 1 differs from the cell count 2 of CELLS (line 11)"))
+      << e;
+  write_text(dir.file("long.vtk"), legacy_tets("CELLS 1 5\n4 0 1 2 3\n", "CELL_TYPES 2\n10\n10\n"));
+  e = input_error([&] { load_input(dir.file("long.vtk")); });
+  EXPECT_TRUE(contains(e, "long.vtk: CELL_TYPES (line 13): type count 2 differs from the cell count 1 of CELLS (line 11)"))
+      << e;
+  for (const std::string type : {"266", "9999", "-1"}) {
+    write_text(dir.file("t.vtk"), legacy_tets(kTwoTetCells, "CELL_TYPES 2\n10\n" + type + "\n"));
+    e = input_error([&] { load_input(dir.file("t.vtk")); });
+    EXPECT_TRUE(contains(e, "t.vtk: CELL_TYPES (line 14): cell 1: type " + type + " is not a VTK cell type")) << e;
+  }
+  // Lines are counted through the walked lists.
+  write_text(dir.file("pd.vtk"), legacy_tets(kTwoTetCells, "CELL_TYPES 2\n10\n10\nPOINT_DATA x\n"));
+  e = input_error([&] { load_input(dir.file("pd.vtk")); });
+  EXPECT_TRUE(contains(e, "pd.vtk: POINT_DATA (line 17): 'x' is not a valid count")) << e;
+  write_text(dir.file("none.vtk"), legacy_tets(kTwoTetCells, "CELL_TYP"));
+  e = input_error([&] { load_input(dir.file("none.vtk")); });
+  EXPECT_TRUE(contains(e, "none.vtk: CELLS (line 11): no CELL_TYPES section follows (cell count 2; the file ends at line 14)")) << e;
+  // Binary: the types are big-endian 32-bit integers; a 5.1 file's CELLS counts offsets.
+  const auto be32 = [](int32_t v) {
+    std::string b(4, '\0');
+    for (int i = 0; i < 4; ++i) b[i] = char(uint32_t(v) >> (24 - 8 * i));
+    return b;
+  };
+  std::string bin = "# vtk DataFile Version 3.0\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n";
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a) {
+      const float f = i == a + 1 ? 1.0f : 0.0f;
+      uint32_t u;
+      std::memcpy(&u, &f, 4);
+      bin += be32(int32_t(u));
+    }
+  bin += "\nCELLS 1 5\n" + be32(4) + be32(0) + be32(1) + be32(2) + be32(3) + "\nCELL_TYPES 1\n";
+  write_text(dir.file("b.vtk"), bin + be32(10) + "\n");
+  EXPECT_EQ(load_input(dir.file("b.vtk")).mesh().num_cells(), 1u);
+  write_text(dir.file("b266.vtk"), bin + be32(266) + "\n");
+  e = input_error([&] { load_input(dir.file("b266.vtk")); });
+  EXPECT_TRUE(contains(e, "b266.vtk: CELL_TYPES (line 9): cell 0: type 266 is not a VTK cell type")) << e;
+  write_text(dir.file("v51.vtk"), "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+                                  "0 0 0\n1 0 0\n0 1 0\n0 0 1\nCELLS 2 4\nOFFSETS vtktypeint64\n0 4\n"
+                                  "CONNECTIVITY vtktypeint64\n0 1 2 3\nCELL_TYPES 2\n10\n10\n");
+  e = input_error([&] { load_input(dir.file("v51.vtk")); });
+  EXPECT_TRUE(contains(e, "v51.vtk: CELL_TYPES (line 15): type count 2 differs from the cell count 1 of CELLS (line 10)"))
+      << e;
+}
