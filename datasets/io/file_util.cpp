@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <system_error>
 #include <vector>
 
@@ -62,6 +63,25 @@ std::string file_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
+}
+
+void require_file_start(const std::string& path, std::initializer_list<const char*> starts, bool after_blanks,
+                        const std::string& format, const std::string& expected) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  const size_t at = after_blanks ? std::min(head.find_first_not_of(" \t\r\n"), head.size()) : 0;
+  for (const char* s : starts)
+    if (head.compare(at, std::strlen(s), s) == 0) return;
+  const std::string why = "is not a " + format + " file: ";
+  if (head.empty()) throw InputError(path, "file", why + "it is empty");
+  if (at == head.size()) throw InputError(path, "file", why + "its first " + std::to_string(at) + " bytes are blank");
+  const std::string line = head.substr(at, std::min(head.find('\n', at), head.size()) - at);
+  if (line.find_first_not_of(" \t\r") == std::string::npos)
+    throw InputError(path, "file", why + "it starts with a blank line, not " + expected);
+  throw InputError(path, "file", why + "it starts with '" + line.substr(0, 16) + (line.size() > 16 ? "...'" : "'") +
+                                     ", not " + expected);
 }
 
 }  // namespace vob

@@ -3,6 +3,7 @@
 // atomic within a file system).
 #pragma once
 #include <functional>
+#include <initializer_list>
 #include <string>
 
 namespace vob {
@@ -16,5 +17,12 @@ void require_readable_file(const std::string& path);
 
 // Lower-case extension with the dot (".vtu"), or "" when there is none.
 std::string file_extension(const std::string& path);
+
+// Unless the file starts with one of `starts` (after blank bytes when `after_blanks`),
+// InputError "is not a FORMAT file: it starts with '...', not EXPECTED" (or "it is
+// empty"). Only the first 4 KiB are read: a reader's library may read a whole file of
+// anything else before failing (gmsh parsed 4 GB of NUL bytes as a script for a minute).
+void require_file_start(const std::string& path, std::initializer_list<const char*> starts, bool after_blanks,
+                        const std::string& format, const std::string& expected);
 
 }  // namespace vob

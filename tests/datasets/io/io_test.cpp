@@ -637,3 +637,48 @@ TEST(DatasetIO, LegacyCellTypesMatchTheCellsAndAreVtkTypes) {
   EXPECT_TRUE(contains(e, "v51.vtk: CELL_TYPES (line 15): type count 2 differs from the cell count 1 of CELLS (line 10)"))
       << e;
 }
+
+// A file that does not start as its format does is refused from its first bytes: gmsh ran
+// a NUL-filled .msh as a .geo script (0.11 s per MB, then "no elements"), and a NUL-filled
+// .vtu was read whole into memory before VTK failed at byte 0.
+TEST(DatasetIO, FilesNotStartingAsTheirFormatAreRefusedAtOnce) {
+  TempDir dir;
+  const std::string nul(1 << 20, '\0');
+  for (const char* name : {"z.msh", "z.vtu", "z.vti", "z.vtk"}) write_text(dir.file(name), nul);
+  std::string e = msh_error(dir.file("z.msh"));
+  EXPECT_TRUE(contains(e, "z.msh: file: is not a gmsh mesh file: it starts with "
+                          "'\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x00...', "
+                          "not $MeshFormat")) << e;
+  e = input_error([&] { load_input(dir.file("z.vtu")); });
+  EXPECT_TRUE(contains(e, "z.vtu: file: is not a VTK XML file: it starts with '\\x00")) << e;
+  EXPECT_TRUE(contains(e, "...', not <?xml or <VTKFile")) << e;
+  e = input_error([&] { load_input(dir.file("z.vti")); });
+  EXPECT_TRUE(contains(e, "z.vti: file: is not a VTK XML file")) << e;
+  e = input_error([&] { load_input(dir.file("z.vtk")); });
+  EXPECT_TRUE(contains(e, "z.vtk: file: is not a legacy VTK file: it starts with '\\x00")) << e;
+  EXPECT_TRUE(contains(e, "...', not '# vtk DataFile Version'")) << e;
+  // A .geo script named .msh is not run; blank lines before $MeshFormat make gmsh do so too.
+  write_text(dir.file("geo.msh"), "Point(1) = {0, 0, 0};\n");
+  e = msh_error(dir.file("geo.msh"));
+  EXPECT_TRUE(contains(e, "geo.msh: file: is not a gmsh mesh file: it starts with 'Point(1) = {0, 0...', not $MeshFormat"))
+      << e;
+  write_text(dir.file("blank.msh"), "\n" + msh41({"1", "2", "3", "4"}, {"1 1 2 3 4"}));
+  e = msh_error(dir.file("blank.msh"));
+  EXPECT_TRUE(contains(e, "blank.msh: file: is not a gmsh mesh file: it starts with a blank line, not $MeshFormat")) << e;
+  write_text(dir.file("empty.msh"), "");
+  e = msh_error(dir.file("empty.msh"));
+  EXPECT_TRUE(contains(e, "empty.msh: file: is not a gmsh mesh file: it is empty")) << e;
+  write_text(dir.file("blank.vtu"), std::string(5000, ' '));
+  e = input_error([&] { load_input(dir.file("blank.vtu")); });
+  EXPECT_TRUE(contains(e, "blank.vtu: file: is not a VTK XML file: its first 4096 bytes are blank")) << e;
+  // Blank lines before the root element are XML.
+  write_text(dir.file("lead.vtu"), "\n  \n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+                                   "<UnstructuredGrid><Piece NumberOfPoints=\"4\" NumberOfCells=\"1\"><Points>"
+                                   "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1"
+                                   "</DataArray></Points><Cells>"
+                                   "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3</DataArray>"
+                                   "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4</DataArray>"
+                                   "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">10</DataArray>"
+                                   "</Cells></Piece></UnstructuredGrid></VTKFile>\n");
+  EXPECT_EQ(load_input(dir.file("lead.vtu")).mesh().num_cells(), 1u);
+}
