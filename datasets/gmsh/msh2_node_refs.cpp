@@ -1,9 +1,11 @@
 #include "datasets/gmsh/msh2_node_refs.h"
 
 #include <algorithm>
+#include <climits>
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <map>
 #include <vector>
 
 #include "datasets/gmsh/msh_text.h"
@@ -125,10 +127,23 @@ void check_msh2_node_refs(const std::string& path, const std::function<int(int)>
       if (!c.line(line) || !first_number(line, m) || m < 0) return;
       if (binary == 1) {
         for (int64_t done = 0; done < m;) {  // blocks: type, count, tags per element
+          const size_t start = c.at;
           int32_t type = 0, count = 0, ntags = 0;
-          if (!c.int32(type) || !c.int32(count) || !c.int32(ntags) || count <= 0 || ntags < 0) return;
+          if (!c.int32(type) || !c.int32(count) || !c.int32(ntags)) return;
+          // gmsh said only "Error loading" for these.
+          const std::string where = "$Elements (byte " + std::to_string(start) + ")";
+          const std::string block = "block of type " + std::to_string(type) + ": ";
+          if (count <= 0 || count > m - done)
+            throw InputError(path, where, block + "element count " + std::to_string(count) + " is not within the " +
+                                              std::to_string(m - done) + " elements left of the section's " +
+                                              std::to_string(m));
+          if (ntags < 0) throw InputError(path, where, block + "tag count " + std::to_string(ntags) + " is negative");
           const int nodes = nodes_of(type);
-          if (nodes <= 0 || !c.skip(4 * (size_t(count) * (1 + size_t(ntags) + size_t(nodes))))) return;
+          if (nodes <= 0) return;  // gmsh names the type
+          const uint64_t bytes = 4 * (uint64_t(count) * (1 + uint64_t(ntags) + uint64_t(nodes)));
+          if (!c.skip(bytes))
+            throw InputError(path, where, block + std::to_string(count) + " elements take " + std::to_string(bytes) +
+                                              " bytes but only " + std::to_string(s.size() - c.at) + " follow");
           done += count;
         }
       } else {
@@ -152,6 +167,13 @@ void check_msh2_node_refs(const std::string& path, const std::function<int(int)>
                        "names node " + std::to_string(node) + ", which $Nodes does not define");
   };
 
+  std::map<int64_t, int> node_counts;  // per type: gmsh's lookup is not cheap per element
+  const auto node_count = [&](int64_t type) {
+    if (type < 0 || type > INT32_MAX) return 0;
+    const auto [it, fresh] = node_counts.try_emplace(type, 0);
+    if (fresh) it->second = nodes_of(int(type));
+    return it->second;
+  };
   for (size_t start : element_sections) {
     Cursor c{s, start};
     int64_t m = 0;
@@ -177,7 +199,17 @@ void check_msh2_node_refs(const std::string& path, const std::function<int(int)>
         int64_t id = 0;
         if (!c.line(line) || !first_number(line, id)) return;
         check_tag(path, "element", id, s, start);
-        if (!numbers(line, v) || v.size() < 3 || v[2] < 0 || int64_t(v.size()) < 3 + v[2]) return;
+        if (!numbers(line, v) || v.size() < 3) return;
+        // gmsh reads numbers, not lines: a wrong tag count made it fail later on with
+        // "Error loading" or "Wrong node index 0".
+        const auto where = [&] { return "element " + std::to_string(v[0]) + " (" + line_of(s, start) + ")"; };
+        if (v[2] < 0) throw InputError(path, where(), "tag count " + std::to_string(v[2]) + " is negative");
+        const int nodes = node_count(v[1]);
+        if (nodes > 0 && int64_t(v.size()) - 3 - nodes != v[2])
+          throw InputError(path, where(), "type " + std::to_string(v[1]) + " has " + std::to_string(nodes) +
+                                              " nodes and the tag count is " + std::to_string(v[2]) + ", but the line holds " +
+                                              std::to_string(v.size() - 3) + " numbers after the tag count");
+        if (int64_t(v.size()) < 3 + v[2]) return;  // a type gmsh does not know: it names it
         for (size_t k = 3 + size_t(v[2]); k < v.size(); ++k) check(v[0], v[k]);
       }
     }

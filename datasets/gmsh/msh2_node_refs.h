@@ -3,7 +3,9 @@
 // numbered nodes through as a null node, then crashes on it
 // (GModel::_associateEntityWithMeshVertices), so such a file is refused here first; so is
 // a node or element tag of an ASCII file beyond what gmsh holds (kMaxGmshTag, msh_text.h;
-// binary files hold 32-bit tags).
+// binary files hold 32-bit tags). Element lines and binary element blocks are checked
+// against their tag counts and their types' node counts (gmsh reads numbers, not lines,
+// and failed later with "Error loading" or "Wrong node index 0").
 // Other versions, and files this scan cannot follow (cut, garbled), are left to gmsh,
 // which reports them.
 #pragma once

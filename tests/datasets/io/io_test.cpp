@@ -682,3 +682,48 @@ TEST(DatasetIO, FilesNotStartingAsTheirFormatAreRefusedAtOnce) {
                                    "</Cells></Piece></UnstructuredGrid></VTKFile>\n");
   EXPECT_EQ(load_input(dir.file("lead.vtu")).mesh().num_cells(), 1u);
 }
+
+// MSH 2 element lines and binary blocks against their tag counts: gmsh reads numbers, not
+// lines, and said "Error loading ..." or "Wrong node index 0" without naming the element.
+TEST(DatasetIO, GmshMsh2TagCountsAreChecked) {
+  TempDir dir;
+  const std::vector<std::string> nodes = {"1", "2", "3", "4"};
+  write_text(dir.file("huge.msh"), msh22(nodes, {"1 4 1000000000 0 1 1 2 3 4"}));
+  std::string e = msh_error(dir.file("huge.msh"));
+  EXPECT_TRUE(contains(e, "huge.msh: element 1 (line 13): type 4 has 4 nodes and the tag count is 1000000000, "
+                          "but the line holds 6 numbers after the tag count")) << e;
+  write_text(dir.file("neg.msh"), msh22(nodes, {"1 4 -3 0 1 1 2 3 4"}));
+  e = msh_error(dir.file("neg.msh"));
+  EXPECT_TRUE(contains(e, "neg.msh: element 1 (line 13): tag count -3 is negative")) << e;
+  write_text(dir.file("short.msh"), msh22(nodes, {"1 4 2 0 1 1 2 3"}));
+  e = msh_error(dir.file("short.msh"));
+  EXPECT_TRUE(contains(e, "short.msh: element 1 (line 13): type 4 has 4 nodes and the tag count is 2, "
+                          "but the line holds 5 numbers")) << e;
+  EXPECT_EQ(msh_cells((write_text(dir.file("ok.msh"), msh22(nodes, {"1 4 2 0 1 1 2 3 4"})), dir.file("ok.msh"))), 1u);
+  // Binary: a block's type, element count and tag count, then its elements.
+  const auto i32 = [](std::initializer_list<int32_t> v) {
+    std::string b;
+    for (const int32_t x : v) b.append(reinterpret_cast<const char*>(&x), 4);
+    return b;
+  };
+  std::string head = "$MeshFormat\n2.2 1 8\n" + i32({1}) + "\n$EndMeshFormat\n$Nodes\n4\n";
+  for (int i = 1; i <= 4; ++i) {
+    head += i32({i});
+    for (int a = 0; a < 3; ++a) {
+      const double d = i == a + 2;
+      head.append(reinterpret_cast<const char*>(&d), 8);
+    }
+  }
+  head += "\n$EndNodes\n$Elements\n1\n";
+  const std::string tail = "\n$EndElements\n";
+  write_text(dir.file("b.msh"), head + i32({4, 1, 2, 1, 0, 1, 1, 2, 3, 4}) + tail);
+  EXPECT_EQ(msh_cells(dir.file("b.msh")), 1u);
+  write_text(dir.file("bneg.msh"), head + i32({4, 1, -7, 1, 0, 1, 1, 2, 3, 4}) + tail);
+  e = msh_error(dir.file("bneg.msh"));
+  EXPECT_TRUE(contains(e, "bneg.msh: $Elements (byte 184): block of type 4: tag count -7 is negative")) << e;
+  write_text(dir.file("bbig.msh"), head + i32({4, 2000000000, 2, 1, 0, 1, 1, 2, 3, 4}) + tail);
+  e = msh_error(dir.file("bbig.msh"));
+  EXPECT_TRUE(contains(e, "bbig.msh: $Elements (byte 184): block of type 4: element count 2000000000 is not within "
+                          "the 1 elements left of the section's 1")) << e;
+}
+
