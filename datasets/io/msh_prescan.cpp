@@ -1,6 +1,8 @@
 #include "datasets/io/msh_prescan.h"
 
+#include <climits>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +17,32 @@ namespace {
 // The file is scanned in chunks for "$Nodes\n" and "$Elements\n" at line starts; a chunk
 // keeps the tail of the previous one so a marker split between them is still found.
 constexpr size_t kChunk = size_t(1) << 20;
+// A $NodeData header (its tags) is read from this many bytes after the marker.
+constexpr size_t kDataHeader = 1024;
+
+// $NodeData's header: string tags (the view's name first), real tags, integer tags, one a
+// line; the third integer tag counts the values that follow. False when it cannot be read
+// here (gmsh reports it).
+bool node_data_header(const std::string& text, std::string& name, long long& count) {
+  std::istringstream in(text);
+  std::string line;
+  const auto number = [&](long long& v) { return std::getline(in, line) && std::sscanf(line.c_str(), "%lld", &v) == 1; };
+  long long n = 0;
+  if (!number(n) || n < 0 || n > 8) return false;
+  for (long long i = 0; i < n; ++i) {
+    if (!std::getline(in, line)) return false;
+    if (i == 0) name = line.substr(0, line.find_last_not_of("\r") + 1);
+  }
+  if (!number(n) || n < 0 || n > 8) return false;
+  for (long long i = 0; i < n; ++i)
+    if (!std::getline(in, line)) return false;
+  long long ints = 0, v = 0;
+  if (!number(ints) || ints < 3) return false;
+  for (int i = 0; i < 3; ++i)
+    if (!number(v)) return false;
+  count = v;
+  return true;
+}
 }  // namespace
 
 void prescan_msh(const std::string& path) {
@@ -75,9 +103,23 @@ void prescan_msh(const std::string& path) {
                                " bytes follow");
       }
     }
+    // gmsh reads the count into an int: beyond it (10^12 values declared, 2 given) the
+    // view was dropped without a word, and the mesh read without its scalars.
+    for (size_t at = buf.find("\n$NodeData\n"); at != std::string::npos; at = buf.find("\n$NodeData\n", at + 1)) {
+      const size_t after = at + std::strlen("\n$NodeData\n");
+      if (after + kDataHeader > buf.size() && in) continue;  // found again next round
+      std::string name;
+      long long count = 0;
+      if (!node_data_header(buf.substr(after, kDataHeader), name, count)) continue;
+      const uintmax_t left = size - (base + after);
+      const std::string declares = "declares " + std::to_string(count) + " values";
+      if (count < 0 || uintmax_t(count) > left / 2)
+        throw InputError(path, "NodeData " + name, declares + " but only " + std::to_string(left) + " bytes follow");
+      if (count > INT32_MAX) throw InputError(path, "NodeData " + name, declares + "; gmsh reads at most 2147483647");
+    }
     if (!in) break;
     // Keep a tail that can hold a marker and its header; drop the rest.
-    const size_t keep = std::min(buf.size(), size_t(96));
+    const size_t keep = std::min(buf.size(), kDataHeader + 64);
     base += buf.size() - keep;
     buf.erase(0, buf.size() - keep);
   }

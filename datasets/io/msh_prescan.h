@@ -3,7 +3,9 @@
 // 10^9 nodes would take minutes and gigabytes before failing. Every node and element takes
 // at least 2 bytes. Checks the $MeshFormat line too (version 2.x or 4.x, ASCII or binary);
 // a file must start with it (or with MSH 1's $NOD), as gmsh requires of a mesh.
-// Only the section headers are checked; gmsh reports what lies inside them.
+// $NodeData's value count is checked the same way (gmsh dropped a view declaring more
+// than an int holds, silently). Only the section headers are checked; gmsh reports what
+// lies inside them.
 #pragma once
 #include <string>
 

@@ -727,3 +727,20 @@ TEST(DatasetIO, GmshMsh2TagCountsAreChecked) {
                           "the 1 elements left of the section's 1")) << e;
 }
 
+// gmsh reads $NodeData's value count into an int: 10^12 values declared (2 given) dropped
+// the view without a word and the mesh was read without its scalars.
+TEST(DatasetIO, GmshNodeDataCountBeyondTheFileIsRefused) {
+  TempDir dir;
+  const std::string mesh = msh22({"1", "2", "3", "4"}, {"1 4 2 0 1 1 2 3 4"});
+  const auto data = [](const std::string& count, const std::string& values) {
+    return "$NodeData\n1\n\"s\"\n1\n0.0\n3\n0\n1\n" + count + "\n" + values + "$EndNodeData\n";
+  };
+  write_text(dir.file("ok.msh"), mesh + data("4", "1 0\n2 1\n3 2\n4 3\n"));
+  EXPECT_EQ(msh_cells(dir.file("ok.msh")), 1u);
+  write_text(dir.file("huge.msh"), mesh + data("1000000000000", "1 0\n2 1\n"));
+  std::string e = msh_error(dir.file("huge.msh"));
+  EXPECT_TRUE(contains(e, "huge.msh: NodeData \"s\": declares 1000000000000 values but only 53 bytes follow")) << e;
+  write_text(dir.file("neg.msh"), mesh + data("-2", "1 0\n2 1\n"));
+  e = msh_error(dir.file("neg.msh"));
+  EXPECT_TRUE(contains(e, "neg.msh: NodeData \"s\": declares -2 values")) << e;
+}
