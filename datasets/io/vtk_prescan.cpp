@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string_view>
 #include <vector>
@@ -115,6 +116,26 @@ class ValueReader {
     v = x;
     return true;
   }
+  // The next word of an ASCII file (valid until the next call); false at the file's end.
+  bool word(std::string_view& w) {
+    for (;;) {
+      while (pos_ < end_ && std::isspace(static_cast<unsigned char>(buf_[pos_]))) ++pos_;
+      if (pos_ < end_ || !fill(1)) break;
+    }
+    if (pos_ >= end_) return false;
+    size_t have = 0;
+    for (;;) {  // a word cut by the buffer's end: read more
+      while (pos_ + have < end_ && !std::isspace(static_cast<unsigned char>(buf_[pos_ + have]))) ++have;
+      if (pos_ + have < end_ || !fill(have + 1)) break;
+    }
+    w = std::string_view(buf_.data() + pos_, have);
+    pos_ += have;
+    return true;
+  }
+  // Line breaks read over so far (for naming the line of the last word).
+  size_t breaks() const {
+    return breaks_ + size_t(std::count(buf_.begin(), buf_.begin() + static_cast<std::ptrdiff_t>(pos_), '\n'));
+  }
   // Returns the line breaks read over (the caller's line count goes on from them).
   size_t finish() {
     in_.clear();
@@ -189,6 +210,42 @@ size_t walk_cell_types(std::istream& in, const std::string& path, const std::str
     if (type < 0 || type >= VTK_NUMBER_OF_CELL_TYPES)
       throw InputError(path, where, "cell " + std::to_string(c) + ": type " + std::to_string(type) +
                                         " is not a VTK cell type");
+  }
+  return values.finish();
+}
+
+// A legacy keyword: capitals and '_' ("NAN" and "INF" are numbers to `>>`'s eye, if not finite).
+bool is_keyword(std::string_view w) {
+  std::string lower;
+  for (const char c : w) {
+    if (!std::isupper(static_cast<unsigned char>(c)) && c != '_') return false;
+    lower += char(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return !w.empty() && lower != "nan" && lower != "inf" && lower != "infinity";
+}
+
+// `n` ASCII numbers after line `line` (point coordinates, or scalars): VTK reads them with
+// `>>`, which stops at "nan", "inf" or a word that is no number, and says only "Error reading
+// ascii data". Each must be a finite number (within float's range for float data). An item
+// (point, cell) holds `per` of them; `what` names the values.
+size_t walk_ascii_reals(std::istream& in, const std::string& path, const std::string& where, int64_t line,
+                        uint64_t n, uint64_t per, const char* item, const std::string& what, bool as_float) {
+  ValueReader values(in, false);
+  std::string_view w;
+  for (uint64_t i = 0; i < n; ++i) {
+    if (!values.word(w))
+      throw InputError(path, where, "the file ends after " + std::to_string(i) + " of its " + std::to_string(n) +
+                                        " values");
+    double v = 0;
+    const bool finite = parse_finite(w, v);
+    if (finite && !(as_float && std::abs(v) > std::numeric_limits<float>::max())) continue;
+    const std::string at = "line " + std::to_string(line + 1 + int64_t(values.breaks()));
+    if (is_keyword(w))  // the values end early
+      throw InputError(path, where, "holds " + std::to_string(i) + " of its " + std::to_string(n) + " values, then '" +
+                                        std::string(w.substr(0, 40)) + "' at " + at);
+    throw InputError(path, std::string(item) + " " + std::to_string(i / per) + " (" + at + ")",
+                     what + " is '" + std::string(w.substr(0, 40)) + "', " +
+                         (finite ? "beyond float's range" : "not a finite number"));
   }
   return values.finish();
 }
@@ -339,6 +396,8 @@ void prescan_vtk_legacy(const std::string& path) {
   // and leaves the other cells' types uninitialised (a real tet dropped at random).
   std::string cells_at, types_at;  // "CELLS (line N)", or "" until seen
   uint64_t cells_count = 0, types_count = 0;
+  uint64_t data_count = 0;            // of the last POINT_DATA or CELL_DATA
+  const char* data_item = nullptr;    // "point" or "cell" after one of them
   const auto agree = [&] {
     if (!cells_at.empty() && !types_at.empty() && cells_count != types_count)
       throw InputError(path, types_at, "type count " + std::to_string(types_count) + " differs from the cell count " +
@@ -368,7 +427,9 @@ void prescan_vtk_legacy(const std::string& path) {
     };
     if (key == "POINTS") {
       need(3);
-      count(path, where, t[1], bytes / 3, "point count");
+      const uint64_t n = count(path, where, t[1], bytes / 3, "point count");
+      if (!binary && (t[2] == "float" || t[2] == "double"))
+        number += int64_t(walk_ascii_reals(in, path, where, number, 3 * n, 3, "point", "a coordinate", t[2] == "float"));
     } else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES" ||
                key == "TRIANGLE_STRIPS") {
       need(3);
@@ -388,7 +449,22 @@ void prescan_vtk_legacy(const std::string& path) {
       number += int64_t(walk_cell_types(in, path, where, types_count, binary));
     } else if (key == "POINT_DATA" || key == "CELL_DATA") {
       need(2);
-      count(path, where, t[1], bytes, "count");
+      data_count = count(path, where, t[1], bytes, "count");
+      data_item = key == "POINT_DATA" ? "point" : "cell";
+    } else if (key == "SCALARS" && !binary && data_item && t.size() >= 3 && (t[2] == "float" || t[2] == "double")) {
+      int64_t comps = 1;
+      if (t.size() > 3 && (!parse_int(t[3], comps) || comps < 1 || comps > 4)) continue;  // VTK says why
+      const std::string what = "scalar '" + std::string(t[1]) + "'";
+      const bool as_float = t[2] == "float";
+      const std::streampos next = in.tellg();
+      if (std::getline(in, line) && line.rfind("LOOKUP_TABLE", 0) == 0) {
+        ++number;
+      } else {  // the table line is optional
+        in.clear();
+        in.seekg(next);
+      }
+      number += int64_t(walk_ascii_reals(in, path, where, number, data_count * uint64_t(comps), uint64_t(comps),
+                                         data_item, what, as_float));  // `t` viewed the line read over
     } else if (key == "DIMENSIONS") {
       need(4);
       double n = 1;

@@ -20,7 +20,9 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type);
 // integers and fit the file (every value takes at least one byte); a cell list in the format
 // before 5.1 ("k id_1 .. id_k" per cell) holds exactly its declared values, every k
 // non-negative and within them (VTK walks it unchecked); CELL_TYPES gives one type per cell
-// of CELLS, each a VTK cell type code (VTK keeps them in a byte).
+// of CELLS, each a VTK cell type code (VTK keeps them in a byte). In ASCII files the float
+// or double POINTS and SCALARS values are finite numbers, as many as declared (VTK's `>>`
+// stops at "nan" and says only "Error reading ascii data").
 void prescan_vtk_legacy(const std::string& path);
 
 }  // namespace vob

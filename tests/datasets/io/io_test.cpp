@@ -744,3 +744,32 @@ TEST(DatasetIO, GmshNodeDataCountBeyondTheFileIsRefused) {
   e = msh_error(dir.file("neg.msh"));
   EXPECT_TRUE(contains(e, "neg.msh: NodeData \"s\": declares -2 values")) << e;
 }
+
+// VTK reads ASCII legacy numbers with `>>`, which stops at "nan", "inf" or a missing value
+// and said only "Error reading ascii data. Possible mismatch of datasize with declaration".
+TEST(DatasetIO, LegacyAsciiNumbersAreNamedWhenNotFinite) {
+  TempDir dir;
+  const auto refused = [&](const std::string& name, const std::string& from, const std::string& to) {
+    std::string text = gmsh_like_vtk();
+    text.replace(text.find(from), from.size(), to);
+    write_text(dir.file(name), text);
+    return input_error([&] { load_input(dir.file(name)); });
+  };
+  std::string e = refused("nan.vtk", "1 1 0\n", "1 nan 0\n");
+  EXPECT_TRUE(contains(e, "nan.vtk: point 2 (line 8): a coordinate is 'nan', not a finite number")) << e;
+  e = refused("word.vtk", "0 0 1\n", "0 0 1,\n");
+  EXPECT_TRUE(contains(e, "word.vtk: point 4 (line 10): a coordinate is '1,', not a finite number")) << e;
+  e = refused("short.vtk", "POINTS 9 double", "POINTS 10 double");
+  EXPECT_TRUE(contains(e, "short.vtk: POINTS (line 5): holds 27 of its 30 values, then 'CELLS' at line 15")) << e;
+  e = refused("inf.vtk", "0 1 2 3 4 5 6 7 8\n", "0 1 2 inf 4 5 6 7 8\n");
+  EXPECT_TRUE(contains(e, "inf.vtk: point 3 (line 28): scalar 's' is 'inf', not a finite number")) << e;
+  std::string text = gmsh_like_vtk();
+  text.replace(text.find("POINTS 9 double"), 15, "POINTS 9 float");
+  text.replace(text.find("0.5 0.5 0.5"), 11, "0.5 1e39 0.5");
+  write_text(dir.file("float.vtk"), text);
+  e = input_error([&] { load_input(dir.file("float.vtk")); });
+  EXPECT_TRUE(contains(e, "float.vtk: point 8 (line 14): a coordinate is '1e39', beyond float's range")) << e;
+  text.replace(text.find("1e39"), 4, "1e38");
+  write_text(dir.file("float.vtk"), text);
+  EXPECT_EQ(load_input(dir.file("float.vtk")).mesh().num_points(), 9u);
+}
