@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -297,6 +298,108 @@ void check_numbers(const std::string& path, const Tag& tag, const char* attr, si
   }
 }
 
+// How a .vtu file stores binary data: VTKFile's byte_order, header_type and compressor.
+struct BinaryLayout {
+  bool little_endian = true;
+  size_t word = 4;  // bytes of a header word (UInt32 or UInt64)
+  bool compressed = false;
+};
+
+// Bytes of a DataArray's value type; 0 for a name not known here.
+size_t value_bytes(const std::string& type) {
+  if (type == "Int8" || type == "UInt8") return 1;
+  if (type == "Int16" || type == "UInt16") return 2;
+  if (type == "Int32" || type == "UInt32" || type == "Float32") return 4;
+  if (type == "Int64" || type == "UInt64" || type == "Float64") return 8;
+  return 0;
+}
+
+// The first `want` bytes base64 `text` decodes to (whitespace skipped), or fewer at its end.
+std::string base64_head(std::string_view text, size_t want) {
+  std::string out;
+  uint32_t acc = 0;
+  int bits = 0;
+  for (const char c : text) {
+    if (out.size() >= want || c == '=') break;
+    const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const char* d = c ? std::strchr(digits, c) : nullptr;
+    if (!d) continue;  // whitespace (anything else VTK reports)
+    acc = acc << 6 | uint32_t(d - digits);
+    if ((bits += 6) >= 8) out += char(acc >> (bits -= 8) & 0xFF);
+  }
+  return out;
+}
+
+// The byte count of a binary or appended array's data from its header (`head`, raw bytes):
+// one word, or for compressed data the block count, block size and last block's size.
+bool data_bytes(const std::string& head, const BinaryLayout& f, uint64_t& bytes) {
+  const size_t words = f.compressed ? 3 : 1;
+  if (head.size() < words * f.word) return false;
+  uint64_t w[3] = {0, 0, 0};
+  for (size_t k = 0; k < words; ++k)
+    for (size_t b = 0; b < f.word; ++b) {
+      const auto byte = uint64_t(static_cast<unsigned char>(head[k * f.word + (f.little_endian ? b : f.word - 1 - b)]));
+      w[k] |= byte << (8 * b);
+    }
+  bytes = !f.compressed ? w[0] : w[0] == 0 ? 0 : (w[0] - 1) * w[1] + (w[2] ? w[2] : w[1]);
+  return true;
+}
+
+// A Cells array ("offsets" or "types") must hold one value per cell: VTK reads NumberOfCells
+// of them and ignores the rest (NumberOfCells="1" over two cells read one, silently).
+void check_cell_count(const std::string& path, const std::string& name, uint64_t held, uint64_t cells) {
+  if (held != cells)
+    throw InputError(path, "Cells DataArray '" + name + "'",
+                     "its value count " + std::to_string(held) + " differs from the Piece's NumberOfCells " +
+                         std::to_string(cells));
+}
+
+// An ASCII "offsets" or "types" array: its values counted, types range-checked (VTK keeps a
+// type in a byte: "266" in a UInt8 array was read as 10, a tetra).
+void check_ascii_cells(const std::string& path, const std::string& name, std::string_view data, uint64_t cells) {
+  uint64_t n = 0;
+  for (const std::string_view w : split(data)) {
+    int64_t type = 0;
+    if (name == "types" && (!parse_int(w, type) || type < 0 || type >= VTK_NUMBER_OF_CELL_TYPES))
+      throw InputError(path, "Cells DataArray 'types'", "cell " + std::to_string(n) + ": type '" +
+                                                             std::string(w.substr(0, 40)) + "' is not a VTK cell type");
+    ++n;
+  }
+  check_cell_count(path, name, n, cells);
+}
+
+struct AppendedArray {
+  std::string name;
+  uint64_t offset, value_bytes, cells;
+};
+
+// Cell arrays in <AppendedData> (which starts at byte `at`): each one's header read at its
+// offset past the '_', raw or base64 as the section's encoding says.
+void check_appended_cells(const std::string& path, uint64_t at, const BinaryLayout& layout,
+                          const std::vector<AppendedArray>& arrays) {
+  std::ifstream in(path, std::ios::binary);
+  std::string tag(4096, '\0');
+  in.seekg(std::streamoff(at));
+  in.read(tag.data(), std::streamsize(tag.size()));
+  tag.resize(size_t(in.gcount()));
+  const size_t close = tag.find('>');
+  const size_t mark = close == std::string::npos ? close : tag.find('_', close);
+  if (mark == std::string::npos) return;  // VTK reports it
+  const Tag t = parse_tag(std::string_view(tag).substr(1, close - 1));
+  const bool base64 = t.attrs.count("encoding") && t.attrs.at("encoding") == "base64";
+  const size_t want = 3 * layout.word;
+  for (const AppendedArray& a : arrays) {
+    std::string head(base64 ? want * 4 / 3 + 4 : want, '\0');
+    in.clear();
+    in.seekg(std::streamoff(at + mark + 1 + a.offset));
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(size_t(in.gcount()));
+    if (base64) head = base64_head(head, want);
+    uint64_t bytes = 0;
+    if (data_bytes(head, layout, bytes)) check_cell_count(path, a.name, bytes / a.value_bytes, a.cells);
+  }
+}
+
 // Points of an extent "x0 x1 y0 y1 z0 z1" (already checked to hold 6 integers).
 double extent_points(const std::string& path, const std::string& element, const std::string& text) {
   const auto parts = split(text);
@@ -321,6 +424,10 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
   double budget = bytes;
   int depth = 0;
   size_t i = 0;
+  BinaryLayout layout;
+  int64_t piece_cells = -1;  // the current Piece's NumberOfCells
+  bool in_cells = false;
+  std::vector<AppendedArray> appended;  // cell arrays in <AppendedData>, checked after the tags
   while ((i = text.find('<', i)) != std::string::npos) {
     if (text.compare(i, 4, "<!--") == 0) {
       const size_t e = text.find("-->", i);
@@ -336,6 +443,7 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
     if (body.empty() || body[0] == '?' || body[0] == '!') continue;
     if (body[0] == '/') {
       --depth;
+      if (body.substr(1, 5) == "Cells") in_cells = false;
       continue;
     }
     const bool closed = body.back() == '/';
@@ -349,12 +457,17 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
         throw InputError(path, "VTKFile type", "'" + (t == tag.attrs.end() ? "" : t->second) +
                                                   "' is not " + expected_type);
       if (tag.attrs.count("compressor")) budget = bytes * kMaxCompressionRatio;
+      layout.compressed = tag.attrs.count("compressor") > 0;
+      layout.little_endian = !tag.attrs.count("byte_order") || tag.attrs.at("byte_order") != "BigEndian";
+      layout.word = tag.attrs.count("header_type") && tag.attrs.at("header_type") == "UInt64" ? 8 : 4;
     }
+    if (tag.name == "Cells") in_cells = !closed;
     if (tag.name == "Piece") {
       if (auto a = tag.attrs.find("NumberOfPoints"); a != tag.attrs.end())
         count(path, "Piece NumberOfPoints", a->second, budget / 3, "point count");
+      piece_cells = -1;
       if (auto a = tag.attrs.find("NumberOfCells"); a != tag.attrs.end())
-        count(path, "Piece NumberOfCells", a->second, budget, "cell count");
+        piece_cells = int64_t(count(path, "Piece NumberOfCells", a->second, budget, "cell count"));
     }
     if (tag.name == "DataArray") {
       const auto a = tag.attrs.find("NumberOfTuples");
@@ -365,6 +478,22 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
       if (a != tag.attrs.end())
         count(path, "DataArray " + name + " NumberOfTuples", a->second,
               budget / static_cast<double>(std::max<uint64_t>(comps, 1)), "tuple count");
+      const auto f = tag.attrs.find("format");
+      const size_t each = value_bytes(tag.attrs.count("type") ? tag.attrs.at("type") : "");
+      if (in_cells && piece_cells >= 0 && (name == "offsets" || name == "types") && f != tag.attrs.end()) {
+        const std::string_view data = closed ? std::string_view() : std::string_view(text).substr(i, text.find('<', i) - i);
+        uint64_t held = 0;
+        if (f->second == "ascii") {
+          check_ascii_cells(path, name, data, uint64_t(piece_cells));
+        } else if (f->second == "binary" && each > 0 &&
+                   data_bytes(base64_head(data, 3 * layout.word), layout, held)) {
+          check_cell_count(path, name, held / each, uint64_t(piece_cells));
+        } else if (f->second == "appended" && each > 0 && tag.attrs.count("offset")) {
+          int64_t offset = 0;
+          if (parse_int(tag.attrs.at("offset"), offset) && offset >= 0)
+            appended.push_back({name, uint64_t(offset), each, uint64_t(piece_cells)});
+        }
+      }
     }
     if (tag.name == "ImageData" || tag.name == "Piece") {
       const char* ext = tag.name == "ImageData" ? "WholeExtent" : "Extent";
@@ -378,6 +507,7 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
                          "'" + a->second + "' promises more points than a file of this size can hold");
     }
   }
+  if (!appended.empty()) check_appended_cells(path, text.size(), layout, appended);
 }
 
 void prescan_vtk_legacy(const std::string& path) {

@@ -773,3 +773,47 @@ TEST(DatasetIO, LegacyAsciiNumbersAreNamedWhenNotFinite) {
   write_text(dir.file("float.vtk"), text);
   EXPECT_EQ(load_input(dir.file("float.vtk")).mesh().num_points(), 9u);
 }
+
+namespace {
+// Two tetrahedra sharing a face as an ASCII .vtu; `cells` is NumberOfCells, `types` the
+// types array's text.
+std::string ascii_vtu(const std::string& cells, const std::string& types) {
+  return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+         "<UnstructuredGrid><Piece NumberOfPoints=\"5\" NumberOfCells=\"" + cells + "\"><Points>"
+         "<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0 0 0 1 1 1 1"
+         "</DataArray></Points><Cells>"
+         "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3 4 2 1 3</DataArray>"
+         "<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">4 8</DataArray>"
+         "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">" + types + "</DataArray>"
+         "</Cells></Piece></UnstructuredGrid></VTKFile>\n";
+}
+}  // namespace
+
+// VTK reads NumberOfCells offsets and types and ignores the rest (a cell dropped silently),
+// and parses an ASCII UInt8 "266" as 10, a tetra.
+TEST(DatasetIO, VtuCellArraysHoldNumberOfCellsVtkTypes) {
+  TempDir dir;
+  write_text(dir.file("ok.vtu"), ascii_vtu("2", "10 10"));
+  EXPECT_EQ(load_input(dir.file("ok.vtu")).mesh().num_cells(), 2u);
+  write_text(dir.file("less.vtu"), ascii_vtu("1", "10 10"));
+  std::string e = input_error([&] { load_input(dir.file("less.vtu")); });
+  EXPECT_TRUE(contains(e, "less.vtu: Cells DataArray 'offsets': its value count 2 differs from the Piece's NumberOfCells 1"))
+      << e;
+  write_text(dir.file("t.vtu"), ascii_vtu("2", "10 266"));
+  e = input_error([&] { load_input(dir.file("t.vtu")); });
+  EXPECT_TRUE(contains(e, "t.vtu: Cells DataArray 'types': cell 1: type '266' is not a VTK cell type")) << e;
+  // Appended raw data: counted from the arrays' headers.
+  write_scene(make("zoo"), dir.file("zoo.vtu"));
+  std::ifstream in(dir.file("zoo.vtu"), std::ios::binary);
+  std::stringstream all;
+  all << in.rdbuf();
+  std::string text = all.str();
+  const size_t at = text.find("NumberOfCells=\"") + 15;
+  const std::string n = text.substr(at, text.find('"', at) - at);
+  text.replace(at, n.size(), std::to_string(std::stoi(n) - 1));
+  write_text(dir.file("zoo_less.vtu"), text);
+  e = input_error([&] { load_input(dir.file("zoo_less.vtu")); });
+  EXPECT_TRUE(contains(e, "zoo_less.vtu: Cells DataArray 'offsets': its value count " + n +
+                              " differs from the Piece's NumberOfCells " + std::to_string(std::stoi(n) - 1)))
+      << e;
+}
