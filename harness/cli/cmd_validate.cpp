@@ -76,12 +76,15 @@ Command add_validate_command(CLI::App& app) {
       std::cout << out.dump(2) << "\n";
     } else {
       if (r.method == "boundary") {
-        std::printf("%s: %zu cells, 0 interpenetrating pairs (certified by the boundary check: "
-                    "%lld boundary triangles, %lld exact pair tests, %lld components; "
+        const auto counted = [](long long n, const char* noun) {  // "1 component", "2 components"
+          return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+        };
+        std::printf("%s: %s, 0 interpenetrating pairs (certified by the boundary check: %s, %s, %s; "
                     "%.2f s, %.2f s CPU)\n",
-                    source.c_str(), scene.num_primitives(), (long long)cert.boundary_triangles,
-                    (long long)cert.contact_pairs, (long long)cert.components, cert.seconds,
-                    cert.cpu_seconds);
+                    source.c_str(), counted((long long)scene.num_primitives(), "cell").c_str(),
+                    counted(cert.boundary_triangles, "boundary triangle").c_str(),
+                    counted(cert.contact_pairs, "exact pair test").c_str(), counted(cert.components, "component").c_str(),
+                    cert.seconds, cert.cpu_seconds);
       } else {
         if (cert.result == OverlapCertificate::Overlap)
           std::printf("%s: the boundary check found cells %d and %d interpenetrating (%.2f s); "

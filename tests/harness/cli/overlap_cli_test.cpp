@@ -95,6 +95,21 @@ TEST(CliOverlap, ValidateOfAValidMeshIsClean) {
   }
 }
 
+// The summary line counts in the singular where a count is 1 (it said "1 components").
+TEST(CliOverlap, ValidateSummarySaysOneComponent) {
+  vob::CellMesh m;
+  m.points = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  m.add_cell(vob::CellType::Tetra, {0, 1, 2, 3});
+  const fs::path p = scratch("one.vtu");
+  vob::write_scene(vob::Scene::from_mesh("one", std::move(m)), p.string());
+  const Outcome r = vobench("validate " + p.string());
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find(": 1 cell, 0 interpenetrating pairs (certified by the boundary check: 4 boundary triangles, "
+                       "0 exact pair tests, 1 component; "),
+            std::string::npos)
+      << r.out;
+}
+
 TEST(CliOverlap, ValidateListsEveryPairWhenTheBoundaryCheckFindsOne) {
   const Outcome fast = vobench("validate --json " + kGmsh);
   const Outcome full = vobench("validate --json --exhaustive " + kGmsh);
