@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -188,7 +189,14 @@ size_t walk_legacy_cells(std::istream& in, const std::string& path, const std::s
     if (k < 0 || used > size || static_cast<uint64_t>(k) > size - used)
       throw InputError(path, where, "cell " + std::to_string(c) + ": point count " + std::to_string(k) +
                                         " does not fit the list's " + std::to_string(size) + " values");
-    for (int64_t j = 0; j < k; ++j) next();
+    for (int64_t j = 0; j < k; ++j) {
+      // VTK reads the list into 32-bit ints: a larger index ended in "Error reading ascii
+      // cell data!" (negative ones are named after reading).
+      const int64_t id = next();
+      if (id > INT32_MAX)
+        throw InputError(path, where, "cell " + std::to_string(c) + ": point index " + std::to_string(id) +
+                                          " is beyond 2147483647 (VTK reads these lists as 32-bit integers)");
+    }
     used += static_cast<uint64_t>(k);
   }
   if (used != size)

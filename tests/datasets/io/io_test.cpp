@@ -603,6 +603,10 @@ TEST(DatasetIO, LegacyCellTypesMatchTheCellsAndAreVtkTypes) {
     e = input_error([&] { load_input(dir.file("t.vtk")); });
     EXPECT_TRUE(contains(e, "t.vtk: CELL_TYPES (line 14): cell 1: type " + type + " is not a VTK cell type")) << e;
   }
+  // Point indices of a pre-5.1 list are 32-bit ints to VTK ("Error reading ascii cell data!").
+  write_text(dir.file("big.vtk"), legacy_tets("CELLS 2 10\n4 0 1 2 3\n4 4 2 1 1099511627776\n", "CELL_TYPES 2\n10\n10\n"));
+  e = input_error([&] { load_input(dir.file("big.vtk")); });
+  EXPECT_TRUE(contains(e, "big.vtk: CELLS (line 11): cell 1: point index 1099511627776 is beyond 2147483647")) << e;
   // Lines are counted through the walked lists.
   write_text(dir.file("pd.vtk"), legacy_tets(kTwoTetCells, "CELL_TYPES 2\n10\n10\nPOINT_DATA x\n"));
   e = input_error([&] { load_input(dir.file("pd.vtk")); });
