@@ -102,8 +102,9 @@ struct OracleResult {
 // overlap that can make the midpoint rule flag an exact order (the front segment's
 // midpoint must pass the back one's t_in): every overlap that can blame an orderer is
 // reported, while staying 10^4 above the rounding noise of t at ordinary angles.
+// (kOverlapRelative is defined with the cell model, harness/scene/cell_planes.h, which
+// `vobench validate` applies to warped cells.)
 // Samples are processed in bands of rows in parallel; results do not depend on threads.
-constexpr double kOverlapRelative = 0.5 * kMinSegmentRelative;
 constexpr double kDepthTieRelative = 1e-9;
 
 OracleResult check_ordering(const Scene& scene, const Camera& view,

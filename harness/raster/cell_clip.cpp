@@ -3,7 +3,6 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "harness/geometry/polygon_plane.h"
 #include "harness/scene/cell_types.h"
 
 namespace vob {
@@ -64,31 +63,14 @@ SampleRect CellClipper::bounds(int32_t c) const {
 }
 
 void CellClipper::setup(int32_t c) {
-  const int32_t* p = mesh_.cell_points(c);
-  const LocalFaces& lf = cell_local_faces(mesh_.types[c]);
-  nf_ = lf.count;
+  CellPlanes planes;
+  cell_face_planes(mesh_, c, planes);
+  nf_ = planes.count;
   for (int f = 0; f < nf_; ++f) {
-    const int n = lf.size[f];
-    int32_t loop[4] = {0, 0, 0, 0};
-    for (int i = 0; i < n; ++i) loop[i] = p[lf.v[f][i]];
-    // Canonical loop: smallest id first, then towards its smaller neighbour. The cell's
-    // outward normal is the canonical one, negated when the canonical loop runs backwards.
-    int m = 0;
-    for (int i = 1; i < n; ++i)
-      if (loop[i] < loop[m]) m = i;
-    const bool forward = loop[(m + 1) % n] < loop[(m + n - 1) % n];
-    int32_t can[4] = {0, 0, 0, 0};
-    for (int i = 0; i < n; ++i) can[i] = loop[forward ? (m + i) % n : (m - i + n) % n];
-    // From the canonical loop, so that both owners of a face get bit-identical planes.
-    Vec3 pts[4];
-    for (int i = 0; i < n; ++i) pts[i] = mesh_.points[can[i]];
-    // The plane passes through the canonical first point (not the centroid, which /3 would
-    // round): a ray lying exactly in the plane then gets exactly num == 0 below.
-    Vec3 nrm = newell_plane(pts, n).normal;
-    if (!forward) nrm = -nrm;
+    const Vec3 nrm = planes.n[f];
     n_[f] = nrm;
-    o_[f] = pts[0];
-    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -dot(nrm, frame_.eye() - pts[0]);
+    o_[f] = planes.o[f];
+    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -dot(nrm, frame_.eye() - planes.o[f]);
     // A ray lying in the plane runs along the boundary of the cells on both sides; it
     // counts as inside the one whose outward normal's first non-zero component is
     // negative. Coplanar faces of other cells decide the same way, so along such a ray all

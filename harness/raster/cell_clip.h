@@ -1,12 +1,11 @@
 // Cell fragments: the segment [t_in, t_out] of each sample's ray inside a convex cell,
 // by Cyrus-Beck clipping of the ray against the cell's outward face planes.
 //
-// Face planes are Newell planes computed from the face's point ids in a canonical order
-// (smallest id first, then towards its smaller neighbour), so the two cells sharing a face
-// use exactly negated planes: at every sample they compute the same crossing parameter, and
-// the segments of face neighbours meet without gap or overlap. (A non-planar quad is
-// replaced by its Newell normal through its canonical first point; the cell is the
-// intersection of its face half-spaces.) A ray lying exactly in a face plane (an
+// The planes are the oracle's cell model (harness/scene/cell_planes.h): Newell planes from
+// each face's canonical point order, so the two cells sharing a face use exactly negated
+// planes and the segments of face neighbours meet without gap or overlap; a non-planar quad
+// is replaced by its Newell normal through its canonical first point, and the cell is the
+// intersection of its face half-spaces. A ray lying exactly in a face plane (an
 // orthographic view along a grid axis, sampling on grid lines) belongs to the cells on one
 // side of that plane only, decided by the sign of the plane's normal, the same way for all
 // coplanar faces: without such a rule, rounding would pick cells on both sides at random.
@@ -15,7 +14,8 @@
 // a cell gives [0, t_out]; orthographic rays start on the eye plane, so geometry behind the
 // eye plane is dropped (the same rule the polygon rasterizer applies). Segments not longer
 // than min_length are dropped: they are rays grazing an edge or vertex, whose length is
-// rounding noise. The oracle uses min_length = kMinSegmentRelative * scene bounding radius.
+// rounding noise. The oracle uses min_length = kMinSegmentRelative * scene bounding radius
+// (kMinSegmentRelative is defined with the cell model, cell_planes.h).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -26,12 +26,9 @@
 #include "harness/raster/polygon_raster.h"
 #include "harness/raster/sample_frame.h"
 #include "harness/scene/cell_mesh.h"
+#include "harness/scene/cell_planes.h"
 
 namespace vob {
-
-// Far below any real cell's extent (a cell 1e-10 of the scene across is degenerate), far
-// above the rounding noise of t (about 1e-15 of the eye distance).
-constexpr double kMinSegmentRelative = 1e-10;
 
 // Every point of a mesh projected once per view: sample coordinates and view depth.
 struct ProjectedPoints {
