@@ -69,7 +69,7 @@ Scene make_checked_scene(const DatasetSpec& ds, bool validate_full) {
   if (validate_full && scene.kind() == SceneKind::Cells) {
     const CellOverlapReport overlaps = check_overlapping_cells(scene.mesh(), scene.faces());
     if (!overlaps.pairs.empty())
-      throw InputError(describe_overlap(ds.input.empty() ? ds.label() : ds.input, overlaps));
+      throw InputError(describe_overlap(ds.input.empty() ? ds.label() : ds.input, overlaps, &scene.mesh()));
   }
   return scene;
 }

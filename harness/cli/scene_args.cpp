@@ -98,7 +98,7 @@ Scene SceneArgs::load(const DatasetSpec& spec) const {
   Scene scene = make_scene(spec);
   if (validate == "full" && scene.kind() == SceneKind::Cells) {
     const CellOverlapReport r = check_overlapping_cells(scene.mesh(), scene.faces());
-    if (!r.pairs.empty()) throw InputError(describe_overlap(source_name(spec), r));
+    if (!r.pairs.empty()) throw InputError(describe_overlap(source_name(spec), r, &scene.mesh()));
   }
   return scene;
 }

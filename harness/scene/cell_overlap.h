@@ -55,6 +55,28 @@
 // exhaustive search: the 10 s aim is met by the search; the whole `vobench validate`
 // command (mesh generation, cell validation, faces) still takes 12-15 s user
 // (docs/design-notes.md).
+//
+// Warped quads. The search above models a cell as the hull of its vertices; the oracle
+// (harness/raster/cell_clip.h) models it as the intersection of its face half-spaces, a
+// non-planar quad taken as one plane (cell_planes.h). For planar faces the two agree up to
+// rounding. For warped quads they differ near the warped corners, and two cells that share
+// only an edge or a vertex can overlap as the oracle models them while their hulls only
+// touch: `vobench check` then refuses the input and `validate` would pass it. So for every
+// candidate pair in which some cell has a quad that is not exactly planar, the exhaustive
+// search also decides the pair in the oracle's model: the largest t such that an
+// axis-aligned cube of half-side t fits in both cells' half-spaces (a linear program:
+// n_i.x + t ||n_i||_1 <= n_i.o_i over the faces of both, solved exactly with CGAL's QP
+// solver on CGAL::Gmpzf), reported when 2t exceeds the oracle's threshold,
+// kOverlapRelative * scene radius. Every ray through the cube's centre crosses both cells
+// for at least 2t, so such a pair is refused by the oracle at any view whose samples pass
+// near there; an overlap thinner than the threshold is left alone, as the oracle leaves it.
+// (Oblique rays through a thin sliver can see more than 2t, so an overlap within a small
+// factor of the threshold may be refused by one and passed by the other.)
+// A cell with a warped quad gets a candidate box that also holds its model polyhedron,
+// which may reach past its vertices. Before the LP, a filter in doubles with error bounds
+// (cell_model_overlap.cpp) settles the pairs that a face plane of one keeps within a
+// quarter of the threshold of the other's model vertices; all pairs of a mesh whose quads
+// are planar only up to rounding end there.
 #pragma once
 #include <cstdint>
 #include <utility>
@@ -89,8 +111,43 @@ struct OverlapCertificate {
 // (build_mesh_faces), whose checks the argument relies on.
 OverlapCertificate certify_cells_disjoint(const CellMesh& mesh, const MeshFaces& faces);
 
+// A pair decided in the oracle's model (see "Warped quads" above).
+struct ModelOverlap {
+  bool overlap = false;   // 2t > tol
+  double thickness = 0;   // 2t (an upper bound when `filtered`; +inf when unbounded)
+  bool filtered = false;  // settled by the filter, no LP
+  bool solved = false;    // the exact LP ran
+};
+
+// True overlap when cells a and b, as the oracle models them, hold a common axis-aligned
+// cube of side more than tol (model_overlap_tolerance: the oracle's threshold).
+ModelOverlap cells_overlap_as_modelled(const CellMesh& mesh, int32_t a, int32_t b, double tol);
+double model_overlap_tolerance(const CellMesh& mesh);  // kOverlapRelative * bounds radius
+
+// The most warped quad of cell c: local face index (-1: every quad is exactly planar) and
+// the largest distance of its points from the oracle's plane over its largest extent.
+struct QuadWarp {
+  int face = -1;
+  double relative = 0;
+};
+QuadWarp worst_quad_warp(const CellMesh& mesh, int32_t c);
+// "their quads are not planar (cell 75 face 3 warped by 0.0021 of its size) and the oracle
+// takes each quad as one plane", or "" when neither cell has a non-planar quad.
+std::string warped_quad_cause(const CellMesh& mesh, int32_t a, int32_t b);
+
 struct CellOverlapReport {
   std::vector<std::pair<int32_t, int32_t>> pairs;  // (smaller id, larger id), sorted
+  // The pairs of `pairs` whose hulls do not interpenetrate but which overlap as the oracle
+  // models them (warped quads), with their thickness 2t; sorted.
+  struct ModelPair {
+    std::pair<int32_t, int32_t> cells;
+    double thickness;
+  };
+  std::vector<ModelPair> model_pairs;
+  int64_t warped_cells = 0;  // cells with a quad that is not exactly planar
+  int64_t model_tests = 0;   // candidate pairs decided in the oracle's model
+  int64_t model_lps = 0;     // of which by the exact LP (not settled by the filter)
+  double model_tolerance = 0;  // 2t must exceed this (the oracle's threshold)
   int64_t candidates = 0;                           // box pairs decided exactly
   double box_seconds = 0;                           // box intersection, including the
   double total_seconds = 0;                         // exact tests it overlaps with
@@ -112,7 +169,11 @@ CellOverlapReport check_overlapping_cells(const CellMesh& mesh, const MeshFaces&
                                           OverlapSearch search = OverlapSearch::Fast);
 
 // One line naming the first pair, e.g. "source: cells 12 and 4071 overlap (...)" - the
-// InputError message of `--validate full`; throws nothing.
-std::string describe_overlap(const std::string& source, const CellOverlapReport& r);
+// InputError message of `--validate full`; throws nothing. A pair found in the oracle's
+// model only is described with its thickness and warped_quad_cause (pass the mesh).
+std::string describe_overlap(const std::string& source, const CellOverlapReport& r,
+                             const CellMesh* mesh = nullptr);
+// The thickness of pair (a, b) if it is one of r.model_pairs, else a negative number.
+double model_pair_thickness(const CellOverlapReport& r, std::pair<int32_t, int32_t> cells);
 
 }  // namespace vob

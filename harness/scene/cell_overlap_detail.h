@@ -3,8 +3,10 @@
 // (cell_pair_test.cpp). Not an interface for other code.
 #pragma once
 #include <cstdint>
+#include <vector>
 
 #include "harness/scene/cell_mesh.h"
+#include "harness/scene/cell_overlap.h"
 #include "harness/scene/cell_types.h"
 
 namespace vob::overlap_detail {
@@ -25,5 +27,27 @@ struct TypeShape {
   void add_edge(int a, int b);
 };
 const TypeShape& type_shape(CellType t);
+
+// Some quad face of cell c is not exactly planar (exact orientation of its four points).
+bool has_non_planar_quad(const CellMesh& mesh, int32_t c);
+
+// The oracle's polyhedron of a cell (cell_planes.h), approximately: vertices in doubles
+// relative to `ref` (the cell's first point), each within `err` (per coordinate) of a
+// point where three face planes meet; a superset of the true vertices
+// (cell_model_overlap.cpp says how). `box` holds the cell's points and the polyhedron.
+struct ModelCell {
+  Vec3 ref;
+  std::vector<Vec3> v;
+  double err = 0;
+  Aabb box;
+  bool bounded = true;   // false: no extent bound found (the polyhedron may be unbounded)
+  bool reliable = true;  // v holds every vertex (bounded, no triple left undecided, >= 4)
+};
+ModelCell model_cell(const CellMesh& mesh, int32_t c);
+
+// The pair test of the oracle's model: a filter on the models' vertices (when both are
+// reliable) that proves most pairs overlap by at most tol / 4, else the exact LP.
+ModelOverlap model_overlap(const CellMesh& mesh, int32_t a, int32_t b, const ModelCell* ma,
+                           const ModelCell* mb, double tol);
 
 }  // namespace vob::overlap_detail

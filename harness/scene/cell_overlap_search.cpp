@@ -3,6 +3,7 @@
 // certificate first.
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,7 @@
 #include <tbb/task_group.h>
 
 #include "harness/scene/cell_overlap.h"
+#include "harness/scene/cell_overlap_detail.h"
 
 namespace vob {
 namespace {
@@ -39,6 +41,29 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
   const auto t0 = Clock::now();
   CellOverlapReport r;
   const size_t nc = mesh.num_cells();
+  // Cells with a warped quad, and their models in the oracle's terms (cell_overlap.h,
+  // "Warped quads"; a partner without one gets its model when a pair needs it). None of it
+  // for a mesh whose quads are all exactly planar but the planarity test.
+  std::vector<uint8_t> warped(nc, 0);
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, nc, 4096), [&](const tbb::blocked_range<size_t>& range) {
+    for (size_t c = range.begin(); c < range.end(); ++c)
+      warped[c] = overlap_detail::has_non_planar_quad(mesh, int32_t(c));
+  });
+  r.warped_cells = std::count(warped.begin(), warped.end(), uint8_t(1));
+  std::vector<int32_t> model_of;  // cell -> index into models, -1 if not warped
+  std::vector<overlap_detail::ModelCell> models;
+  Aabb all;
+  if (r.warped_cells > 0) {
+    r.model_tolerance = model_overlap_tolerance(mesh);
+    all = mesh.bounds();
+    model_of.assign(nc, -1);
+    for (size_t c = 0; c < nc; ++c)
+      if (warped[c]) model_of[c] = int32_t(models.size()), models.emplace_back();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, nc, 1024), [&](const tbb::blocked_range<size_t>& range) {
+      for (size_t c = range.begin(); c < range.end(); ++c)
+        if (warped[c]) models[model_of[c]] = overlap_detail::model_cell(mesh, int32_t(c));
+    });
+  }
   std::vector<CellBox> boxes;
   boxes.reserve(nc);
   for (size_t c = 0; c < nc; ++c) {
@@ -47,6 +72,17 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
     for (int i = 0; i < mesh.cell_size(c); ++i) {
       const Vec3& p = mesh.points[ids[i]];
       bb += CGAL::Bbox_3(p.x, p.y, p.z, p.x, p.y, p.z);
+    }
+    if (warped[c]) {
+      // The model polyhedron may reach past the vertices (unbounded, anywhere). Only an
+      // overlap holding a cube of side > tol counts, and such a cube lies in both cells'
+      // boxes: boxes shrunk by tol / 2 still overlap with positive volume. Shrunk, the box
+      // of a cell warped only by rounding adds nothing to its vertices' box.
+      const overlap_detail::ModelCell& mc = models[model_of[c]];
+      const Aabb& m = mc.bounded ? mc.box : all;
+      const double s = 0.5 * r.model_tolerance;
+      if (m.lo.x + s < m.hi.x - s && m.lo.y + s < m.hi.y - s && m.lo.z + s < m.hi.z - s)
+        bb += CGAL::Bbox_3(m.lo.x + s, m.lo.y + s, m.lo.z + s, m.hi.x - s, m.hi.y - s, m.hi.z - s);
     }
     boxes.emplace_back(bb, int32_t(c));
   }
@@ -58,6 +94,12 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
   filling.reserve(kBatch);
   deciding.reserve(kBatch);
   tbb::combinable<Pairs> found;
+  struct ModelFound {
+    std::vector<CellOverlapReport::ModelPair> pairs;
+    int64_t tests = 0, lps = 0;
+  };
+  tbb::combinable<ModelFound> model_found;
+  const double tol = r.model_tolerance;
   tbb::task_group decide;
   auto launch = [&] {
     decide.wait();
@@ -70,8 +112,27 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
                           Pairs& out = found.local();
                           for (size_t i = range.begin(); i < range.end(); ++i) {
                             const auto [a, b] = deciding[i];
-                            if (cells_interpenetrate(mesh, a, b))
-                              out.emplace_back(std::min(a, b), std::max(a, b));
+                            const std::pair<int32_t, int32_t> ab(std::min(a, b), std::max(a, b));
+                            if (cells_interpenetrate(mesh, a, b)) {
+                              out.push_back(ab);
+                            } else if (warped[a] || warped[b]) {
+                              ModelFound& mf = model_found.local();
+                              overlap_detail::ModelCell own;  // a partner without a warped quad
+                              auto model = [&](int32_t c) -> const overlap_detail::ModelCell* {
+                                if (warped[c]) return &models[model_of[c]];
+                                own = overlap_detail::model_cell(mesh, c);
+                                return &own;
+                              };
+                              const overlap_detail::ModelCell* ma = model(a);
+                              const overlap_detail::ModelCell* mb = model(b);
+                              const ModelOverlap o = overlap_detail::model_overlap(mesh, a, b, ma, mb, tol);
+                              ++mf.tests;
+                              mf.lps += o.solved;
+                              if (o.overlap) {
+                                out.push_back(ab);
+                                mf.pairs.push_back({ab, o.thickness});
+                              }
+                            }
                           }
                         });
     });
@@ -89,6 +150,13 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
   decide.wait();
   found.combine_each([&](const Pairs& p) { r.pairs.insert(r.pairs.end(), p.begin(), p.end()); });
   std::sort(r.pairs.begin(), r.pairs.end());
+  model_found.combine_each([&](const ModelFound& m) {
+    r.model_pairs.insert(r.model_pairs.end(), m.pairs.begin(), m.pairs.end());
+    r.model_tests += m.tests;
+    r.model_lps += m.lps;
+  });
+  std::sort(r.model_pairs.begin(), r.model_pairs.end(),
+            [](const auto& x, const auto& y) { return x.cells < y.cells; });
   r.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return r;
 }
@@ -112,11 +180,27 @@ CellOverlapReport check_overlapping_cells(const CellMesh& mesh, const MeshFaces&
   return full;
 }
 
-std::string describe_overlap(const std::string& source, const CellOverlapReport& r) {
+double model_pair_thickness(const CellOverlapReport& r, std::pair<int32_t, int32_t> cells) {
+  const auto it = std::lower_bound(r.model_pairs.begin(), r.model_pairs.end(), cells,
+                                   [](const auto& m, const auto& c) { return m.cells < c; });
+  return it != r.model_pairs.end() && it->cells == cells ? it->thickness : -1.0;
+}
+
+std::string describe_overlap(const std::string& source, const CellOverlapReport& r, const CellMesh* mesh) {
   if (r.pairs.empty()) return source + ": no interpenetrating cells";
   const auto [a, b] = r.pairs.front();
-  return source + ": cells " + std::to_string(a) + " and " + std::to_string(b) +
-         " interpenetrate (" + std::to_string(r.pairs.size()) +
+  const std::string cells = source + ": cells " + std::to_string(a) + " and " + std::to_string(b);
+  const double thick = model_pair_thickness(r, r.pairs.front());
+  if (thick >= 0) {
+    char by[64];
+    std::snprintf(by, sizeof by, "%.2g", thick);
+    const std::string cause = mesh ? warped_quad_cause(*mesh, a, b) : std::string();
+    return cells + " overlap by " + by + " as the oracle models them (" + std::to_string(r.pairs.size()) +
+           " overlapping pairs): " +
+           (cause.empty() ? std::string("their quads are not planar and the oracle takes each quad as one plane")
+                          : cause);
+  }
+  return cells + " interpenetrate (" + std::to_string(r.pairs.size()) +
          " such pairs): the input has no visibility order";
 }
 

@@ -82,6 +82,37 @@ CellMesh hex_block(int n, double h) {
   return m;
 }
 
+CellMesh twisted_hex_bar(int n, int layers, double twist) {
+  CellMesh m;
+  auto id = [&](int i, int j, int k) { return int32_t(i + (n + 1) * (j + (n + 1) * k)); };
+  for (int k = 0; k <= layers; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const double x = i - 0.5 * n, y = j - 0.5 * n, a = k * twist;
+        m.points.push_back({x * std::cos(a) - y * std::sin(a), x * std::sin(a) + y * std::cos(a), double(k)});
+        m.scalars.push_back(test_scalar(m.points.back()));
+      }
+  for (int k = 0; k < layers; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int32_t v[8] = {id(i, j, k),     id(i + 1, j, k),     id(i + 1, j + 1, k),     id(i, j + 1, k),
+                              id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)};
+        m.add_cell(CellType::Hexahedron, v);
+      }
+  return m;
+}
+
+CellMesh overlapping_twisted_bar(int layers, double twist) {
+  CellMesh m = twisted_hex_bar(2, layers, twist);
+  for (int k = 0; k <= layers; ++k) {
+    const int32_t a = 9 * k + 5, b = 9 * k + 1;  // (2,1) and (1,0)
+    std::swap(m.points[a], m.points[b]);
+    std::swap(m.scalars[a], m.scalars[b]);
+    for (int32_t& v : m.conn) v = v == a ? b : (v == b ? a : v);
+  }
+  return m;
+}
+
 CellMesh append(const CellMesh& a, const CellMesh& b) {
   CellMesh m = a;
   const int32_t base = int32_t(a.points.size());
@@ -100,6 +131,13 @@ CellMesh append(const CellMesh& a, const CellMesh& b) {
 
 CellMesh translated(CellMesh m, Vec3 by) {
   for (Vec3& p : m.points) p += by;
+  return m;
+}
+
+CellMesh rotated(CellMesh m, Vec3 axis, double angle) {
+  const Vec3 u = normalize(axis);
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (Vec3& p : m.points) p = p * c + cross(u, p) * s + u * (dot(u, p) * (1 - c));  // Rodrigues
   return m;
 }
 

@@ -24,12 +24,28 @@ CellMesh kuhn_block(int n, double h = 1.0, double jitter = 0, uint32_t seed = 1)
 Scene kuhn_block_scene(int n);
 // An n^3 block of axis-aligned hexahedra with scalars. Cell i + n*(j + n*k).
 CellMesh hex_block(int n, double h = 1.0);
+// An n x n x layers bar of unit hexahedra along z, centred on the z axis, layer k's points
+// turned by k * twist radians about the axis (as gmsh extrudes with a rotation): the side
+// quads are not planar, warped by about twist / 2 of their size. Cell i + n*(j + n*k).
+CellMesh twisted_hex_bar(int n, int layers, double twist);
+// twisted_hex_bar(2, layers, twist) with points (2,1) and (1,0) of each layer exchanged, so
+// that around the axis the oracle anchors the quads towards +-x at an outer bottom point and
+// those towards +-y at the axis's bottom point (each face plane passes through its smallest
+// point id, cell_planes.h): the two planes of each cell at the axis are then shifted
+// against each other by about twist / 2, and the neighbours in quadrants I and III (cells 0
+// and 3 of each layer), which share only the axis edge, overlap as the oracle models them
+// in a sliver about twist / 2 thick. In the natural numbering the shifts cancel and they
+// only touch.
+CellMesh overlapping_twisted_bar(int layers, double twist);
 double test_scalar(Vec3 p);
 
 // ---- Composition ----
 // `a` then `b`, b's points duplicated (its point and cell ids shifted; scalars kept).
 CellMesh append(const CellMesh& a, const CellMesh& b);
 CellMesh translated(CellMesh m, Vec3 by);
+// Every point turned by `angle` radians about the unit `axis` through the origin (in
+// doubles: planar faces stay planar only up to rounding).
+CellMesh rotated(CellMesh m, Vec3 axis, double angle);
 // Two n^3 blocks of unit cubes side by side along x, `gap` apart; block A holds cells
 // [0, 6n^3), block B the rest.
 CellMesh two_blocks(int n, double gap);

@@ -1,5 +1,6 @@
 // The exact interpenetration test: touching in every way is not overlapping, any overlap
-// (however small) is; the box stage finds what a brute-force all-pairs test finds.
+// (however small) is; the box stage finds what a brute-force all-pairs test finds. Cells
+// with warped quads are also judged as the oracle models them (CellOverlapWarped).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +13,8 @@
 
 #include "harness/bench/suite.h"
 #include "harness/scene/cell_overlap.h"
+#include "harness/scene/cell_overlap_detail.h"
+#include "harness/scene/cell_planes.h"
 #include "harness/scene/mesh_faces.h"
 #include "tests/support/test_meshes.h"
 
@@ -315,4 +318,165 @@ TEST(CellOverlapFast, AgreesOnRandomPlacementsOfTwoAndThreeBlocks) {
   }
   EXPECT_GT(overlapping, 20);
   EXPECT_GT(clean, 10);
+}
+
+// Warped quads: the oracle takes each quad as one plane (cell_planes.h), so cells sharing
+// only an edge of warped quads can overlap in its model while their hulls only touch.
+// `validate` applies the oracle's model to such pairs (cell_overlap.h, "Warped quads").
+namespace {
+
+CellOverlapReport validate_report(const CellMesh& m, const std::string& what) {
+  validate_cell_mesh(m, what);
+  return check_overlapping_cells(m, build_mesh_faces(m, what));
+}
+
+bool share_a_face(const CellMesh& m, int32_t a, int32_t b) {
+  int shared = 0;
+  for (int i = 0; i < m.cell_size(a); ++i)
+    for (int j = 0; j < m.cell_size(b); ++j) shared += m.cell_points(a)[i] == m.cell_points(b)[j];
+  return shared >= 3;
+}
+
+}  // namespace
+
+TEST(CellOverlapWarped, TwistedHexBarOverlapsAsTheOracleModelsIt) {
+  // 2 x 2 hexahedra per layer, 2 layers, each turned by 0.01 rad: around the bar's axis the
+  // diagonal neighbours share only an edge, and the oracle's planes of their warped side
+  // quads overlap near it.
+  const CellMesh m = overlapping_twisted_bar(2, 0.01);
+  const CellOverlapReport r = validate_report(m, "twisted bar");
+  EXPECT_EQ(r.warped_cells, 8);
+  const std::vector<std::pair<int32_t, int32_t>> expected = {{0, 3}, {4, 7}};
+  EXPECT_EQ(r.pairs, expected);
+  EXPECT_EQ(r.pairs.size(), r.model_pairs.size());  // no hulls interpenetrate
+  const double tol = model_overlap_tolerance(m);
+  EXPECT_EQ(r.model_tolerance, tol);
+  for (const auto& p : r.model_pairs) {
+    const auto [a, b] = p.cells;
+    EXPECT_FALSE(cells_interpenetrate(m, a, b)) << a << " " << b;
+    EXPECT_FALSE(share_a_face(m, a, b)) << a << " " << b;  // face neighbours meet exactly
+    EXPECT_GT(p.thickness, 0.004) << a << " " << b;  // about twist / 2, far above tol
+    EXPECT_LT(p.thickness, 0.006) << a << " " << b;
+    const ModelOverlap o = cells_overlap_as_modelled(m, a, b, tol);
+    EXPECT_TRUE(o.overlap && o.solved);
+    EXPECT_EQ(o.thickness, p.thickness);
+  }
+  const std::string line = describe_overlap("bar.vtu", r, &m);
+  EXPECT_NE(line.find("as the oracle models them"), std::string::npos) << line;
+  EXPECT_NE(line.find("not planar"), std::string::npos) << line;
+  EXPECT_NE(line.find("takes each quad as one plane"), std::string::npos) << line;
+  const QuadWarp w = worst_quad_warp(m, r.pairs[0].first);
+  EXPECT_GE(w.face, 0);
+  EXPECT_GT(w.relative, 1e-3);
+  EXPECT_LT(w.relative, 1e-2);
+  // In the natural numbering the same bar only touches; untwisted, its quads are planar and
+  // the model is not even tested.
+  EXPECT_TRUE(validate_report(twisted_hex_bar(2, 2, 0.01), "twisted bar").pairs.empty());
+  const CellOverlapReport flat = validate_report(overlapping_twisted_bar(2, 0.0), "straight bar");
+  EXPECT_EQ(flat.warped_cells, 0);
+  EXPECT_EQ(flat.model_tests, 0);
+  EXPECT_TRUE(flat.pairs.empty());
+}
+
+TEST(CellOverlapWarped, QuadsPlanarOnlyToRoundingStayClean) {
+  // A hex block turned about an oblique axis (gmsh's rotated box): its quads are planar
+  // only up to rounding, so the model is tested and finds every overlap far below the
+  // oracle's threshold (settled by the filter, no LP).
+  const CellMesh m = rotated(hex_block(3), {0.3, 0.5, 0.8}, 0.651);
+  const CellOverlapReport r = validate_report(m, "rotated block");
+  EXPECT_GT(r.warped_cells, 0);
+  EXPECT_GT(r.model_tests, 0);
+  EXPECT_EQ(r.model_lps, 0);
+  EXPECT_TRUE(r.pairs.empty()) << describe_overlap("rotated block", r, &m);
+  // The zoo's lat-long cells likewise (the oracle check of zoo is in oracle/overlap_test).
+  const CellMesh zoo = dataset("zoo");
+  const CellOverlapReport z = validate_report(zoo, "zoo");
+  EXPECT_GT(z.warped_cells, 0);
+  EXPECT_TRUE(z.pairs.empty()) << describe_overlap("zoo", z, &zoo);
+}
+
+TEST(CellOverlapWarped, CellsSharingAWarpedQuadDoNotOverlapInTheModel) {
+  // The bent quad shared by two stacked hexahedra is one plane for both (bit-identical,
+  // negated): the model leaves no room for a cube on both sides.
+  CellMesh lower;
+  lower.points = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1.05}, {0, 1, 1}};
+  lower.add_cell(CellType::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  CellMesh m = lower;
+  m.points.insert(m.points.end(), {{0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}});
+  m.add_cell(CellType::Hexahedron, {4, 5, 6, 7, 8, 9, 10, 11});
+  const double tol = model_overlap_tolerance(m);
+  const ModelOverlap o = cells_overlap_as_modelled(m, 0, 1, tol);
+  EXPECT_FALSE(o.overlap);
+  EXPECT_LE(o.thickness, 0.25 * tol);
+  EXPECT_TRUE(validate_report(m, "stacked").pairs.empty());
+  // Moved into each other, they overlap in either model.
+  const CellMesh pushed = append(lower, translated(lower, {0, 0, 0.9}));
+  const CellOverlapReport r = validate_report(pushed, "pushed");
+  ASSERT_EQ(r.pairs.size(), 1u);
+  EXPECT_TRUE(r.model_pairs.empty());  // the hulls already interpenetrate
+  EXPECT_TRUE(cells_overlap_as_modelled(pushed, 0, 1, tol).overlap);
+}
+
+TEST(CellOverlapWarped, FilterBoundsTheLinearProgram) {
+  // Pairs of jittered hexahedra (warped quads, touching in every way a block allows): where
+  // the filter settles a pair, its bound is at least the exact LP's thickness.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.04, 0.04);
+  int filtered = 0, compared = 0;
+  for (int round = 0; round < 20; ++round) {
+    CellMesh m = hex_block(2);
+    for (Vec3& p : m.points) p += Vec3{jitter(rng), jitter(rng), jitter(rng)};
+    validate_cell_mesh(m, "jittered");
+    const double tol = model_overlap_tolerance(m);
+    for (int32_t a = 0; a < 8; ++a)
+      for (int32_t b = a + 1; b < 8; ++b) {
+        const overlap_detail::ModelCell ma = overlap_detail::model_cell(m, a), mb = overlap_detail::model_cell(m, b);
+        ASSERT_TRUE(ma.reliable && mb.reliable);
+        const ModelOverlap f = overlap_detail::model_overlap(m, a, b, &ma, &mb, tol);
+        const ModelOverlap lp = overlap_detail::model_overlap(m, a, b, nullptr, nullptr, tol);
+        ASSERT_TRUE(lp.solved);
+        ++compared;
+        if (f.filtered) {
+          ++filtered;
+          EXPECT_FALSE(lp.overlap);
+          EXPECT_GE(f.thickness, lp.thickness) << a << " " << b;
+          EXPECT_LE(f.thickness, 0.25 * tol) << a << " " << b;
+        } else {
+          EXPECT_EQ(f.overlap, lp.overlap);
+        }
+      }
+  }
+  EXPECT_GT(filtered, compared / 2);
+}
+
+TEST(CellOverlapWarped, ModelBoxHoldsTheModelPolyhedron) {
+  // Points inside every face half-space of the oracle's planes, sampled around each cell of
+  // twisted and jittered blocks, lie in the cell's model box.
+  std::mt19937 rng(11);
+  const std::vector<CellMesh> meshes = {twisted_hex_bar(2, 2, 0.05), twisted_hex_bar(3, 1, 0.2),
+                                        kuhn_block(2, 1.0, 0.2, 3)};
+  for (const CellMesh& m : meshes) {
+    for (int32_t c = 0; c < int32_t(m.num_cells()); ++c) {
+      const overlap_detail::ModelCell mc = overlap_detail::model_cell(m, c);
+      ASSERT_TRUE(mc.bounded);
+      CellPlanes pl;
+      cell_face_planes(m, c, pl);
+      Aabb around;
+      for (int i = 0; i < m.cell_size(c); ++i) around.add(m.points[m.cell_points(c)[i]]);
+      const Vec3 mid = around.center(), half = (around.hi - around.lo) * 0.75;
+      std::uniform_real_distribution<double> u(-1, 1);
+      int inside = 0;
+      for (int s = 0; s < 4000; ++s) {
+        const Vec3 x = mid + Vec3{u(rng) * half.x, u(rng) * half.y, u(rng) * half.z};
+        bool in = true;
+        for (int f = 0; f < pl.count && in; ++f) in = dot(pl.n[f], x - pl.o[f]) <= 0;
+        if (!in) continue;
+        ++inside;
+        EXPECT_TRUE(x.x >= mc.box.lo.x && x.x <= mc.box.hi.x && x.y >= mc.box.lo.y && x.y <= mc.box.hi.y &&
+                    x.z >= mc.box.lo.z && x.z <= mc.box.hi.z)
+            << "cell " << c;
+      }
+      EXPECT_GT(inside, 0);
+    }
+  }
 }
