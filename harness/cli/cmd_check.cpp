@@ -6,7 +6,8 @@
 // the format `vobench order` writes) or another program (--command, external_orderer.h).
 // Exit 0: no violation in any view; 1: some violation; 2: bad usage or input, including
 // cells the oracle sees overlapping (the input has no visibility order; no orderer is
-// blamed), --supersample > 1 for a compositing orderer and a broken external sorter.
+// blamed; for cells with warped quads the line says that the oracle's planes are why),
+// --supersample > 1 for a compositing orderer and a broken external sorter.
 // With --max-violating-pixels / --max-rmse the exit is 1 only when a threshold is exceeded
 // (a CI gate for heuristics); --junit writes one JUnit test case per view.
 #include <cmath>
@@ -26,23 +27,32 @@
 #include "harness/cli/thread_option.h"
 #include "harness/cli/raster_option.h"
 #include "harness/render/compositor.h"
+#include "harness/scene/cell_overlap.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
 
 namespace {
-std::string overlap_fault_line(const std::string& source, const OracleResult& r, int view, RasterRule rule) {
+std::string overlap_fault_line(const std::string& source, const Scene& scene, const OracleResult& r, int view,
+                               RasterRule rule) {
   const nlohmann::json& e = r.overlap_examples.at(0);
-  std::string line = source + ": cells " + std::to_string(e["cells"][0].get<int>()) + " and " +
-                     std::to_string(e["cells"][1].get<int>()) + " overlap (sample at pixel " +
-                     std::to_string(e["pixel"][0].get<int>()) + "," +
+  const int a = e["cells"][0].get<int>(), b = e["cells"][1].get<int>();
+  std::string line = source + ": cells " + std::to_string(a) + " and " + std::to_string(b) +
+                     " overlap (sample at pixel " + std::to_string(e["pixel"][0].get<int>()) + "," +
                      std::to_string(e["pixel"][1].get<int>());
   line += view >= 0 ? " of view " + std::to_string(view) : std::string(" of the camera");
+  line += ", " + std::to_string(r.overlapping_pairs) + " overlapping pairs): ";
   // Under the gl rule the cells are llvmpipe's snapped ones: snapping can invert a cell much
   // thinner than a pixel, and then the snapped mesh, not the file, has no visibility order.
-  return line + ", " + std::to_string(r.overlapping_pairs) + " overlapping pairs): " +
-         (rule == RasterRule::gl ? "the cells as llvmpipe snaps them (--raster gl) have no visibility order"
-                                 : "the input has no visibility order");
+  if (rule == RasterRule::gl) return line + "the cells as llvmpipe snaps them (--raster gl) have no visibility order";
+  // Warped quads: the oracle takes each as a plane (cell_planes.h), and cells sharing only
+  // an edge can overlap near it although their hulls do not (`vobench validate` says so).
+  // Cells whose hulls interpenetrate overlap whatever the model: the plain line.
+  const std::string cause = warped_quad_cause(scene.mesh(), a, b);
+  if (!cause.empty() && !cells_interpenetrate(scene.mesh(), a, b))
+    return line + cause + ", so as it models the cells the input has no visibility order " +
+           "(`vobench validate` lists every such pair)";
+  return line + "the input has no visibility order";
 }
 
 std::string percent_text(double v) {
@@ -153,7 +163,7 @@ Command add_check_command(CLI::App& app) {
       check_complete(scene, m.ordering, label);
       const Verdict verdict = judge(*p.orderer, label, scene, cam, m.ordering, oo, "--supersample");
       const OracleResult& r = verdict.result;
-      if (verdict.input_fault()) throw InputError(overlap_fault_line(source_name(spec), verdict.order_result(), vi, raster->rule()));
+      if (verdict.input_fault()) throw InputError(overlap_fault_line(source_name(spec), scene, verdict.order_result(), vi, raster->rule()));
       failing += r.ok() ? 0 : 1;
       if (r.ok() && r.violating_fragments > 0) ++rule_cycle_views, rule_cycle_pixels += r.violating_pixels;
       cycles += m.ordering.cycles.cycles;

@@ -65,6 +65,39 @@ TEST(CliOverlap, CheckRefusesInterpenetratingVolumesNamingTwoCells) {
   }
 }
 
+// Warped quads (overlapping_twisted_bar: neighbours sharing only an edge overlap as the
+// oracle models them): check and validate both refuse the file and name the cause; a block
+// whose quads are planar only to rounding passes both.
+TEST(CliOverlap, CheckAndValidateAgreeOnWarpedQuads) {
+  const fs::path bar = scratch("twisted.vtu"), block = scratch("rotated.vtu");
+  vob::write_scene(vob::Scene::from_mesh("twisted", vob::test::overlapping_twisted_bar(2, 0.05)), bar.string());
+  vob::write_scene(vob::Scene::from_mesh("rotated", vob::test::rotated(vob::test::hex_block(3), {0.3, 0.5, 0.8}, 0.651)),
+                   block.string());
+  Outcome r = vobench("check --algorithm xmpvo --input " + bar.string() + " --views 4 --size 128x128");
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(" overlap (sample at pixel "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("quads are not planar"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the oracle takes each quad as one plane"), std::string::npos) << r.err;
+  r = vobench("validate " + bar.string());
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.out.find("(only as the oracle models them: "), std::string::npos) << r.out;
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("cells 0 and 3 overlap by "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" as the oracle models them"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("quads are not planar"), std::string::npos) << r.err;
+  r = vobench("validate --json " + bar.string());
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["overlapping_pairs"], 2);
+  EXPECT_EQ(j["oracle_model"]["overlapping_pairs"].size(), 2u);
+  EXPECT_EQ(j["oracle_model"]["warped_cells"], 8);
+  r = vobench("check --algorithm xmpvo --input " + block.string() + " --views 4 --size 128x128");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  r = vobench("validate " + block.string());
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("0 overlapping by more than its threshold"), std::string::npos) << r.out;
+}
+
 TEST(CliOverlap, ValidateListsThePairsAndExitsTwo) {
   Outcome r = vobench("validate " + kGmsh);
   EXPECT_EQ(r.code, 2) << r.out << r.err;
