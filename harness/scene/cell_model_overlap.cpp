@@ -19,19 +19,7 @@ namespace vob {
 
 namespace overlap_detail {
 
-bool has_non_planar_quad(const CellMesh& mesh, int32_t c) {
-  if (mesh.types[c] == CellType::Tetra) return false;
-  const int32_t* p = mesh.cell_points(c);
-  const LocalFaces& lf = cell_local_faces(mesh.types[c]);
-  for (int f = 0; f < lf.count; ++f) {
-    if (lf.size[f] != 4) continue;
-    const Vec3& a = mesh.points[p[lf.v[f][0]]];
-    if (sign_det(a, mesh.points[p[lf.v[f][1]]], a, mesh.points[p[lf.v[f][2]]], a,
-                 mesh.points[p[lf.v[f][3]]]) != 0)
-      return true;
-  }
-  return false;
-}
+bool has_non_planar_quad(const CellMesh& mesh, int32_t c) { return non_planar_quads(mesh, c) != 0; }
 
 namespace {
 

@@ -28,8 +28,12 @@ struct TypeShape {
 };
 const TypeShape& type_shape(CellType t);
 
-// Some quad face of cell c is not exactly planar (exact orientation of its four points).
+// Bit f set when local face f of cell c is a quad that is not exactly planar (exact
+// orientation of its four points); has_non_planar_quad: any bit.
+uint8_t non_planar_quads(const CellMesh& mesh, int32_t c);
 bool has_non_planar_quad(const CellMesh& mesh, int32_t c);
+// cells_interpenetrate with both cells' non_planar_quads known.
+bool cells_interpenetrate(const CellMesh& mesh, int32_t a, int32_t b, uint8_t quads_a, uint8_t quads_b);
 
 // The oracle's polyhedron of a cell (cell_planes.h), approximately: vertices in doubles
 // relative to `ref` (the cell's first point), each within `err` (per coordinate) of a

@@ -44,12 +44,14 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
   // Cells with a warped quad, and their models in the oracle's terms (cell_overlap.h,
   // "Warped quads"; a partner without one gets its model when a pair needs it). None of it
   // for a mesh whose quads are all exactly planar but the planarity test.
-  std::vector<uint8_t> warped(nc, 0);
+  // (The pair test takes each cell's non-planar quads from here instead of finding them
+  // again per pair.)
+  std::vector<uint8_t> warped(nc, 0);  // non_planar_quads: bit f for local face f
   tbb::parallel_for(tbb::blocked_range<size_t>(0, nc, 4096), [&](const tbb::blocked_range<size_t>& range) {
     for (size_t c = range.begin(); c < range.end(); ++c)
-      warped[c] = overlap_detail::has_non_planar_quad(mesh, int32_t(c));
+      warped[c] = overlap_detail::non_planar_quads(mesh, int32_t(c));
   });
-  r.warped_cells = std::count(warped.begin(), warped.end(), uint8_t(1));
+  r.warped_cells = nc - std::count(warped.begin(), warped.end(), uint8_t(0));
   std::vector<int32_t> model_of;  // cell -> index into models, -1 if not warped
   std::vector<overlap_detail::ModelCell> models;
   Aabb all;
@@ -113,7 +115,7 @@ CellOverlapReport find_overlapping_cells(const CellMesh& mesh) {
                           for (size_t i = range.begin(); i < range.end(); ++i) {
                             const auto [a, b] = deciding[i];
                             const std::pair<int32_t, int32_t> ab(std::min(a, b), std::max(a, b));
-                            if (cells_interpenetrate(mesh, a, b)) {
+                            if (overlap_detail::cells_interpenetrate(mesh, a, b, warped[a], warped[b])) {
                               out.push_back(ab);
                             } else if (warped[a] || warped[b]) {
                               ModelFound& mf = model_found.local();

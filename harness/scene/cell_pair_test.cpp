@@ -75,10 +75,31 @@ const TypeShape& type_shape(CellType t) {
   }
 }
 
+uint8_t non_planar_quads(const CellMesh& mesh, int32_t c) {
+  if (mesh.types[c] == CellType::Tetra) return 0;
+  const int32_t* p = mesh.cell_points(c);
+  const LocalFaces& lf = cell_local_faces(mesh.types[c]);
+  uint8_t mask = 0;
+  for (int f = 0; f < lf.count; ++f) {
+    if (lf.size[f] != 4) continue;
+    const Vec3& a = mesh.points[p[lf.v[f][0]]];
+    const Vec3& b = mesh.points[p[lf.v[f][1]]];
+    const Vec3& d = mesh.points[p[lf.v[f][2]]];
+    const Vec3& e = mesh.points[p[lf.v[f][3]]];
+    // A quad in a coordinate plane is planar without arithmetic (sign_det would need its
+    // exact fallback to say 0, which grids of axis-aligned hexahedra would pay per quad).
+    bool in_axis_plane = false;
+    for (int k = 0; k < 3; ++k) in_axis_plane |= a[k] == b[k] && a[k] == d[k] && a[k] == e[k];
+    if (!in_axis_plane && sign_det(a, b, a, d, a, e) != 0) mask |= uint8_t(1u << f);
+  }
+  return mask;
+}
+
 }  // namespace overlap_detail
 
 namespace {
 
+using overlap_detail::non_planar_quads;
 using overlap_detail::sign_det;
 using overlap_detail::type_shape;
 using overlap_detail::TypeShape;
@@ -97,7 +118,8 @@ struct CellShape {
   const LocalFaces* faces = nullptr;
   bool non_planar = false;  // some quad face is not planar
 
-  CellShape(const CellMesh& mesh, int32_t c) {
+  // `quads`: non_planar_quads(mesh, c), computed here when negative.
+  CellShape(const CellMesh& mesh, int32_t c, int quads = -1) {
     const int32_t* ids = mesh.cell_points(c);
     n = mesh.cell_size(c);
     for (int i = 0; i < n; ++i) p[i] = mesh.points[ids[i]];
@@ -105,13 +127,13 @@ struct CellShape {
     ntri = ts.ntri, nedge = ts.nedge, tri = ts.tri, edge = ts.edge;
     faces = &cell_local_faces(mesh.types[c]);
     if (mesh.types[c] == CellType::Tetra) return;
+    if (quads < 0) quads = non_planar_quads(mesh, c);
     // A non-planar quad: the hull takes one of its diagonals, which one depends on the
     // other vertices; try both.
     const LocalFaces& lf = cell_local_faces(mesh.types[c]);
     for (int f = 0; f < lf.count; ++f) {
       const int* v = lf.v[f];
-      if (lf.size[f] != 4 || sign_det(p[v[0]], p[v[1]], p[v[0]], p[v[2]], p[v[0]], p[v[3]]) == 0)
-        continue;
+      if (!(quads >> f & 1)) continue;
       non_planar = true;
       if (tri == ts.tri) {
         std::copy(&ts.tri[0][0], &ts.tri[0][0] + 3 * ntri, &own_tri[0][0]);
@@ -240,5 +262,11 @@ bool shapes_interpenetrate(const CellShape& P, const CellShape& Q) {
 bool cells_interpenetrate(const CellMesh& mesh, int32_t a, int32_t b) {
   return shapes_interpenetrate(CellShape(mesh, a), CellShape(mesh, b));
 }
+
+namespace overlap_detail {
+bool cells_interpenetrate(const CellMesh& mesh, int32_t a, int32_t b, uint8_t quads_a, uint8_t quads_b) {
+  return shapes_interpenetrate(CellShape(mesh, a, quads_a), CellShape(mesh, b, quads_b));
+}
+}  // namespace overlap_detail
 
 }  // namespace vob
