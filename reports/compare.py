@@ -56,7 +56,7 @@ def load(path):
             try:
                 r = json.loads(raw)
             except json.JSONDecodeError as e:
-                if not raw.endswith("\n"):  # torn by a writer killed mid-write: left out, as run does
+                if not raw.endswith("\n") and recs + list(ctx):  # after complete lines: torn by a killed writer
                     print(f"compare: note: {path}: line {n}: an incomplete last line left out", file=sys.stderr)
                     continue
                 raise BadInput(f"{path}: line {n}: not JSON ({e.msg})")

@@ -101,18 +101,21 @@ void check_report_inputs(const std::vector<std::string>& paths) {
     if (!in) throw InputError(path, "results", "cannot be read");
     std::string line;
     size_t n = 0;
+    bool seen_line = false;  // a complete non-blank line before this one
     while (std::getline(in, line)) {
       ++n;
       if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
       const std::string where = "line " + std::to_string(n);
-      // A last line without its newline that is not JSON was torn by a writer killed
-      // mid-write: left out, as the table scripts and the next run do (results.h).
-      if (in.eof() && !nlohmann::json::accept(line)) {
+      // A last line without its newline that is not JSON, after complete lines, was torn by
+      // a writer killed mid-write: left out, as the table scripts and the next run do
+      // (results.h). Alone in its file it is just a bad file.
+      if (in.eof() && seen_line && !nlohmann::json::accept(line)) {
         std::cerr << "vobench: note: " << path << ": " << where << ": an incomplete last line (" << line.size()
                   << " bytes, left by an interrupted writer) left out\n";
         break;
       }
       const nlohmann::json r = parse_json_input(line, path, where);
+      seen_line = true;
       if (is_context_line(r)) {  // a run's context (docs/pipeline.md "Records"), not a record
         if (!r.contains("context") || !r["context"].is_object() || !r.contains("run_id") || !r["run_id"].is_string())
           throw InputError(path, where, "context line needs a string 'run_id' and an object 'context'");

@@ -97,5 +97,7 @@ TEST(ReportInput, ATornLastLineIsLeftOutNotRefused) {
   EXPECT_THROW(check_report_inputs({path.string()}), InputError);
   std::ofstream(path) << torn << "\n" << record().dump() << "\n";
   EXPECT_THROW(check_report_inputs({path.string()}), InputError);
+  std::ofstream(path) << "{";  // alone in its file: not a killed run's tail, a bad file
+  EXPECT_THROW(check_report_inputs({path.string()}), InputError);
   std::filesystem::remove(path);
 }
