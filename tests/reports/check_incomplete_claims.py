@@ -122,18 +122,7 @@ expect(xmpvo, "xmpvo-scaling", XM, no_x, QUAD, "holds", "XMPVO's missing mesh is
 
 # --- cook-table2: SXMPVO against BSP-XMPVO over the same views --------------------------------
 
-def table2():
-    out = []
-    for name, spec, label in (("helix", {"cells": 600}, "helix 600 (tiny, for bluntfin)"),
-                              ("gap", {"gaps": 1, "nx": 3, "ny": 3, "nz": 10}, "gap 3x3x10, 1 gap (tiny, for f117)")):
-        for v in (0, 4, 9):
-            for orderer, secs, sizes in (("bsp-xmpvo", 0.01, ("64x64",)), ("xmpvo", 0.02, ("64x64",)),
-                                         ("sxmpvo", 0.001, ("64x64", "80x80"))):
-                for size in sizes:
-                    r = H.orderer_record("cook-table2", orderer, orderer, name, spec, v, secs, size=size, paper="xmpvo")
-                    r["row"] = label
-                    out.append(r)
-    return out
+table2 = H.cook_table2_records
 
 
 FASTER = "SXMPVO is faster than BSP-XMPVO per view on helix 600"
