@@ -55,19 +55,32 @@ def table1(records, paper, doc):
 
 def table3(records, paper, doc):
     doc.title = "Cook et al. Table 3: SXMPVO's four phases"
-    nviews = len({r["view_index"] for r in records})
+    views = sorted({r["view_index"] for r in records})
+    nviews = len(views)
     win = window_text(records)
     doc.intro = (command("cook-table3", records) + f": sxmpvo on helices with Table 1's n and b and on real meshes, "
                  f"{nviews} views, {win} (Table 1's w*h per data set).")
-    ours = doc.table(f"Ours: seconds per frame, {win} (mean of {nviews} views, median of {records[0]['repeats']} runs)",
-                     ["data set", "n", "I", "II", "III", "IV", "total", "oracle (views violating)"],
+    ours = doc.table(f"Ours: seconds per frame, {win} (mean over the views where every phase and the total were "
+                     f"recorded, of the {nviews} views asked; median of {records[0]['repeats']} runs)",
+                     ["data set", "n", "views matched", "I", "II", "III", "IV", "total", "oracle (views violating)"],
                      size_note(records, "helix 1.0M, 2.37M, 3.57M and 4.5M (the 4.5M helix needs about 4 GB)"))
     paper_table(doc, paper["table3"], f"Paper, Table 3 ({machine(paper, 'onyx')})", "Image sizes of Table 1.")
     shares = doc.table("Share of each phase in the total (%): ours, then the paper's (computed from Table 3)",
                        ["data set", "I %", "II %", "III %", "IV %", "largest phase"],
                        decimals={c: 1 for c in ("I %", "II %", "III %", "IV %")})
+    # Each data set's phases and total over the same views (matched views): a view that lacks one of them
+    # is left out of every column of the row, and a row with fewer views than asked leaves the claims
+    # below not measured.
+    matched, short = {}, {}
     for row, recs in by_row(records):
-        ph = [m.mean(recs, m.phase(p)) for p in PHASES]
+        expected = m.expected_keys(recs, views)
+        means, common, lacking = m.matched_means({**{p: (recs, m.phase(p)) for p in PHASES},
+                                                  "total": (recs, m.frame_seconds)}, expected)
+        matched[row] = (means, [r for r in recs if m.match_key(r) in common], m.matched_text(common, expected))
+        if lacking:
+            short[row] = [f"{len(common)} of {len(expected)} views matched"]
+    for row, (means, _, _) in matched.items():
+        ph = [means[p] for p in PHASES]
         tot = sum(v for v in ph if v is not None) or None
         pc = [None if v is None or not tot else 100 * v / tot for v in ph]
         big = max(range(4), key=lambda i: pc[i] or 0)
@@ -78,10 +91,10 @@ def table3(records, paper, doc):
         tot = P.value(p3["rows"][4][j])
         pc = [100 * v / tot for v in vals]
         shares.row(f"paper (computed): {col}", *pc, ["I", "II", "III", "IV"][max(range(4), key=lambda i: pc[i])])
-    counts = doc.table("Ours: PN relations and A-buffer",
+    counts = doc.table("Ours: PN relations and A-buffer (matched views)",
                        ["data set", "a (entries)", "head insertion rate", "PN pairs", "PN relations",
                         "found at head", "moved to front", "tie reorders", "unpaired"])
-    mem = doc.table("Ours: memory per structure (MB)",
+    mem = doc.table("Ours: memory per structure (MB; matched views)",
                     ["data set", "mesh", "faces+planes", "MPVO arrays", "A-buffer", "PN lists", "exterior list"])
     mp = paper["memory"]
     mem.notes = (f"Paper, helix3.5 (3.57M cells): vertices {mp['MB']['vertices']} MB, cells {mp['MB']['cells']} MB, "
@@ -94,21 +107,26 @@ def table3(records, paper, doc):
                  "plus their CSR copy.")
     rates = []
     for row, recs in by_row(records):
-        c = lambda k: m.mean(recs, m.counter(k))  # noqa: E731
-        ours.row(row, recs[0]["n"], *[m.mean(recs, m.phase(p)) for p in PHASES], m.mean(recs, m.frame_seconds),
-                 views_violating(recs))
+        means, recs_m, views_cell = matched[row]
+        c = lambda k: m.mean(recs_m, m.counter(k))  # noqa: E731
+        ours.row(row, recs[0]["n"], views_cell, *[means[p] for p in PHASES], means["total"], views_violating(recs))
         counts.row(row, c("abuffer_entries"), c("head_insertion_rate"), c("pn_pairs"), c("pn_relations"),
                    c("pn_found_at_head"), c("pn_moved_to_front"), c("tie_reorders"), c("unpaired_entries"))
-        mem.row(row, mb(m.mean(recs, lambda r: m.get(r, "bytes.scene"))), mb(c("bytes_faces")), mb(c("bytes_mpvo")),
+        mem.row(row, mb(m.mean(recs_m, lambda r: m.get(r, "bytes.scene"))), mb(c("bytes_faces")), mb(c("bytes_mpvo")),
                 mb(c("bytes_abuffer")), mb(c("bytes_pn")), mb(c("bytes_exterior")))
         rates += m.values(recs, m.counter("head_insertion_rate"))
-    low = min(rates) if rates else None
+    if short:
+        ours.notes += (" Rows with fewer matched views than asked: " +
+                       "; ".join(f"{row} ({v[0]})" for row, v in short.items()) + ".")
+    # 'any view' and 'every view' are judged only when every data set has every view asked.
+    why = m.short_rows_reason(short)
+    low = min(rates) if rates and not short else None
     doc.claim("insertions into the PIX lists occur at the head more than 99 percent of the time (lowest rate, any view)",
-              ours=low, paper=paper["claims"]["head insertion rate"], criterion="ours > 0.99",
+              ours=low, paper=paper["claims"]["head insertion rate"], criterion="ours > 0.99" + why,
               holds=None if low is None else low > 0.99)
-    bad = views_violating(records)
+    bad = None if short else views_violating(records)
     doc.claim("SXMPVO's order passes the oracle on every view (views violating)", ours=bad, paper=0,
-              criterion="ours == 0", holds=bad == 0)
+              criterion="ours == 0" + why, holds=None if bad is None else bad == 0)
 
 
 # --- Table 4 ----------------------------------------------------------------------------------

@@ -162,3 +162,37 @@ def complete_mean(recs, metric, expected):
     if not expected or have != set(expected):
         return None, views_text(len(have), len(expected))
     return mean(recs, metric), None
+
+
+def matched_means(sides, expected, key=match_key):
+    """Means of the sides compared in one row over their matched views: the keys (default
+    match_key; `view_of` when the sides differ in size) at which every side has its metric.
+    sides: {name: (records, metric)}; expected: the keys the reproduction asks the row for.
+    Returns (means {name: mean over the matched keys, or None when none match}, the matched
+    keys, what lacks views: ['NAME incomplete: N of M views', ...], empty when every side has
+    every expected key)."""
+    expected = set(expected)
+    have = {name: {key(r) for r in rs if metric(r) is not None} & expected for name, (rs, metric) in sides.items()}
+    common = set.intersection(*have.values()) if have else set()
+    means = {name: mean([r for r in rs if key(r) in common], metric) if common else None
+             for name, (rs, metric) in sides.items()}
+    lacking = [f"{name} {views_text(len(h), len(expected))}" for name, h in have.items() if h != expected]
+    return means, common, lacking
+
+
+def view_of(r):
+    """The view alone as a match key (sides of a row measured at different sizes)."""
+    return r.get("view_index")
+
+
+def matched_text(matched, expected):
+    """A row's 'views matched' cell: '3 of 3'."""
+    return f"{len(matched)} of {len(expected)}"
+
+
+def short_rows_reason(short):
+    """The criterion's tail for a claim that depends on rows with fewer matched views than the
+    reproduction asks for ({row: lacking}), else ''."""
+    if not short:
+        return ""
+    return "; not measured: " + "; ".join(f"{row}: {', '.join(lack)}" for row, lack in short.items())
