@@ -353,6 +353,24 @@ bool data_bytes(const std::string& head, const BinaryLayout& f, uint64_t& bytes)
   return true;
 }
 
+// A Cells array's value type. Connectivity and offsets are point indices: VTK casts a
+// Float32/Float64 array to ids (3.5 read as 3) and reads an ASCII 8-bit one as a wider
+// integer narrowed unchecked ("260" in a UInt8 array read as 4); its writers use Int32 or
+// Int64. Types are cell type codes, cast the same way from floats.
+void check_cell_array_type(const std::string& path, const std::string& name, const std::string& type) {
+  const bool wide = type == "Int16" || type == "UInt16" || type == "Int32" || type == "UInt32" ||
+                    type == "Int64" || type == "UInt64";
+  if (wide || (name == "types" && (type == "Int8" || type == "UInt8"))) return;
+  const std::string element = "Cells DataArray '" + name + "'";
+  if (type == "Int8" || type == "UInt8")
+    throw InputError(path, element, "type " + type + " is too narrow for point indices (Int16 to UInt64; VTK "
+                                         "reads an 8-bit array's ASCII '260' as 4)");
+  const bool real = type == "Float32" || type == "Float64";
+  throw InputError(path, element, "type '" + type + "' is not an integer type (" +
+                                      (name == "types" ? "Int8 to UInt64" : "Int16 to UInt64") +
+                                      (real ? "; VTK would cast 3.5 to 3)" : ")"));
+}
+
 // A Cells array ("offsets" or "types") must hold one value per cell: VTK reads NumberOfCells
 // of them and ignores the rest (NumberOfCells="1" over two cells read one, silently).
 void check_cell_count(const std::string& path, const std::string& name, uint64_t held, uint64_t cells) {
@@ -487,7 +505,10 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
         count(path, "DataArray " + name + " NumberOfTuples", a->second,
               budget / static_cast<double>(std::max<uint64_t>(comps, 1)), "tuple count");
       const auto f = tag.attrs.find("format");
-      const size_t each = value_bytes(tag.attrs.count("type") ? tag.attrs.at("type") : "");
+      const std::string type = tag.attrs.count("type") ? tag.attrs.at("type") : "";
+      const size_t each = value_bytes(type);
+      if (in_cells && (name == "connectivity" || name == "offsets" || name == "types"))
+        check_cell_array_type(path, name, type);
       if (in_cells && piece_cells >= 0 && (name == "offsets" || name == "types") && f != tag.attrs.end()) {
         const std::string_view data = closed ? std::string_view() : std::string_view(text).substr(i, text.find('<', i) - i);
         uint64_t held = 0;

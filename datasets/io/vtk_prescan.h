@@ -15,7 +15,8 @@ inline constexpr double kMaxCompressionRatio = 1100;
 // .vtu and .vti: tag nesting depth, Piece/DataArray counts against the file size, and for
 // image data WholeExtent/Extent (integers) and Origin/Spacing/Direction (finite numbers).
 // A piece's "offsets" and "types" arrays hold NumberOfCells values (ASCII ones counted,
-// binary and appended ones by their headers), ASCII types VTK cell type codes.
+// binary and appended ones by their headers), ASCII types VTK cell type codes; connectivity
+// and offsets are integers of 16 to 64 bits, types integers.
 // `expected_type` is the VTKFile type the extension promises (UnstructuredGrid, ImageData).
 void prescan_vtk_xml(const std::string& path, const std::string& expected_type);
 // Legacy .vtk: POINTS, CELLS, CELL_TYPES, POINT_DATA, CELL_DATA and DIMENSIONS counts are

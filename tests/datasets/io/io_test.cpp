@@ -821,3 +821,48 @@ TEST(DatasetIO, VtuCellArraysHoldNumberOfCellsVtkTypes) {
                               " differs from the Piece's NumberOfCells " + std::to_string(std::stoi(n) - 1)))
       << e;
 }
+
+namespace {
+// ascii_vtu("2", "10 10") with `from` replaced by `to` (a Cells array's type or values).
+std::string ascii_vtu_with(const std::string& from, const std::string& to) {
+  std::string s = ascii_vtu("2", "10 10");
+  const size_t at = s.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return s.replace(at, from.size(), to);
+}
+}  // namespace
+
+// VTK reads an ASCII 8-bit array as a wider integer narrowed unchecked: point index "260" in
+// a UInt8 connectivity array was read as 4, a real point, and the mesh silently changed.
+TEST(DatasetIO, VtuCharConnectivityIsRefused) {
+  TempDir dir;
+  const std::string conn = "type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 2 3 4";
+  write_text(dir.file("u8.vtu"), ascii_vtu_with(conn, "type=\"UInt8\" Name=\"connectivity\" format=\"ascii\">0 1 2 3 260"));
+  std::string e = input_error([&] { load_input(dir.file("u8.vtu")); });
+  EXPECT_TRUE(contains(e, "u8.vtu: Cells DataArray 'connectivity': type UInt8 is too narrow for point indices")) << e;
+  write_text(dir.file("i8.vtu"), ascii_vtu_with(conn, "type=\"Int8\" Name=\"connectivity\" format=\"ascii\">0 1 2 3 4"));
+  e = input_error([&] { load_input(dir.file("i8.vtu")); });
+  EXPECT_TRUE(contains(e, "i8.vtu: Cells DataArray 'connectivity': type Int8 is too narrow for point indices")) << e;
+  write_text(dir.file("o8.vtu"), ascii_vtu_with("type=\"Int64\" Name=\"offsets\"", "type=\"UInt8\" Name=\"offsets\""));
+  e = input_error([&] { load_input(dir.file("o8.vtu")); });
+  EXPECT_TRUE(contains(e, "o8.vtu: Cells DataArray 'offsets': type UInt8 is too narrow")) << e;
+  // 16-bit indices are integers wide enough to be read exactly.
+  write_text(dir.file("u16.vtu"), ascii_vtu_with("type=\"Int64\" Name=\"connectivity\"", "type=\"UInt16\" Name=\"connectivity\""));
+  EXPECT_EQ(load_input(dir.file("u16.vtu")).mesh().num_cells(), 2u);
+}
+
+// Point indices and cell types stored as floats are malformed: VTK casts them (3.5 read as
+// 3), so integral values read and others were cut silently. Refused whatever the values.
+TEST(DatasetIO, VtuFloatCellArraysAreRefused) {
+  TempDir dir;
+  write_text(dir.file("c.vtu"), ascii_vtu_with("type=\"Int64\" Name=\"connectivity\"", "type=\"Float64\" Name=\"connectivity\""));
+  std::string e = input_error([&] { load_input(dir.file("c.vtu")); });
+  EXPECT_TRUE(contains(e, "c.vtu: Cells DataArray 'connectivity': type 'Float64' is not an integer type (Int16 to UInt64; "
+                          "VTK would cast 3.5 to 3)")) << e;
+  write_text(dir.file("o.vtu"), ascii_vtu_with("type=\"Int64\" Name=\"offsets\"", "type=\"Float32\" Name=\"offsets\""));
+  e = input_error([&] { load_input(dir.file("o.vtu")); });
+  EXPECT_TRUE(contains(e, "o.vtu: Cells DataArray 'offsets': type 'Float32' is not an integer type")) << e;
+  write_text(dir.file("t.vtu"), ascii_vtu_with("type=\"UInt8\" Name=\"types\"", "type=\"Float32\" Name=\"types\""));
+  e = input_error([&] { load_input(dir.file("t.vtu")); });
+  EXPECT_TRUE(contains(e, "t.vtu: Cells DataArray 'types': type 'Float32' is not an integer type (Int8 to UInt64; ")) << e;
+}
