@@ -338,20 +338,59 @@ std::string base64_head(std::string_view text, size_t want) {
   return out;
 }
 
-// The byte count of a binary or appended array's data from its header (`head`, raw bytes):
-// one word, or for compressed data the block count, block size and last block's size.
-bool data_bytes(const std::string& head, const BinaryLayout& f, uint64_t& bytes) {
+// A binary or appended array's header (`head`, raw bytes): one word, the data's byte count,
+// or for compressed data the block count, block size and last block's size.
+bool header_words(const std::string& head, const BinaryLayout& f, uint64_t (&w)[3]) {
   const size_t words = f.compressed ? 3 : 1;
   if (head.size() < words * f.word) return false;
-  uint64_t w[3] = {0, 0, 0};
+  for (size_t k = 0; k < 3; ++k) w[k] = 0;
   for (size_t k = 0; k < words; ++k)
     for (size_t b = 0; b < f.word; ++b) {
       const auto byte = uint64_t(static_cast<unsigned char>(head[k * f.word + (f.little_endian ? b : f.word - 1 - b)]));
       w[k] |= byte << (8 * b);
     }
-  bytes = !f.compressed ? w[0] : w[0] == 0 ? 0 : (w[0] - 1) * w[1] + (w[2] ? w[2] : w[1]);
   return true;
 }
+
+// The byte count of the (uncompressed) data from the header words.
+uint64_t data_bytes(const BinaryLayout& f, const uint64_t (&w)[3]) {
+  return !f.compressed ? w[0] : w[0] == 0 ? 0 : (w[0] - 1) * w[1] + (w[2] ? w[2] : w[1]);
+}
+
+bool data_bytes(const std::string& head, const BinaryLayout& f, uint64_t& bytes) {
+  uint64_t w[3];
+  if (!header_words(head, f, w)) return false;
+  bytes = data_bytes(f, w);
+  return true;
+}
+
+// A header's promises against `room`, the raw bytes its array can have from the header on
+// (to the file's end, or in the element's base64 text). VTK takes a longer declared length
+// on trust and reads what it needs (the file accepted silently), and allocates a compressed
+// header's block count before reading it (2^31 blocks: 8 GB, then "Error reading
+// compression header").
+void check_data_header(const std::string& path, const std::string& element, const std::string& head,
+                       const BinaryLayout& f, uint64_t room) {
+  uint64_t w[3];
+  if (!header_words(head, f, w)) return;  // VTK reports a header cut short
+  const auto follow = "but only " + std::to_string(room) + " bytes follow it";
+  if (!f.compressed) {
+    if (w[0] > room || w[0] + f.word > room)
+      throw InputError(path, element, "its header declares " + std::to_string(w[0]) + " bytes of data, " + follow);
+    return;
+  }
+  if (w[0] > room / f.word || (3 + w[0]) * f.word > room)
+    throw InputError(path, element, "its header declares " + std::to_string(w[0]) + " compressed blocks, " + follow);
+  const uint64_t bytes = data_bytes(f, w);
+  if (static_cast<double>(bytes) > static_cast<double>(room) * kMaxCompressionRatio ||
+      (w[0] > 1 && w[1] > std::numeric_limits<uint64_t>::max() / (w[0] - 1)))
+    throw InputError(path, element, "its header declares " + std::to_string(bytes) + " bytes uncompressed, more than the " +
+                                        std::to_string(room) + " bytes that follow it can hold (" +
+                                        std::to_string(int(kMaxCompressionRatio)) + " to 1 at most)");
+}
+
+// Raw bytes that `chars` of base64 text decode to at most.
+uint64_t base64_room(uint64_t chars) { return (chars + 3) / 4 * 3; }
 
 // A Cells array's value type. Connectivity and offsets are point indices: VTK casts a
 // Float32/Float64 array to ids (3.5 read as 3) and reads an ASCII 8-bit one as a wider
@@ -395,14 +434,17 @@ void check_ascii_cells(const std::string& path, const std::string& name, std::st
 }
 
 struct AppendedArray {
-  std::string name;
-  uint64_t offset, value_bytes, cells;
+  std::string element, name;  // element as errors name it; a Cells array's name
+  uint64_t offset, value_bytes;
+  int64_t cells;  // for "offsets" and "types": the Piece's NumberOfCells; else -1
 };
 
-// Cell arrays in <AppendedData> (which starts at byte `at`): each one's header read at its
-// offset past the '_', raw or base64 as the section's encoding says.
-void check_appended_cells(const std::string& path, uint64_t at, const BinaryLayout& layout,
-                          const std::vector<AppendedArray>& arrays) {
+// Arrays in <AppendedData> (which starts at byte `at`): each one's header read at its offset
+// past the '_', raw or base64 as the section's encoding says, checked against the bytes
+// after it and, for counted Cells arrays, NumberOfCells.
+void check_appended(const std::string& path, uint64_t at, const BinaryLayout& layout,
+                    const std::vector<AppendedArray>& arrays) {
+  const uint64_t size = file_size(path);
   std::ifstream in(path, std::ios::binary);
   std::string tag(4096, '\0');
   in.seekg(std::streamoff(at));
@@ -416,13 +458,17 @@ void check_appended_cells(const std::string& path, uint64_t at, const BinaryLayo
   const size_t want = 3 * layout.word;
   for (const AppendedArray& a : arrays) {
     std::string head(base64 ? want * 4 / 3 + 4 : want, '\0');
+    const uint64_t from = at + mark + 1 + a.offset;
+    if (from >= size) continue;  // VTK reports it
     in.clear();
-    in.seekg(std::streamoff(at + mark + 1 + a.offset));
+    in.seekg(std::streamoff(from));
     in.read(head.data(), std::streamsize(head.size()));
     head.resize(size_t(in.gcount()));
     if (base64) head = base64_head(head, want);
+    check_data_header(path, a.element, head, layout, base64 ? base64_room(size - from) : size - from);
     uint64_t bytes = 0;
-    if (data_bytes(head, layout, bytes)) check_cell_count(path, a.name, bytes / a.value_bytes, a.cells);
+    if (a.cells >= 0 && data_bytes(head, layout, bytes))
+      check_cell_count(path, a.name, bytes / a.value_bytes, uint64_t(a.cells));
   }
 }
 
@@ -453,7 +499,8 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
   BinaryLayout layout;
   int64_t piece_cells = -1;  // the current Piece's NumberOfCells
   bool in_cells = false;
-  std::vector<AppendedArray> appended;  // cell arrays in <AppendedData>, checked after the tags
+  std::vector<std::string> open;        // the open tags' names (errors name an array's parent)
+  std::vector<AppendedArray> appended;  // arrays in <AppendedData>, checked after the tags
   while ((i = text.find('<', i)) != std::string::npos) {
     if (text.compare(i, 4, "<!--") == 0) {
       const size_t e = text.find("-->", i);
@@ -469,6 +516,7 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
     if (body.empty() || body[0] == '?' || body[0] == '!') continue;
     if (body[0] == '/') {
       --depth;
+      if (!open.empty()) open.pop_back();
       if (body.substr(1, 5) == "Cells") in_cells = false;
       continue;
     }
@@ -477,6 +525,8 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
       throw InputError(path, "XML byte " + std::to_string(i - body.size() - 2),
                        "tags nest deeper than " + std::to_string(kMaxXmlDepth) + " levels");
     const Tag tag = parse_tag(body);
+    const std::string parent = open.empty() ? "" : open.back();
+    if (!closed) open.push_back(tag.name);
     if (tag.name == "VTKFile") {
       const auto t = tag.attrs.find("type");
       if (t == tag.attrs.end() || t->second != expected_type)
@@ -509,19 +559,22 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
       const size_t each = value_bytes(type);
       if (in_cells && (name == "connectivity" || name == "offsets" || name == "types"))
         check_cell_array_type(path, name, type);
-      if (in_cells && piece_cells >= 0 && (name == "offsets" || name == "types") && f != tag.attrs.end()) {
-        const std::string_view data = closed ? std::string_view() : std::string_view(text).substr(i, text.find('<', i) - i);
+      const bool counted = in_cells && piece_cells >= 0 && (name == "offsets" || name == "types") && each > 0;
+      const std::string element = parent + " DataArray" + (tag.attrs.count("Name") ? " '" + name + "'" : "");
+      const std::string_view data = closed ? std::string_view() : std::string_view(text).substr(i, text.find('<', i) - i);
+      if (f == tag.attrs.end()) {
+        // VTK reports a missing format
+      } else if (f->second == "ascii") {
+        if (counted) check_ascii_cells(path, name, data, uint64_t(piece_cells));
+      } else if (f->second == "binary") {
+        const std::string head = base64_head(data, 3 * layout.word);
+        check_data_header(path, element, head, layout, base64_room(data.size()));
         uint64_t held = 0;
-        if (f->second == "ascii") {
-          check_ascii_cells(path, name, data, uint64_t(piece_cells));
-        } else if (f->second == "binary" && each > 0 &&
-                   data_bytes(base64_head(data, 3 * layout.word), layout, held)) {
-          check_cell_count(path, name, held / each, uint64_t(piece_cells));
-        } else if (f->second == "appended" && each > 0 && tag.attrs.count("offset")) {
-          int64_t offset = 0;
-          if (parse_int(tag.attrs.at("offset"), offset) && offset >= 0)
-            appended.push_back({name, uint64_t(offset), each, uint64_t(piece_cells)});
-        }
+        if (counted && data_bytes(head, layout, held)) check_cell_count(path, name, held / each, uint64_t(piece_cells));
+      } else if (f->second == "appended" && tag.attrs.count("offset")) {
+        int64_t offset = 0;
+        if (parse_int(tag.attrs.at("offset"), offset) && offset >= 0)
+          appended.push_back({element, name, uint64_t(offset), each, counted ? piece_cells : -1});
       }
     }
     if (tag.name == "ImageData" || tag.name == "Piece") {
@@ -536,7 +589,7 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
                          "'" + a->second + "' promises more points than a file of this size can hold");
     }
   }
-  if (!appended.empty()) check_appended_cells(path, text.size(), layout, appended);
+  if (!appended.empty()) check_appended(path, text.size(), layout, appended);
 }
 
 void prescan_vtk_legacy(const std::string& path) {

@@ -16,7 +16,9 @@ inline constexpr double kMaxCompressionRatio = 1100;
 // image data WholeExtent/Extent (integers) and Origin/Spacing/Direction (finite numbers).
 // A piece's "offsets" and "types" arrays hold NumberOfCells values (ASCII ones counted,
 // binary and appended ones by their headers), ASCII types VTK cell type codes; connectivity
-// and offsets are integers of 16 to 64 bits, types integers.
+// and offsets are integers of 16 to 64 bits, types integers. Every binary or appended array's
+// header promises no more bytes (compressed: blocks, and data at kMaxCompressionRatio) than
+// follow it.
 // `expected_type` is the VTKFile type the extension promises (UnstructuredGrid, ImageData).
 void prescan_vtk_xml(const std::string& path, const std::string& expected_type);
 // Legacy .vtk: POINTS, CELLS, CELL_TYPES, POINT_DATA, CELL_DATA and DIMENSIONS counts are

@@ -866,3 +866,87 @@ TEST(DatasetIO, VtuFloatCellArraysAreRefused) {
   e = input_error([&] { load_input(dir.file("t.vtu")); });
   EXPECT_TRUE(contains(e, "t.vtu: Cells DataArray 'types': type 'Float32' is not an integer type (Int8 to UInt64; ")) << e;
 }
+
+namespace {
+// `n` as `bytes` little-endian bytes.
+std::string le(uint64_t n, size_t bytes) {
+  std::string s;
+  for (size_t b = 0; b < bytes; ++b) s += char(n >> (8 * b) & 0xFF);
+  return s;
+}
+std::string base64(const std::string& raw) {
+  const char* digits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (size_t i = 0; i < raw.size(); i += 3) {
+    uint32_t v = 0;
+    for (size_t k = 0; k < 3; ++k) v = v << 8 | (i + k < raw.size() ? uint8_t(raw[i + k]) : 0);
+    for (size_t k = 0; k < 4; ++k) out += k <= raw.size() - i ? digits[v >> (18 - 6 * k) & 63] : '=';
+  }
+  return out;
+}
+// Two tetrahedra as an uncompressed .vtu, arrays "appended" (raw) or "binary" (inline base64),
+// each with its UInt32 byte count; `huge` names the array whose count is 4294967040.
+std::string binary_vtu(const std::string& format, const std::string& huge) {
+  const double pts[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+  std::string points(reinterpret_cast<const char*>(pts), sizeof pts), conn, offsets;
+  for (const int64_t i : {0, 1, 2, 3, 4, 2, 1, 3}) conn += le(uint64_t(i), 8);
+  offsets = le(4, 8) + le(8, 8);
+  struct Array { const char *parent, *name, *type; int comps; std::string data; };
+  const Array arrays[] = {{"Points", "Points", "Float64", 3, points}, {"Cells", "connectivity", "Int64", 1, conn},
+                          {"Cells", "offsets", "Int64", 1, offsets}, {"Cells", "types", "UInt8", 1, "\x0a\x0a"}};
+  std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\" "
+                    "header_type=\"UInt32\">\n<UnstructuredGrid><Piece NumberOfPoints=\"5\" NumberOfCells=\"2\">";
+  std::string appended;
+  for (const Array& a : arrays) {
+    if (a.name == std::string("Points")) xml += "<Points>";
+    if (a.name == std::string("connectivity")) xml += "</Points><Cells>";
+    const std::string head = le(a.name == huge ? 4294967040u : a.data.size(), 4);
+    xml += std::string("<DataArray type=\"") + a.type + "\" Name=\"" + a.name + "\" NumberOfComponents=\"" +
+           std::to_string(a.comps) + "\" format=\"" + format + "\"";
+    if (format == "appended") {
+      xml += " offset=\"" + std::to_string(appended.size()) + "\"/>";
+      appended += head + a.data;
+    } else {
+      xml += ">" + base64(head) + base64(a.data) + "</DataArray>";
+    }
+  }
+  xml += "</Cells></Piece></UnstructuredGrid>";
+  if (format == "appended") xml += "<AppendedData encoding=\"raw\">_" + appended + "</AppendedData>";
+  return xml + "</VTKFile>\n";
+}
+}  // namespace
+
+// A binary or appended array's header declaring more bytes than follow it: VTK read the
+// values it needed and took the rest on trust (the file accepted); a compressed header's
+// block count it allocates before reading (2^31 blocks: 8 GB, then its own error).
+TEST(DatasetIO, VtuDataHeadersBeyondTheFileAreRefused) {
+  TempDir dir;
+  for (const std::string format : {"appended", "binary"}) {
+    write_text(dir.file(format + ".vtu"), binary_vtu(format, ""));
+    EXPECT_EQ(load_input(dir.file(format + ".vtu")).mesh().num_cells(), 2u) << format;
+    for (const std::string array : {"Points", "connectivity"}) {
+      const std::string f = dir.file(format + "_" + array + ".vtu");
+      write_text(f, binary_vtu(format, array));
+      const std::string e = input_error([&] { load_input(f); });
+      EXPECT_TRUE(contains(e, format + "_" + array + ".vtu: " + (array == "Points" ? "Points" : "Cells") +
+                                  " DataArray '" + array + "': its header declares 4294967040 bytes of data, but only "))
+          << e;
+    }
+  }
+  // Compressed (as vobench writes): the connectivity's block count made 2^31 - 16.
+  write_scene(make("zoo"), dir.file("zoo.vtu"));
+  std::ifstream in(dir.file("zoo.vtu"), std::ios::binary);
+  std::stringstream all;
+  all << in.rdbuf();
+  std::string text = all.str();
+  const size_t conn = text.find("Name=\"connectivity\"");
+  const size_t at = text.find("offset=\"", conn) + 8;
+  const size_t data = text.find('_', text.find("<AppendedData")) + 1 + std::stoul(text.substr(at));
+  ASSERT_NE(text.find("header_type=\"UInt32\""), std::string::npos);
+  text.replace(data, 4, le(0x7FFFFFF0, 4));
+  write_text(dir.file("zoo_blocks.vtu"), text);
+  const std::string e = input_error([&] { load_input(dir.file("zoo_blocks.vtu")); });
+  EXPECT_TRUE(contains(e, "zoo_blocks.vtu: Cells DataArray 'connectivity': its header declares 2147483632 compressed blocks, "
+                          "but only "))
+      << e;
+}
