@@ -85,8 +85,9 @@ void check_tag(const std::string& path, const char* kind, int64_t tag, const std
 
 void check_msh2_node_refs(const std::string& path, const std::function<int(int)>& nodes_of) {
   std::string s;  // only MSH 2 files are read whole
-  if (!read_msh_if_starts_with(path, "$MeshFormat\n2", s)) return;
-  Cursor fmt{s, std::strlen("$MeshFormat\n")};
+  size_t version_at = 0;
+  if (!read_msh_if_version(path, "2", s, version_at)) return;
+  Cursor fmt{s, version_at};
   std::string_view line;
   std::vector<int64_t> v;
   if (!fmt.line(line)) return;
@@ -151,9 +152,9 @@ void check_msh2_node_refs(const std::string& path, const std::function<int(int)>
           if (!c.line(line)) return;
       }
     } else if (name.rfind("End", 0) != 0) {  // another section ($NodeData, ...): to its end line
-      const size_t end = s.find("\n$End" + name + "\n", c.at - 1);
+      const size_t end = find_line(s, "$End" + name, c.at);
       if (end == std::string::npos) return;
-      c.at = end + 1;
+      c.at = end;
     }
   }
   std::sort(tags.begin(), tags.end());

@@ -241,9 +241,9 @@ void read_elements(Fields& f, const NodeSet& nodes, const std::function<GmshElem
 
 void check_msh4_blocks(const std::string& path, const std::function<GmshElementType(int)>& type_of) {
   std::string s;  // only MSH 4.1 files are read whole
-  if (!read_msh_if_starts_with(path, "$MeshFormat\n4.1 ", s)) return;
+  size_t at = 0;
+  if (!read_msh_if_version(path, "4.1 ", s, at)) return;
 
-  size_t at = std::strlen("$MeshFormat\n");
   const size_t eol = s.find('\n', at);
   if (eol == std::string::npos) return;  // prescan_msh has checked the format line
   int binary = 0;

@@ -8,13 +8,14 @@
 #include <fstream>
 #include <sstream>
 
+#include "datasets/gmsh/msh_text.h"
 #include "datasets/io/file_util.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
 
 namespace {
-// The file is scanned in chunks for "$Nodes\n" and "$Elements\n" at line starts; a chunk
+// The file is scanned in chunks for the lines "$Nodes" and "$Elements" (LF or CRLF); a chunk
 // keeps the tail of the previous one so a marker split between them is still found.
 constexpr size_t kChunk = size_t(1) << 20;
 // A $NodeData header (its tags) is read from this many bytes after the marker.
@@ -80,33 +81,34 @@ void prescan_msh(const std::string& path) {
     open_elements = open_elements || buf.find("\n$Elements") != std::string::npos;
     end_nodes = end_nodes || buf.find("\n$EndNodes") != std::string::npos;
     end_elements = end_elements || buf.find("\n$EndElements") != std::string::npos;
-    for (const char* marker : {"\n$Nodes\n", "\n$Elements\n"}) {
-      for (size_t at = buf.find(marker); at != std::string::npos; at = buf.find(marker, at + 1)) {
-        const size_t after = at + std::strlen(marker);
+    for (const std::string name : {"Nodes", "Elements"}) {
+      const std::string marker = "$" + name;
+      for (size_t at = find_line(buf, marker, 1); at != std::string::npos; at = find_line(buf, marker, at + 1)) {
+        const size_t after = after_line_end(buf, at + marker.size());
         if (after + 64 > buf.size() && in) continue;  // read more first (found again next round)
         uint64_t count = 0;
         if (raw_counts) {  // numEntityBlocks, then the count
-          if (after + 16 > buf.size()) throw InputError(path, marker + 1, "file ends inside the section header");
+          if (after + 16 > buf.size()) throw InputError(path, marker, "file ends inside the section header");
           std::memcpy(&count, buf.data() + after + 8, 8);
         } else {
           std::istringstream line(buf.substr(after, 64));
           uint64_t first = 0;
-          if (!(line >> first)) throw InputError(path, std::string(marker + 2, std::strlen(marker) - 3), "the count is not a number");
+          if (!(line >> first)) throw InputError(path, name, "the count is not a number");
           count = first;
           if (version >= 4 && !(line >> count))  // numEntityBlocks count ...
-            throw InputError(path, std::string(marker + 2, std::strlen(marker) - 3), "expected 'blocks count min max'");
+            throw InputError(path, name, "expected 'blocks count min max'");
         }
         const uintmax_t left = size - (base + after);
         if (count > left / 2)
-          throw InputError(path, std::string(marker + 2, std::strlen(marker) - 3),
+          throw InputError(path, name,
                            "declares " + std::to_string(count) + " entries but only " + std::to_string(left) +
                                " bytes follow");
       }
     }
     // gmsh reads the count into an int: beyond it (10^12 values declared, 2 given) the
     // view was dropped without a word, and the mesh read without its scalars.
-    for (size_t at = buf.find("\n$NodeData\n"); at != std::string::npos; at = buf.find("\n$NodeData\n", at + 1)) {
-      const size_t after = at + std::strlen("\n$NodeData\n");
+    for (size_t at = find_line(buf, "$NodeData", 1); at != std::string::npos; at = find_line(buf, "$NodeData", at + 1)) {
+      const size_t after = after_line_end(buf, at + std::strlen("$NodeData"));
       if (after + kDataHeader > buf.size() && in) continue;  // found again next round
       std::string name;
       long long count = 0;

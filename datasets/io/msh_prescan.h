@@ -5,7 +5,7 @@
 // a file must start with it (or with MSH 1's $NOD), as gmsh requires of a mesh.
 // $NodeData's value count is checked the same way (gmsh dropped a view declaring more
 // than an int holds, silently). Only the section headers are checked; gmsh reports what
-// lies inside them.
+// lies inside them. Line ends are LF or CRLF (gmsh reads both alike).
 #pragma once
 #include <string>
 

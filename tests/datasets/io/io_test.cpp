@@ -749,6 +749,44 @@ TEST(DatasetIO, GmshNodeDataCountBeyondTheFileIsRefused) {
   EXPECT_TRUE(contains(e, "neg.msh: NodeData \"s\": declares -2 values")) << e;
 }
 
+// gmsh reads a file with CRLF line ends as with LF, but the prescans looked for "\n" after
+// "$MeshFormat" and the section lines and skipped such a file whole: a node tag of 3e9
+// crashed gmsh (SIGSEGV) in MSH 4.1 and was narrowed silently in MSH 2.2.
+TEST(DatasetIO, GmshCrlfFilesGetTheSameChecks) {
+  TempDir dir;
+  const auto crlf = [](std::string s) {
+    for (size_t at = s.find('\n'); at != std::string::npos; at = s.find('\n', at + 2)) s.insert(at, 1, '\r');
+    return s;
+  };
+  const std::string data = "$NodeData\n1\n\"s\"\n1\n0.0\n3\n0\n1\n1000000000000\n1 0\n$EndNodeData\n";
+  const std::string comments = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Comments\nmade by hand\n$EndComments\n";
+  std::string count22 = msh22({"1", "2", "3", "4"}, {"1 4 2 0 1 1 2 3 4"});
+  count22.insert(count22.find("$Elements\n1") + 11, "000000000");  // 10^9 elements declared
+  const std::pair<const char*, std::string> bad[] = {
+      {"tag41", msh41({"1", "2", "3", "3000000000"}, {"1 1 2 3 3000000000"})},
+      {"tag22", msh22({"1", "2", "3", "3000000000"}, {"1 4 2 0 1 1 2 3 3000000000"})},
+      {"count22", count22},
+      {"data22", msh22({"1", "2", "3", "4"}, {"1 4 2 0 1 1 2 3 4"}) + data},
+      {"skip22", comments + msh22({"1", "2", "3", "4"}, {"1 4 2 0 1 1 2 3 9"}).substr(std::strlen("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"))},
+  };
+  for (const auto& [name, text] : bad) {
+    SCOPED_TRACE(name);
+    write_text(dir.file(std::string(name) + ".msh"), text);
+    write_text(dir.file(std::string(name) + "_crlf.msh"), crlf(text));
+    // The same element and reason (a byte count after "but only" counts the '\r's).
+    const auto reason = [](const std::string& e) { return e.substr(e.find(".msh: ") + 6, e.find("but only") - e.find(".msh: ") - 6); };
+    const std::string lf = msh_error(dir.file(std::string(name) + ".msh"));
+    const std::string cr = msh_error(dir.file(std::string(name) + "_crlf.msh"));
+    EXPECT_EQ(reason(cr), reason(lf)) << cr;
+    EXPECT_FALSE(contains(cr, "gmsh:")) << cr;
+  }
+  write_text(dir.file("ok41.msh"), crlf(msh41({"1", "2", "3", "4", "5"}, {"1 1 2 3 4", "2 2 3 4 5"})));
+  EXPECT_EQ(msh_cells(dir.file("ok41.msh")), 2u);
+  write_text(dir.file("ok22.msh"), crlf(comments + msh22({"1", "2", "3", "4"}, {"1 4 2 0 1 1 2 3 4"}).substr(
+                                        std::strlen("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"))));
+  EXPECT_EQ(msh_cells(dir.file("ok22.msh")), 1u);
+}
+
 // VTK reads ASCII legacy numbers with `>>`, which stops at "nan", "inf" or a missing value
 // and said only "Error reading ascii data. Possible mismatch of datasize with declaration".
 TEST(DatasetIO, LegacyAsciiNumbersAreNamedWhenNotFinite) {
