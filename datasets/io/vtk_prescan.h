@@ -1,7 +1,8 @@
 // Cheap checks on a VTK file's own text before VTK parses it, for what VTK would turn into
 // a crash (deep XML nesting), a huge allocation (a small file declaring 10^9 points) or a
 // silent default (a .vti origin of "nan" or "abc" read as 0). Each throws one InputError
-// naming the file, the element and the reason.
+// naming the file, the element and the reason. Defined in vtk_xml_prescan.cpp and
+// vtk_legacy_prescan.cpp, which share vtk_prescan_text.h.
 #pragma once
 #include <string>
 
