@@ -173,22 +173,34 @@ void check_data_header(const std::string& path, const std::string& element, cons
 // Raw bytes that `chars` of base64 text decode to at most.
 uint64_t base64_room(uint64_t chars) { return (chars + 3) / 4 * 3; }
 
-// A Cells array's value type. Connectivity and offsets are point indices: VTK casts a
-// Float32/Float64 array to ids (3.5 read as 3) and reads an ASCII 8-bit one as a wider
-// integer narrowed unchecked ("260" in a UInt8 array read as 4); its writers use Int32 or
-// Int64. Types are cell type codes, cast the same way from floats.
+// A Cells array's value type. Connectivity, offsets and types are integers: VTK casts a
+// Float32/Float64 array to ids (3.5 read as 3) and cell type codes the same way.
 void check_cell_array_type(const std::string& path, const std::string& name, const std::string& type) {
-  const bool wide = type == "Int16" || type == "UInt16" || type == "Int32" || type == "UInt32" ||
-                    type == "Int64" || type == "UInt64";
-  if (wide || (name == "types" && (type == "Int8" || type == "UInt8"))) return;
-  const std::string element = "Cells DataArray '" + name + "'";
-  if (type == "Int8" || type == "UInt8")
-    throw InputError(path, element, "type " + type + " is too narrow for point indices (Int16 to UInt64; VTK "
-                                         "reads an 8-bit array's ASCII '260' as 4)");
+  const bool integer = type == "Int8" || type == "UInt8" || type == "Int16" || type == "UInt16" ||
+                       type == "Int32" || type == "UInt32" || type == "Int64" || type == "UInt64";
+  if (integer) return;
   const bool real = type == "Float32" || type == "Float64";
-  throw InputError(path, element, "type '" + type + "' is not an integer type (" +
-                                      (name == "types" ? "Int8 to UInt64" : "Int16 to UInt64") +
-                                      (real ? "; VTK would cast 3.5 to 3)" : ")"));
+  throw InputError(path, "Cells DataArray '" + name + "'",
+                   "type '" + type + "' is not an integer type (Int8 to UInt64" +
+                       (real ? "; VTK would cast 3.5 to 3)" : ")"));
+}
+
+// An ASCII 8-bit array's values within its type: VTK reads each as a wider integer and
+// narrows it unchecked ("260" in a UInt8 connectivity read as point 4). Binary 8-bit arrays
+// cannot hold such values; wider ASCII ones fail in VTK's own reader.
+void check_ascii_byte_range(const std::string& path, const std::string& name, const std::string& type,
+                            std::string_view data) {
+  if (type != "Int8" && type != "UInt8") return;
+  const int64_t lo = type == "Int8" ? -128 : 0, hi = type == "Int8" ? 127 : 255;
+  uint64_t n = 0;
+  for (const std::string_view w : split(data)) {
+    int64_t v = 0;
+    if (parse_int(w, v) && (v < lo || v > hi))
+      throw InputError(path, "Cells DataArray '" + name + "'",
+                       "value " + std::to_string(n) + " (" + std::string(w.substr(0, 40)) + ") is outside " + type +
+                           " (" + std::to_string(lo) + " to " + std::to_string(hi) + "; VTK would narrow it)");
+    ++n;
+  }
 }
 
 // A Cells array ("offsets" or "types") must hold one value per cell: VTK reads NumberOfCells
@@ -346,6 +358,7 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
       if (f == tag.attrs.end()) {
         // VTK reports a missing format
       } else if (f->second == "ascii") {
+        if (in_cells && (name == "connectivity" || name == "offsets")) check_ascii_byte_range(path, name, type, data);
         if (counted) check_ascii_cells(path, name, data, uint64_t(piece_cells));
       } else if (f->second == "binary") {
         const std::string head = base64_head(data, 3 * layout.word);
