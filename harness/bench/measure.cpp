@@ -160,6 +160,9 @@ Measurement finish_orderer_job(const Job& job, PreparedOrderer& p, const Scene& 
   rec.h = job.h;
   rec.view_index = job.view_index;
   rec.views = suite.views;
+  rec.views_asked = suite.view_indices;
+  if (rec.views_asked.empty())
+    for (int i = 0; i < suite.views; ++i) rec.views_asked.push_back(i);
   rec.camera = job.camera;
   rec.repeats = suite.repeats;
   rec.warmup = suite.warmup;

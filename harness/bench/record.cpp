@@ -38,6 +38,7 @@ nlohmann::json Record::to_json() const {
     j["pixels"] = int64_t(w) * h;
     j["view_index"] = view_index;
     j["views"] = views;
+    if (!views_asked.empty()) j["views_asked"] = views_asked;
     j["camera"] = camera.to_json();
     j["phases"] = phases;
     j["total"] = total;

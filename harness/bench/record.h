@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,9 @@ struct Record {
   nlohmann::json parameters, claims;
   std::string raster = "exact";   // the oracle's sampling rule (harness/raster/raster_rule.h)
   int w = 0, h = 0, view_index = 0, views = 0;
+  // The view indices the suite asks of this data set (all of 0..views-1, or its view_indices
+  // or spread_views): a report knows a view lost by every orderer of a run from these.
+  std::vector<int> views_asked;
   Camera camera;
   nlohmann::json phases, total, prepare, bytes, cycles, counters;
   std::optional<int64_t> a;       // exterior area in pixels (cells, exterior_area)

@@ -143,10 +143,13 @@ def expected_keys(group, views=None):
     expected to have (a suite gives every orderer of a data set the same views). With `views`
     (every view index of the reproduction, when all its suites measure the same views), each
     of those views at each of the group's sizes and thread counts, so a view missing for every
-    orderer of one data set counts as missing too."""
+    orderer of one data set counts as missing too. Records that say which views their suite
+    asked (`views_asked`) add those, so a view lost by every orderer of the run counts too."""
     keys = {match_key(r) for r in group}
     if views is not None:
         keys |= {(v, s, t) for v in views for _, s, t in keys}
+    # at the record's own size and threads: two suites of one reproduction may ask other views
+    keys |= {(v, size_of(r), r.get("threads")) for r in group for v in (r.get("views_asked") or ())}
     return keys
 
 
