@@ -30,7 +30,15 @@ Scene validated(Scene s, const std::string& path) {
       build_mesh_faces(s.mesh(), path);  // throws on a face shared by 3 cells or overlaps
       break;
     case SceneKind::Triangles: validate_triangle_soup(s.soup(), path); break;
-    case SceneKind::Voxels: validate_voxel_grid(s.grid(), path); break;
+    case SceneKind::Voxels:
+      validate_voxel_grid(s.grid(), path);
+      // Only voxels above the threshold are ordered and judged: a file without one would
+      // pass every check on nothing, as a mesh without cells would.
+      if (std::none_of(s.grid().values.begin(), s.grid().values.end(),
+                       [t = s.grid().threshold](float v) { return v > t; }))
+        throw InputError(path, "values", "no voxel is above the threshold " + short_number(s.grid().threshold) +
+                                             " (nothing to order or draw)");
+      break;
   }
   return s;
 }

@@ -1,5 +1,6 @@
 #include "datasets/io/vtk_io.h"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -14,6 +15,7 @@
 #include <vtkFloatArray.h>
 #include <vtkGenericDataObjectReader.h>
 #include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -54,6 +56,20 @@ VoxelGrid from_image(vtkImageData* img, const std::string& path) {
     for (int i = 0; i < 3; ++i) dims[i] = std::max(1, dims[i] - 1);
     origin = origin + Vec3{sp[0], sp[1], sp[2]} * 0.5;
   }
+  // A voxel grid is axis-aligned: an image VTK would draw rotated or mirrored by its
+  // Direction matrix is refused, not read in the wrong place.
+  if (vtkMatrix3x3* d = img->GetDirectionMatrix(); d && !d->IsIdentity()) {
+    std::string m;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) m += (m.empty() ? "" : " ") + short_number(d->GetElement(r, c));
+    throw InputError(path, "Direction", "'" + m + "' is not the identity (rotated or mirrored images are not supported)");
+  }
+  // One value per voxel decides which voxels are drawn: a vector array is not read as its
+  // first component (INRIMAGE's VDIM > 1 is refused alike).
+  if (a->GetNumberOfComponents() != 1)
+    throw InputError(path, std::string("array ") + (a->GetName() ? a->GetName() : "?"),
+                     "has " + std::to_string(a->GetNumberOfComponents()) +
+                         " components per voxel (a voxel volume needs one scalar)");
   g.dims = {dims[0], dims[1], dims[2]};
   g.spacing = {sp[0], sp[1], sp[2]};
   g.origin = origin;
@@ -62,10 +78,19 @@ VoxelGrid from_image(vtkImageData* img, const std::string& path) {
                      "has " + std::to_string(a->GetNumberOfTuples()) + " values for " +
                          std::to_string(g.num_voxels()) + " voxels");
   g.values.resize(g.num_voxels());
-  for (size_t i = 0; i < g.values.size(); ++i) g.values[i] = static_cast<float>(a->GetComponent(i, 0));
+  for (size_t i = 0; i < g.values.size(); ++i) {
+    const double v = a->GetComponent(i, 0);
+    g.values[i] = static_cast<float>(v);
+    if (std::isfinite(v) && !std::isfinite(g.values[i]))  // not "not finite": the file's value is
+      throw InputError(path, "voxel " + std::to_string(i), "value " + short_number(v) + " does not fit a 32-bit float");
+  }
   if (vtkFieldData* fd = img->GetFieldData())
-    if (vtkDataArray* t = fd->GetArray("vobench_threshold"); t && t->GetNumberOfTuples() > 0)
-      g.threshold = static_cast<float>(t->GetComponent(0, 0));
+    if (vtkDataArray* t = fd->GetArray("vobench_threshold"); t && t->GetNumberOfTuples() > 0) {
+      const double v = t->GetComponent(0, 0);
+      g.threshold = static_cast<float>(v);
+      if (!std::isfinite(g.threshold))  // NaN would make no voxel significant, and the check pass on nothing
+        throw InputError(path, "field vobench_threshold", "'" + short_number(v) + "' is not a finite 32-bit float");
+    }
   return g;
 }
 

@@ -55,6 +55,7 @@ void validate_voxel_grid(const VoxelGrid& g, const std::string& source) {
   if (!is_finite(g.spacing) || g.spacing.x <= 0 || g.spacing.y <= 0 || g.spacing.z <= 0)
     throw InputError(source, "spacing", "must be positive and finite");
   if (!is_finite(g.origin)) throw InputError(source, "origin", "is not finite");
+  if (!std::isfinite(g.threshold)) throw InputError(source, "threshold", "is not finite");
   const Aabb box = g.bounds();
   for (const Vec3 corner : {box.lo, box.hi})
     if (!is_finite(corner) || std::max({std::abs(corner.x), std::abs(corner.y), std::abs(corner.z)}) >

@@ -43,6 +43,15 @@ def cases(work):
         "deep-nesting": vti(inner="<b>" * 50000 + "</b>" * 50000),
         "control-bytes": vti(vtype="Float\x00\x01\x02"),
         "long-token": vti(origin="0 0 " + "9" * 3000),
+        # Read as given, these were a mirrored image drawn unmirrored, the first component of
+        # a vector, and no voxel at all (a NaN threshold, or none above it) passing every check.
+        "mirrored-direction": vti(extra=' Direction="-1 0 0 0 1 0 0 0 1"'),
+        "rotated-direction": vti(extra=' Direction="0 1 0 -1 0 0 0 0 1"'),
+        "two-components": vti(ncomp="2", values="1 2 3 4 5 6 7 8 1 2 3 4 5 6 7 8"),
+        "nan-threshold": vti().replace(b"<Piece ", b'<FieldData><DataArray type="Float32" Name="vobench_threshold" '
+                                                    b'NumberOfTuples="1" format="ascii">nan</DataArray></FieldData>\n<Piece '),
+        "all-below-threshold": vti(values="-1 -2 -3 -4 0 0 0 0"),
+        "float-overflow": vti(vtype="Float64", values="1 2 1e300 4 5 6 7 8"),
         "garbage": bytes((i * 53 + 3) % 256 for i in range(2000)),
         "empty": b"",
     })

@@ -126,4 +126,9 @@ def cases(work):
     add("volume-text-origin", volume(origin="0 abc 0"), algorithm="distance-sort")
     add("volume-short-values", volume(values="1 2 3"), algorithm="distance-sort")
     add("volume-zero-spacing", volume(spacing="0 1 1"), algorithm="distance-sort")
+    # A vector array is not read as its first component; a volume of no voxel above the
+    # threshold (0) would pass every check on nothing.
+    add("volume-vectors", volume().replace(b"SCALARS v float 1\nLOOKUP_TABLE default\n1 2 3 4 5 6 7 8",
+                                           b"VECTORS v float\n" + b"1 2 3 " * 8), algorithm="distance-sort")
+    add("volume-all-zero", volume(values="0 0 0 0 0 0 0 0"), algorithm="distance-sort")
     return out
