@@ -10,7 +10,7 @@
 
 namespace vob {
 
-std::string gunzip_file(const std::string& path) {
+std::string gunzip_file(const std::string& path, size_t limit) {
   {
     std::ifstream in(path, std::ios::binary);
     unsigned char magic[2] = {0, 0};
@@ -32,6 +32,11 @@ std::string gunzip_file(const std::string& path) {
     }
     if (n == 0) break;
     out.append(buf, size_t(n));
+    if (out.size() > limit && limit < kMaxGunzipBytes) {  // enough: the caller needs no more
+      out.resize(limit + 1);
+      gzclose(f);
+      return out;
+    }
     if (out.size() > kMaxGunzipBytes) {
       gzclose(f);
       throw InputError(path, "gzip stream", "inflates to more than 16 GiB");

@@ -7,6 +7,8 @@ namespace vob {
 
 inline constexpr size_t kMaxGunzipBytes = size_t(1) << 34;  // 16 GiB: a bomb is refused
 
-std::string gunzip_file(const std::string& path);
+// The inflated bytes; with `limit`, at most limit + 1 of them (the rest is not inflated: one
+// more byte than a caller needs tells it the stream holds more, without holding it all).
+std::string gunzip_file(const std::string& path, size_t limit = kMaxGunzipBytes);
 
 }  // namespace vob

@@ -36,7 +36,15 @@ T load(const unsigned char* p, bool swap) {
 }  // namespace
 
 namespace {
-VoxelGrid parse_inr(std::istream& in, const std::string& path) {
+// The header, the grid it describes (no values yet) and how its samples are stored.
+struct InrHeader {
+  VoxelGrid grid;
+  size_t data_start = 0, bytes = 0;  // where the samples begin, and how many bytes they take
+  int bits = 0;
+  bool is_float = false, is_unsigned = false, swap = false;
+};
+
+InrHeader parse_header(std::istream& in, const std::string& path) {
   // Header: whole 256-byte blocks until one ends with "##}\n".
   std::string header;
   char block[256];
@@ -55,7 +63,10 @@ VoxelGrid parse_inr(std::istream& in, const std::string& path) {
   while (std::getline(hs, line)) {
     const auto eq = line.find('=');
     if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
-    kv[line.substr(0, eq)] = line.substr(eq + 1);
+    const auto [it, fresh] = kv.try_emplace(line.substr(0, eq), line.substr(eq + 1));
+    if (!fresh)  // which one counts is not the reader's to guess
+      throw InputError(path, "header " + it->first,
+                       "is given twice ('" + it->second + "' and '" + line.substr(eq + 1) + "')");
   }
   auto integer = [&](const char* key, long def, bool required) {
     auto it = kv.find(key);
@@ -107,24 +118,36 @@ VoxelGrid parse_inr(std::istream& in, const std::string& path) {
     throw InputError(path, "header CPU", "'" + cpu + "' is not decm, pc, alpha, sun or sgi");
   const bool swap = little != host_is_little();
 
-  const size_t n = g.num_voxels(), bytes = n * (bits / 8);
-  // Check the size before allocating: a lying header must not exhaust memory.
-  const std::streamoff data_start = in.tellg();
-  in.seekg(0, std::ios::end);
-  const std::streamoff available = in.tellg() - data_start;
-  in.seekg(data_start);
-  if (available < static_cast<std::streamoff>(bytes))
-    throw InputError(path, "voxel " + std::to_string(available / (bits / 8)),
-                     "file ends early: the header promises " + std::to_string(n) + " voxels of " +
-                         std::to_string(bits) + " bits");
-  std::vector<unsigned char> raw(bytes);
-  in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(bytes));
-  if (static_cast<size_t>(in.gcount()) != bytes)
-    throw InputError(path, "voxel " + std::to_string(in.gcount() / (bits / 8)),
-                     "file ends early: the header promises " + std::to_string(n) + " voxels of " +
-                         std::to_string(bits) + " bits");
+  InrHeader h;
+  h.data_start = static_cast<size_t>(in.tellg());
+  h.bytes = g.num_voxels() * size_t(bits / 8);
+  h.bits = bits;
+  h.is_float = is_float;
+  h.is_unsigned = is_unsigned;
+  h.swap = swap;
+  h.grid = std::move(g);
+  return h;
+}
+
+// The samples must fill the file after the header exactly: fewer is a cut file, more means
+// the header's dimensions are not the data's (a volume read as part of itself).
+void check_data_size(const InrHeader& h, size_t available, const std::string& path) {
+  const size_t each = size_t(h.bits / 8);
+  const std::string promise = "the header promises " + std::to_string(h.grid.num_voxels()) + " voxels of " +
+                              std::to_string(h.bits) + " bits";
+  if (available < h.bytes)
+    throw InputError(path, "voxel " + std::to_string(available / each), "file ends early: " + promise);
+  if (available > h.bytes)
+    throw InputError(path, "data", promise + " (" + std::to_string(h.bytes) +
+                                       " bytes), but more data follows them (dimensions not the data's?)");
+}
+
+VoxelGrid decode(InrHeader h, const unsigned char* p, const std::string& path) {
+  VoxelGrid g = std::move(h.grid);
+  const size_t n = g.num_voxels();
+  const int bits = h.bits;
+  const bool is_float = h.is_float, is_unsigned = h.is_unsigned, swap = h.swap;
   g.values.resize(n);
-  const unsigned char* p = raw.data();
   for (size_t i = 0; i < n; ++i) {
     double v;
     if (is_float)
@@ -136,6 +159,8 @@ VoxelGrid parse_inr(std::istream& in, const std::string& path) {
     else
       v = is_unsigned ? double(load<uint32_t>(p + 4 * i, swap)) : double(load<int32_t>(p + 4 * i, swap));
     g.values[i] = static_cast<float>(v);
+    if (std::isfinite(v) && !std::isfinite(g.values[i]))  // a 64-bit float beyond float's range
+      throw InputError(path, "voxel " + std::to_string(i), "value " + short_number(v) + " does not fit a 32-bit float");
   }
   return g;
 }
@@ -144,12 +169,31 @@ VoxelGrid parse_inr(std::istream& in, const std::string& path) {
 VoxelGrid read_inr(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "file", std::string("cannot be opened: ") + std::strerror(errno));
-  return parse_inr(in, path);
+  InrHeader h = parse_header(in, path);
+  // Check the size before allocating: a lying header must not exhaust memory.
+  in.seekg(0, std::ios::end);
+  const size_t available = static_cast<size_t>(in.tellg()) - h.data_start;
+  check_data_size(h, available, path);
+  in.seekg(static_cast<std::streamoff>(h.data_start));
+  std::vector<unsigned char> raw(h.bytes);
+  in.read(reinterpret_cast<char*>(raw.data()), static_cast<std::streamsize>(h.bytes));
+  if (static_cast<size_t>(in.gcount()) != h.bytes) check_data_size(h, size_t(in.gcount()), path);
+  return decode(std::move(h), raw.data(), path);
 }
 
 VoxelGrid read_inr_gz(const std::string& path) {
-  std::istringstream in(gunzip_file(path));
-  return parse_inr(in, path);
+  // The header first (at most 1 MB), then only as many inflated bytes as it promises, and
+  // one more: a small file inflating to far more than its header says is refused, not held.
+  constexpr size_t kHeaderMost = (size_t(1) << 20) + 256;
+  std::string text = gunzip_file(path, kHeaderMost);
+  InrHeader h;
+  {
+    std::istringstream in(text);
+    h = parse_header(in, path);
+  }
+  if (text.size() > kHeaderMost) text = gunzip_file(path, h.data_start + h.bytes);
+  check_data_size(h, text.size() - h.data_start, path);
+  return decode(std::move(h), reinterpret_cast<const unsigned char*>(text.data()) + h.data_start, path);
 }
 
 }  // namespace vob

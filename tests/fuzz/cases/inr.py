@@ -1,6 +1,9 @@
 """Fuzz cases for the .inr (INRIMAGE-4) reader: mutations of one valid 2x2x2 unsigned
 8-bit volume."""
 
+import gzip
+import struct
+
 from fuzz_helpers import check_cases
 
 READER = "inr"
@@ -54,5 +57,17 @@ def cases(work):
                           "CPU": "decm"}, data=b"\x00\x00\xc0\x7f\x00\x00\x80\x3f"),
         "garbage": bytes((i * 13 + 17) % 256 for i in range(700)),
         "empty": b"",
+        # Data the header does not describe (a 2x2x2 header on a longer volume), a key given
+        # twice, a volume of no voxel above 0, a double beyond float's range.
+        "data-longer-than-dims": inr(data=bytes(range(1, 17))),
+        "xdim-twice": inr({"XDIM": "2", "YDIM": "2", "ZDIM": "2", "TYPE": "unsigned fixed", "PIXSIZE": "8 bits"})
+        .replace(b"XDIM=2\n", b"XDIM=2\nXDIM=1\n", 1),
+        "all-zero": inr(data=bytes(8)),
+        "float64-overflow": inr({"XDIM": "2", "YDIM": "1", "ZDIM": "1", "TYPE": "float", "PIXSIZE": "64 bits"},
+                                data=struct.pack("<2d", 1.0, 1e300)),
     })
-    return check_cases(files, "inr", "distance-sort")
+    out = check_cases(files, "inr", "distance-sort")
+    # .inr.gz: inflated only as far as the header promises; more is refused, not held.
+    gz = {"gz-data-longer-than-dims": gzip.compress(inr(data=bytes(range(1, 9)) + bytes(1 << 20))),
+          "gz-all-zero": gzip.compress(inr(data=bytes(8)))}
+    return out + check_cases(gz, "inr.gz", "distance-sort")
