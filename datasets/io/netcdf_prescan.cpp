@@ -44,7 +44,7 @@ class HeaderWalk {
     const uint64_t vars = list(kVariable, "variable list", 24);
     for (uint64_t i = 0; i < vars; ++i) {
       const std::string where = "variable " + std::to_string(i);
-      name(where);
+      const std::string var_name = name(where);
       const uint64_t rank = count(where + " dimension count", big(), 4);
       bool record = false;
       for (uint64_t k = 0; k < rank; ++k) {
@@ -58,6 +58,12 @@ class HeaderWalk {
       type(where);
       const uint64_t vsize = big();
       const uint64_t begin = version_ == 1 ? u32() : u64();  // 32-bit offsets in CDF-1 only
+      // A fixed-size variable's data lies whole inside the file (netCDF pads a closed file
+      // to it); the library reads what lies past a cut file as fill values, silently.
+      if (!record && !(version_ != 5 && vsize == 0xFFFFFFFFu) && begin + vsize > file_size_)
+        throw InputError(path_, where + " (" + var_name + ")",
+                         "its " + std::to_string(vsize) + " bytes at offset " + std::to_string(begin) +
+                             " end past the file's " + std::to_string(file_size_) + " bytes (the file is cut)");
       if (record) {
         ++records.vars;
         records.size += vsize;
@@ -117,13 +123,19 @@ class HeaderWalk {
                                          " (or an absent list) belongs");
     return count(where, n, min_bytes);
   }
-  void name(const std::string& where) {
+  std::string name(const std::string& where) {
     const uint64_t n = big();
     if (n == 0 || n > kMaxName)
       throw InputError(path_, where, "name of " + std::to_string(n) + " bytes (1 to " + std::to_string(kMaxName) + ")");
     const uint64_t padded = (n + 3) / 4 * 4;
     need(padded, where);
+    std::string out;  // printable only: it goes into a message line
+    for (uint64_t k = 0; k < n; ++k) {
+      const unsigned char c = b_[at_ + k];
+      out += c >= 32 && c < 127 ? char(c) : '?';
+    }
     at_ += padded;
+    return out;
   }
   uint64_t type(const std::string& where) {
     const uint32_t t = u32();

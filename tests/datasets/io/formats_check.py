@@ -15,6 +15,7 @@ import pathlib
 import re
 import shutil
 import subprocess
+import struct
 import sys
 
 vobench, maker, geo, work = sys.argv[1], sys.argv[2], pathlib.Path(sys.argv[3]), pathlib.Path(sys.argv[4])
@@ -154,6 +155,68 @@ for name in names:
         failures.append(f"bad/{name}: expected exit 2 and one line, got {r.returncode} {err} {r.stdout!r}")
     elif ".vtu" not in err[0] and name not in err[0]:
         failures.append(f"bad/{name}: the line does not name the file: {err[0]}")
+
+
+
+def fixed_data_end(b):
+    """End of the last fixed-size (non-record) variable's data in a netCDF classic file
+    (CDF-1 or CDF-2): a file cut before it lost data libnetcdf would read as fill values."""
+    at, wide = 4, b[3] == 2
+
+    def u32():
+        nonlocal at
+        at += 4
+        return struct.unpack(">I", b[at - 4:at])[0]
+
+    def name():
+        nonlocal at
+        n = u32()
+        at += (n + 3) // 4 * 4
+
+    def attributes():
+        nonlocal at
+        u32()
+        for _ in range(u32()):
+            name()
+            typ = u32()
+            values = u32()
+            at += (values * {1: 1, 2: 1, 3: 2, 4: 4, 5: 4, 6: 8}[typ] + 3) // 4 * 4
+
+    u32()  # numrecs
+    u32()  # the dimension list's tag
+    dims = u32()
+    record_dim = None
+    for i in range(dims):
+        name()
+        if u32() == 0:
+            record_dim = i
+    attributes()
+    u32()
+    end = 0
+    for _ in range(u32()):
+        name()
+        ids = [u32() for _ in range(u32())]
+        attributes()
+        u32()
+        vsize = u32()
+        begin = (u32() << 32 | u32()) if wide else u32()
+        if not ids or ids[0] != record_dim:
+            end = max(end, begin + vsize)
+    return end
+
+
+# An Exodus file cut inside its fixed-size data (names, coordinates, connectivity) is cut,
+# not read with zeros in place of what is missing.
+zoo = data["zoo.exo"]
+fixed_end = fixed_data_end(zoo)
+for short in (1, 100):
+    name = f"cut-{short}-before-records.exo"
+    (bad / name).write_bytes(zoo[:fixed_end - short])
+    r = run([vobench, "check", "-a", "sxmpvo", "-i", bad / name, "--views", "1", "--size", "32x32"])
+    err = r.stderr.strip().splitlines()
+    print(f"bad/{name} (fixed data ends at {fixed_end} of {len(zoo)} bytes): exit {r.returncode}: {err}")
+    if r.returncode != 2 or len(err) != 1 or "file is cut" not in err[0]:
+        failures.append(f"bad/{name}: expected exit 2 and one line saying the file is cut, got {r.returncode} {err}")
 
 for f in failures:
     print("FAIL:", f)

@@ -132,4 +132,10 @@ def cases(work):
         "first-block-count-dimension-renamed": exodus_file(bad=1, count="num_el_rn_blk1"),
         "record-count-past-the-file": exodus_file(numrecs=0x7FFFFFF0),
     }
+    # Cut inside its fixed-size variables (coordinates, connectivity, names): libnetcdf read
+    # the missing bytes as fill values and the mesh or its variable names changed silently.
+    whole = exodus_file()
+    for cut in (4, 16, 64):
+        files[f"cut-{cut}-bytes-short"] = whole[:-cut]
+
     return check_cases(files, "exo", "mpvo")
