@@ -2,17 +2,22 @@
 
 #include <stdlib.h>
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 #include <regex>
 #include <unordered_map>
+#include <vector>
 
 #include "datasets/io/data_cache.h"
 #include "datasets/io/off_io.h"
 #include "datasets/io/subprocess.h"
 #include "datasets/io/tetgen_files.h"
+#include "harness/geometry/predicates.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
@@ -127,9 +132,56 @@ void check_closed_surface(const TriangleSoup& s, const std::string& source) {
                          ": the surface is not closed (TetGen needs a closed surface)");
 }
 
+void check_encloses_volume(const TriangleSoup& s, const std::string& source) {
+  // A triangle given twice: the same three points in any order.
+  std::vector<std::pair<std::array<int32_t, 3>, size_t>> sorted(s.tris.size());
+  for (size_t t = 0; t < s.tris.size(); ++t) {
+    std::array<int32_t, 3> k = s.tris[t];
+    std::sort(k.begin(), k.end());
+    sorted[t] = {k, t};
+  }
+  std::sort(sorted.begin(), sorted.end());
+  for (size_t i = 1; i < sorted.size(); ++i)
+    if (sorted[i].first == sorted[i - 1].first)
+      throw InputError(source, "triangles " + std::to_string(sorted[i - 1].second) + " and " + std::to_string(sorted[i].second),
+                       "have the same three points: a surface around a volume holds each triangle once "
+                       "(TetGen cannot mesh it)");
+  // Connected pieces (triangles sharing a point), each against the plane of its first triangle.
+  std::vector<int32_t> parent(s.points.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int32_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& t : s.tris)
+    for (int e = 1; e < 3; ++e) {
+      const int32_t a = root(t[0]), b = root(t[e]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::unordered_map<int32_t, size_t> first;  // piece root -> its first triangle
+  std::vector<size_t> pieces;                 // first triangles, in order
+  for (size_t t = 0; t < s.tris.size(); ++t)
+    if (first.emplace(root(s.tris[t][0]), t).second) pieces.push_back(t);
+  std::unordered_map<int32_t, bool> off_plane;
+  for (const auto& t : s.tris) {
+    const int32_t r = root(t[0]);
+    bool& off = off_plane[r];
+    if (off) continue;
+    const auto& p = s.tris[first[r]];
+    for (int32_t v : t)
+      if (orient3d(s.points[p[0]], s.points[p[1]], s.points[p[2]], s.points[v]) != 0) off = true;
+  }
+  for (size_t t : pieces)
+    if (!off_plane[root(s.tris[t][0])])
+      throw InputError(source, pieces.size() == 1 ? std::string("surface") : "the piece with triangle " + std::to_string(t),
+                       "all its points lie in one plane: it encloses no volume (TetGen needs a closed surface "
+                       "around a volume)");
+}
+
 CellMesh tetrahedralize_surface(const TriangleSoup& surface, const std::string& source,
                                 const std::string& switches, const std::string& cache_key) {
   const std::string sw = checked_switches(switches, source);
+  check_encloses_volume(surface, source);
   std::error_code ec;
   if (!cache_key.empty()) {
     const std::string parent = cache_dir() + "/tetgen";

@@ -16,6 +16,13 @@ constexpr const char* kDefaultTetgenSwitches = "pq1.414";
 // (an open or non-manifold border): TetGen needs a closed surface.
 void check_closed_surface(const TriangleSoup& s, const std::string& source);
 
+// InputError unless every connected piece of the surface can bound a volume: a piece whose
+// points all lie in one plane (exactly), or a triangle given twice (same three points), encloses
+// none, and TetGen 1.5 aborts on such input (`Assertion 'maxz > 0'` for a piece flat in an axis,
+// SIGSEGV for a doubled triangle, a bogus self-intersection for a tilted flat one). Checked by
+// tetrahedralize_surface before TetGen runs.
+void check_encloses_volume(const TriangleSoup& s, const std::string& source);
+
 // Runs `tetgen -<switches> surface.off` and reads its .node/.ele. Switches must hold 'p'
 // (mesh the surface) and must not hold d, r, N, E, I, o (no tetrahedra, other files or 10-node output). With a
 // non-empty cache_key the result is kept in cache_dir()/tetgen/<key>-<hash of switches>

@@ -96,3 +96,36 @@ TEST(DatasetIO, TetgenSwitchesReachTheMesh) {
   EXPECT_TRUE(contains(input_error([&] { load_input(dir.file("cube.off"), opt); }),
                        "cube.off: tetgen switches 'po2': 'o' is not allowed"));
 }
+
+// Closed surfaces around no volume: TetGen 1.5 aborted on each (`Assertion 'maxz > 0'` for the
+// flat one in z = 0, SIGSEGV for a doubled triangle, a bogus self-intersection for the tilted
+// one); they are refused before it runs.
+TEST(DatasetIO, TetgenIsNotGivenSurfacesAroundNoVolume) {
+  TempDir dir;
+  InputOptions opt;
+  opt.tetrahedralize = true;
+  const auto refused = [&](const char* name, const std::string& text) {
+    write_text(dir.file(name), text);
+    const std::string e = input_error([&] { load_input(dir.file(name), opt); });
+    std::printf("%s\n", e.c_str());
+    return e;
+  };
+  const char* flat_faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  std::string e = refused("flat.off", std::string("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0.2 0.2 0\n") + flat_faces);
+  EXPECT_TRUE(contains(e, "flat.off: surface: all its points lie in one plane: it encloses no volume")) << e;
+  e = refused("tilted.off", std::string("OFF\n4 4 0\n0 0 0\n1 0 1\n0 1 1\n0.2 0.2 0.4\n") + flat_faces);
+  EXPECT_TRUE(contains(e, "tilted.off: surface: all its points lie in one plane")) << e;
+  e = refused("double.off", "OFF\n3 2 0\n0 0 0\n1 0 1\n0 1 1\n3 0 1 2\n3 0 2 1\n");
+  EXPECT_TRUE(contains(e, "double.off: triangles 0 and 1: have the same three points")) << e;
+  // A cube beside a flat piece: the piece is named by its first triangle.
+  std::string cube_and_flat = kCube;
+  cube_and_flat.replace(cube_and_flat.find("8 12 0"), 6, "12 16 0");
+  const size_t faces_at = cube_and_flat.find("3 0 2 1");
+  cube_and_flat.insert(faces_at, "5 5 5\n6 5 5\n5 6 5\n5.2 5.2 5\n");
+  cube_and_flat += "3 8 10 9\n3 8 9 11\n3 8 11 10\n3 9 10 11\n";
+  e = refused("cube_and_flat.off", cube_and_flat);
+  EXPECT_TRUE(contains(e, "cube_and_flat.off: the piece with triangle 12: all its points lie in one plane")) << e;
+  // The cube alone still meshes.
+  write_text(dir.file("cube.off"), kCube);
+  EXPECT_GE(load_input(dir.file("cube.off"), opt).mesh().num_cells(), 5u);
+}
