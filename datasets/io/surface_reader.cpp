@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "datasets/io/file_util.h"
+#include "datasets/io/obj_prescan.h"
 #include "datasets/io/ply_prescan.h"
 #include "datasets/io/vtk_shared.h"
 
@@ -77,6 +78,7 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
     prescan_ply(path);
     pd = read_with<vtkPLYReader>(path);
   } else if (ext == ".obj") {
+    prescan_obj(path);
     pd = read_with<vtkOBJReader>(path);
   } else {
     throw InputError(path, "file", "not a surface extension (.stl .ply .obj)");

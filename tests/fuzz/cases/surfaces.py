@@ -94,10 +94,31 @@ def cases(work):
         "no-faces": obj(faces=[]),
         "empty": b"",
         "garbage": bytes((i * 67 + 1) % 256 for i in range(1200)),
+        # Read by VTK's OBJ reader as another surface (or crashing it) before the prescan.
+        "two-coordinates": obj(pts=PTS[:3] + [(0, 0)]),
+        "overflow": obj(pts=PTS[:3] + [(0, 0, "1e400")]),
+        "junk-index": obj().replace(b"f 1 4 3", b"f 1 4 3x"),
+        "zero-index": obj(faces=FACES[:3] + [(0, 3, -1)]),
+        "relative-before-first": obj().replace(b"f 1 4 3", b"f 1 4 -9"),
+        "huge-index": obj().replace(b"f 1 4 3", b"f 1 4 99999999999"),
     }
+    # VTK fails on these by itself; the prescan names them (each line: line number and reason).
+    objs.update({"long-line": obj() + b"f 1 2 " + b" " * 300000 + b"3\n", "comment-in-face": obj() + b"f 1 2 3 # c\n"})
     out += check_cases({"obj-" + k: v for k, v in objs.items()}, "obj", "triangle-centroid")
+    # The prescan names a line: these read silently wrong or crashed without it.
+    for c in check_cases({"obj-vt-segv": (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                          b"f 1/1 3/2 2/3\nf 1/1 2/2 4/3\nf 1/1 4/2 3/3\nf 2/1 3/2 4/3\n")},
+                         "obj", "triangle-centroid"):
+        c["names"] = "obj-vt-segv.obj: line 5: texture coordinate index 3 is out of range"
+        out.append(c)
     # --tetrahedralize on an open surface (one face missing)
     for c in check_cases({"open-tet": stl_ascii(faces=FACES[:3])}, "stl", "mpvo"):
         c["argv"].append("--tetrahedralize")
+        out.append(c)
+    # ... and on closed surfaces around no volume: TetGen aborted on each (signal 6 or 11).
+    flat = [(0, 0, 0), (1, 0, 0), (0, 1, 0), (0.2, 0.2, 0)]
+    for c in check_cases({"flat-tet": obj(pts=flat), "doubled-tet": obj(faces=[(0, 1, 3), (0, 3, 1)])}, "obj", "mpvo"):
+        c["argv"].append("--tetrahedralize")
+        c["names"] += ": surface: all its points lie in one plane" if c["name"] == "flat-tet" else ": triangles 0 and 1: have the same"
         out.append(c)
     return out
