@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "datasets/io/file_util.h"
 #include "datasets/io/text_lines.h"
@@ -41,6 +42,7 @@ TriangleSoup read_off(const std::string& path) {
     in.need(3, el, "3 coordinates");
     s.points.push_back({in.number(0, el), in.number(1, el), in.number(2, el)});
   }
+  std::vector<int32_t> ids;
   for (int64_t f = 0; f < nf; ++f) {
     const std::string el = "face " + std::to_string(f);
     if (!in.next())
@@ -49,16 +51,14 @@ TriangleSoup read_off(const std::string& path) {
     const int64_t n = in.integer(0, el);
     if (n < 3) in.fail(el, "has " + std::to_string(n) + " vertices; a face needs at least 3");
     in.need(1 + n, el, std::to_string(n) + " vertex indices after the count");
-    int32_t first = 0, prev = 0;
+    ids.clear();
     for (int64_t q = 0; q < n; ++q) {
       const int64_t v = in.integer(1 + q, el);
       if (v < 0 || v >= nv)
         in.fail(el, "vertex index " + std::to_string(v) + " is out of range [0, " + std::to_string(nv - 1) + "]");
-      const auto id = static_cast<int32_t>(v);
-      if (q == 0) first = id;
-      if (q >= 2) s.tris.push_back({first, prev, id});
-      prev = id;
+      ids.push_back(static_cast<int32_t>(v));
     }
+    append_polygon(s, ids.data(), ids.size(), path, in.where(el));
   }
   return s;
 }

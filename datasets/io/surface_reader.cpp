@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "datasets/io/file_util.h"
 #include "datasets/io/obj_prescan.h"
@@ -97,6 +98,7 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
   vtkCellArray* polys = pd->GetPolys();
   const auto iter = vtk::TakeSmartPointer(polys->NewIterator());
   vtkIdType face = 0;
+  std::vector<int32_t> ids32;
   for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++face) {
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
@@ -105,8 +107,8 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
     for (vtkIdType q = 0; q < n; ++q)
       if (ids[q] < 0 || ids[q] >= np)
         throw InputError(path, "face " + std::to_string(face), "vertex index " + std::to_string(ids[q]) + " is out of range");
-    for (vtkIdType q = 1; q + 1 < n; ++q)
-      s.tris.push_back({int32_t(ids[0]), int32_t(ids[q]), int32_t(ids[q + 1])});
+    ids32.assign(ids, ids + n);
+    append_polygon(s, ids32.data(), ids32.size(), path, "face " + std::to_string(face));
   }
   if (s.tris.empty()) throw InputError(path, "faces", "the file has no triangles or polygons");
   const vtkIdType other = pd->GetNumberOfVerts() + pd->GetNumberOfLines();

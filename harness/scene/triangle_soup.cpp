@@ -1,9 +1,63 @@
 #include "harness/scene/triangle_soup.h"
 
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "harness/geometry/polygon_plane.h"
 #include "harness/scene/coordinates.h"
 #include "harness/scene/input_error.h"
 
 namespace vob {
+
+void append_polygon(TriangleSoup& s, const int32_t* ids, size_t n, const std::string& source,
+                    const std::string& element) {
+  if (n > 3) {
+    std::vector<Vec3> v(n);
+    bool finite = true;
+    Aabb box;
+    for (size_t q = 0; q < n; ++q) {
+      v[q] = s.points[ids[q]];
+      finite = finite && std::isfinite(v[q].x) && std::isfinite(v[q].y) && std::isfinite(v[q].z);
+      box.add(v[q]);
+    }
+    if (finite) {
+      const PolygonPlane plane = newell_plane(v.data(), int(n));
+      const double area2 = std::sqrt(dot(plane.normal, plane.normal));  // twice the area
+      const Vec3 d = box.hi - box.lo;
+      const double size = std::sqrt(dot(d, d));
+      const auto fail = [&](const std::string& why) {
+        throw InputError(source, element, "polygon of " + std::to_string(n) + " points " + why);
+      };
+      const auto corners = [&](size_t q) {  // fan triangle q: its corners and their points
+        return "(corners 0, " + std::to_string(q) + ", " + std::to_string(q + 1) + ": points " + std::to_string(ids[0]) +
+               ", " + std::to_string(ids[q]) + ", " + std::to_string(ids[q + 1]) + ")";
+      };
+      if (!(area2 > 0)) fail("has zero area (degenerate)");
+      double worst = 0;
+      size_t worst_q = 0;
+      for (size_t q = 0; q < n; ++q) {
+        const double off = std::abs(dot(v[q] - plane.centroid, plane.normal)) / area2;
+        if (off > worst) worst = off, worst_q = q;
+      }
+      if (worst > kPolygonPlanarity * size) {
+        char text[160];
+        std::snprintf(text, sizeof text, "is not planar: its corner %zu (point %d) lies %.3g off its plane (%.2g of its size; at most %g)",
+                      worst_q, ids[worst_q], worst, worst / size, kPolygonPlanarity);
+        fail(text + std::string(": give it as triangles"));
+      }
+      for (size_t q = 1; q + 1 < n; ++q) {
+        const Vec3 t = cross(v[q] - v[0], v[q + 1] - v[0]);
+        if (dot(t, t) == 0)
+          fail("has its fan triangle " + corners(q) + " on a line: zero area; give it as triangles");
+        if (!(dot(t, plane.normal) > 0))
+          fail("is not convex: its fan triangle " + corners(q) + " faces against the polygon and lies outside it; "
+               "give it as triangles");
+      }
+    }
+  }
+  for (size_t q = 1; q + 1 < n; ++q) s.tris.push_back({ids[0], ids[q], ids[q + 1]});
+}
 
 void validate_triangle_soup(const TriangleSoup& s, const std::string& source) {
   if (s.tris.empty()) throw InputError(source, "triangles", "the surface has no triangles");

@@ -22,6 +22,16 @@ struct TriangleSoup {
   size_t bytes() const { return points.capacity() * sizeof(Vec3) + tris.capacity() * 12; }
 };
 
+// Appends a polygon of n >= 3 points (ids in range) as the fan (ids[0], ids[q], ids[q+1]).
+// A polygon of more than 3 points must be split so without leaving it: every point within
+// kPolygonPlanarity of its size (its bounding box's diagonal) off the plane through its mean
+// with its Newell normal, and every fan triangle facing the way of that normal (a fan from a
+// reflex corner's wrong side covers ground outside the polygon, an L-shape for one). Points
+// not finite are left to validate_triangle_soup. InputError naming `element` else.
+inline constexpr double kPolygonPlanarity = 1e-6;  // above float rounding (6e-8), as VTK reads
+void append_polygon(TriangleSoup& soup, const int32_t* ids, size_t n, const std::string& source,
+                    const std::string& element);
+
 // Finite coordinates, indices in range, no zero-area triangle (exact test). InputError else.
 void validate_triangle_soup(const TriangleSoup& soup, const std::string& source);
 

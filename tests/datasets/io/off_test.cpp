@@ -38,3 +38,49 @@ TEST(DatasetIO, OffErrors) {
   EXPECT_EQ(load_input(dir.file("q.off")).soup().tris,
             (std::vector<std::array<int32_t, 3>>{{0, 1, 2}, {0, 2, 3}}));
 }
+
+// Polygons are fan-split from their first point: an L-shape fanned from its reflex corner's
+// wrong side covered ground outside it, and a warped quad became one of its two splits,
+// silently, in every surface format. Both are refused; a planar convex polygon whose points
+// carry float rounding still reads.
+TEST(DatasetIO, PolygonsAreFanSplitOnlyInsideThemselves) {
+  TempDir dir;
+  const std::string l_points[] = {"0 0 0", "2 0 0", "2 1 0", "1 1 0", "1 2 0", "0 2 0"};
+  const auto write_all = [&](const std::string& stem, const std::vector<std::string>& pts, const std::vector<int>& face) {
+    std::string off = "OFF\n" + std::to_string(pts.size()) + " 1 0\n", obj, ply;
+    ply = "ply\nformat ascii 1.0\nelement vertex " + std::to_string(pts.size()) +
+          "\nproperty float x\nproperty float y\nproperty float z\nelement face 1\n"
+          "property list uchar int vertex_indices\nend_header\n";
+    for (const std::string& p : pts) {  // appended: GCC 12 warns (-Wrestrict) on "v " + p
+      off.append(p).append("\n");
+      obj.append("v ").append(p).append("\n");
+      ply.append(p).append("\n");
+    }
+    off += std::to_string(face.size()), obj += "f", ply += std::to_string(face.size());
+    for (int i : face) {
+      off.append(" ").append(std::to_string(i));
+      obj.append(" ").append(std::to_string(i + 1));
+      ply.append(" ").append(std::to_string(i));
+    }
+    write_text(dir.file(stem + ".off"), off + "\n");
+    write_text(dir.file(stem + ".obj"), obj + "\n");
+    write_text(dir.file(stem + ".ply"), ply + "\n");
+  };
+  const std::vector<std::string> L(std::begin(l_points), std::end(l_points));
+  write_all("concave", L, {2, 3, 4, 5, 0, 1});  // fanned from (2,1,0): triangle (2,3,4) lies outside
+  write_all("convex_start", L, {3, 4, 5, 0, 1, 2});  // the same L fanned from its reflex corner: inside
+  write_all("warped", {"0 0 0", "1 0 0", "1 1 1", "0 1 0"}, {0, 1, 2, 3});
+  write_all("tilted", {"0.1234567 0.7654321 0.3333333", "1.2345678 0.1111111 1.4444444", "1.6666667 1.5555556 2.0555556",
+                       "0.5555556 2.2098766 0.9444444"}, {0, 1, 2, 3});  // a parallelogram, rounded to 7 digits
+  for (const char* ext : {".off", ".obj", ".ply"}) {
+    std::string e = input_error([&] { load_input(dir.file(std::string("concave") + ext)); });
+    EXPECT_TRUE(contains(e, "polygon of 6 points is not convex: its fan triangle (corners 0, 1, 2: points 2, 3, 4) "
+                            "faces against the polygon")) << e;
+    EXPECT_TRUE(contains(e, std::string("concave") + ext + ": face 0")) << e;
+    e = input_error([&] { load_input(dir.file(std::string("warped") + ext)); });
+    EXPECT_TRUE(contains(e, "face 0")) << e;
+    EXPECT_TRUE(contains(e, "polygon of 4 points is not planar: its corner 0 (point 0) lies 0.204 off its plane")) << e;
+    EXPECT_EQ(load_input(dir.file(std::string("convex_start") + ext)).soup().tris.size(), 4u) << ext;
+    EXPECT_EQ(load_input(dir.file(std::string("tilted") + ext)).soup().tris.size(), 2u) << ext;
+  }
+}
