@@ -279,6 +279,16 @@ double extent_points(const std::string& path, const std::string& element, const 
   }
   return n;
 }
+
+// An image's point or cell array must hold one tuple per point or cell of its Piece's
+// extent: VTK read 10 ASCII values into 8 points and ignored the rest, silently.
+void check_image_values(const std::string& path, const std::string& element, const std::string& parent,
+                        double held, double want, const char* what) {
+  if (held != want)
+    throw InputError(path, element, "holds " + std::to_string(uint64_t(held)) + " " + what + ", but its Piece's extent has " +
+                                        std::to_string(uint64_t(want)) + " (" +
+                                        (parent == "PointData" ? "points" : "cells") + " times components)");
+}
 }  // namespace
 
 void prescan_vtk_xml(const std::string& path, const std::string& expected_type) {
@@ -291,6 +301,16 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
   size_t i = 0;
   BinaryLayout layout;
   int64_t piece_cells = -1;  // the current Piece's NumberOfCells
+  // ImageData: the WholeExtent's text and the current Piece's point and cell counts.
+  std::string whole_extent;
+  double image_points = -1, image_cells = -1;
+  // Values a PointData or CellData array of the current image Piece must hold; -1: not one.
+  const auto image_values = [&](const std::string& parent, uint64_t comps) {
+    if (expected_type != "ImageData" || image_points < 0) return -1.0;
+    if (parent == "PointData") return image_points * double(comps);
+    if (parent == "CellData") return image_cells * double(comps);
+    return -1.0;
+  };
   bool in_cells = false;
   std::vector<std::string> open;        // the open tags' names (errors name an array's parent)
   std::vector<AppendedArray> appended;  // arrays in <AppendedData>, checked after the tags
@@ -360,11 +380,15 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
       } else if (f->second == "ascii") {
         if (in_cells && (name == "connectivity" || name == "offsets")) check_ascii_byte_range(path, name, type, data);
         if (counted) check_ascii_cells(path, name, data, uint64_t(piece_cells));
+        if (const double want = image_values(parent, comps); want >= 0)
+          check_image_values(path, element, parent, double(split(data).size()), want, "values");
       } else if (f->second == "binary") {
         const std::string head = base64_head(data, 3 * layout.word);
         check_data_header(path, element, head, layout, base64_room(data.size()));
         uint64_t held = 0;
         if (counted && data_bytes(head, layout, held)) check_cell_count(path, name, held / each, uint64_t(piece_cells));
+        if (const double want = image_values(parent, comps); want >= 0 && each > 0 && data_bytes(head, layout, held))
+          check_image_values(path, element, parent, double(held / each), want, "values (by its header)");
       } else if (f->second == "appended" && tag.attrs.count("offset")) {
         int64_t offset = 0;
         if (parse_int(tag.attrs.at("offset"), offset) && offset >= 0)
@@ -381,6 +405,29 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
                                         extent_points(path, tag.name + " " + ext, a->second) > budget)
         throw InputError(path, tag.name + " " + ext,
                          "'" + a->second + "' promises more points than a file of this size can hold");
+      // An image is read as one piece covering the WholeExtent: VTK read a Piece with another
+      // Extent without a word (its values placed in the whole extent's grid).
+      if (expected_type == "ImageData" && tag.attrs.count(ext)) {
+        const auto ints = [](const std::string& t) {
+          std::vector<int64_t> v;
+          for (const std::string_view w : split(t)) parse_int(w, v.emplace_back());
+          return v;
+        };
+        if (tag.name == "ImageData") {
+          whole_extent = tag.attrs.at(ext);
+        } else if (parent == "ImageData") {
+          if (!whole_extent.empty() && ints(tag.attrs.at(ext)) != ints(whole_extent))
+            throw InputError(path, "Piece Extent", "'" + tag.attrs.at(ext) + "' is not the WholeExtent '" + whole_extent +
+                                                       "' (an image is read as one piece covering its whole extent)");
+          const auto e = ints(tag.attrs.at(ext));
+          image_points = image_cells = 1;
+          for (int a = 0; a < 3; ++a) {
+            const double n = double(e[2 * a + 1] - e[2 * a] + 1);
+            image_points *= n;
+            image_cells *= n > 1 ? n - 1 : 1;
+          }
+        }
+      }
     }
   }
   if (!appended.empty()) check_appended(path, text.size(), layout, appended);

@@ -203,3 +203,28 @@ TEST(DatasetIO, VtuDataHeadersBeyondTheFileAreRefused) {
                           "but only "))
       << e;
 }
+
+// A .vti image is one piece over its WholeExtent, each point (cell) array one tuple per point
+// (cell): VTK read 10 ASCII values into 8 points and a Piece Extent of 12 points under a
+// WholeExtent of 8, both silently.
+TEST(DatasetIO, VtiArraysAndPieceMatchTheExtent) {
+  TempDir dir;
+  const auto vti = [&](const char* name, const std::string& extent, const std::string& values,
+                       const std::string& data = "PointData") {
+    write_text(dir.file(name), "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+                               "<ImageData WholeExtent=\"0 1 0 1 0 1\" Origin=\"0 0 0\" Spacing=\"1 1 1\">\n"
+                               "<Piece Extent=\"" + extent + "\">\n<" + data + " Scalars=\"v\">\n"
+                               "<DataArray type=\"Float32\" Name=\"v\" format=\"ascii\">" + values + "</DataArray>\n</" +
+                               data + ">\n</Piece>\n</ImageData>\n</VTKFile>\n");
+    return dir.file(name);
+  };
+  EXPECT_EQ(load_input(vti("good.vti", "0 1 0 1 0 1", "1 2 3 4 5 6 7 8")).grid().num_voxels(), 8u);
+  std::string e = input_error([&] { load_input(vti("long.vti", "0 1 0 1 0 1", "1 2 3 4 5 6 7 8 9 10")); });
+  EXPECT_TRUE(contains(e, "long.vti: PointData DataArray 'v': holds 10 values, but its Piece's extent has 8")) << e;
+  e = input_error([&] { load_input(vti("short.vti", "0 1 0 1 0 1", "1 2 3 4 5 6 7")); });
+  EXPECT_TRUE(contains(e, "short.vti: PointData DataArray 'v': holds 7 values")) << e;
+  e = input_error([&] { load_input(vti("cells.vti", "0 1 0 1 0 1", "1 2", "CellData")); });
+  EXPECT_TRUE(contains(e, "cells.vti: CellData DataArray 'v': holds 2 values, but its Piece's extent has 1")) << e;
+  e = input_error([&] { load_input(vti("piece.vti", "0 1 0 1 0 2", "1 2 3 4 5 6 7 8")); });
+  EXPECT_TRUE(contains(e, "piece.vti: Piece Extent: '0 1 0 1 0 2' is not the WholeExtent '0 1 0 1 0 1'")) << e;
+}

@@ -37,6 +37,10 @@ def cases(work):
         "text-extent": vti(whole="0 1x 0 1 0 1"),
         "piece-outside-extent": vti(extent="0 5 0 1 0 1"),
         "short-values": vti(values="1 2 3"),
+        # VTK read both silently: values past the extent's points ignored, the Piece's extent
+        # placed in the whole one.
+        "long-values": vti(values="1 2 3 4 5 6 7 8 9 10"),
+        "piece-extent-not-whole": vti(extent="0 1 0 1 0 2", values="1 2 3 4 5 6 7 8 9 10 11 12"),
         "nan-value": vti(values="1 2 nan 4 5 6 7 8"),
         "text-value": vti(values="1 2 three 4 5 6 7 8"),
         "no-data": vti().replace(b'<PointData Scalars="v">', b"<!--").replace(b"</PointData>", b"-->"),
