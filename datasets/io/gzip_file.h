@@ -1,5 +1,7 @@
 // gzip files inflated whole with zlib. A file that is not gzip (zlib would pass it through
-// unchanged), a corrupt stream or a truncated one is one InputError line.
+// unchanged), a corrupt stream or a truncated one is one InputError line naming the member
+// and the compressed byte. Concatenated members are one stream (as gzip reads them); bytes
+// after the last member that do not start another are refused.
 #pragma once
 #include <string>
 

@@ -1,5 +1,10 @@
 // INRIMAGE volumes: header types, endianness and truncation.
 
+#include <zlib.h>
+
+#include <fstream>
+#include <iterator>
+
 #include "datasets/io/inr_reader.h"
 #include "tests/datasets/io/io_test_util.h"
 
@@ -33,4 +38,40 @@ TEST(DatasetIO, InrHeaderTypesAndEndianness) {
   write_text(dir.file("no.inr"), std::string(300, 'x'));
   e = input_error([&] { load_input(dir.file("no.inr")); });
   EXPECT_TRUE(contains(e, "no.inr: header: does not start with #INRIMAGE-4#{")) << e;
+}
+
+// .inr.gz through zlib's inflate: members concatenated read as one stream (as gzip reads
+// them); bytes after the last member were ignored by gzread (accepted), and a corrupt
+// member's message said "at byte 0" and repeated the path.
+TEST(DatasetIO, InrGzMembersAndWhatFollowsThem) {
+  TempDir dir;
+  std::string h = "#INRIMAGE-4#{\nXDIM=2\nYDIM=1\nZDIM=1\nTYPE=unsigned fixed\nPIXSIZE=8 bits\nCPU=decm\n";
+  h += std::string(252 - h.size(), '\n') + "##}\n";
+  const auto gz = [&](const std::string& text) {
+    const std::string tmp = dir.file("member.gz");
+    gzFile f = gzopen(tmp.c_str(), "wb");
+    gzwrite(f, text.data(), unsigned(text.size()));
+    gzclose(f);
+    std::ifstream in(tmp, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  write_text(dir.file("one.inr.gz"), gz(h + "\x03\x04"));
+  EXPECT_EQ(load_input(dir.file("one.inr.gz")).grid().values, (std::vector<float>{3, 4}));
+  write_text(dir.file("two.inr.gz"), gz(h + "\x03") + gz("\x04"));
+  EXPECT_EQ(load_input(dir.file("two.inr.gz")).grid().values, (std::vector<float>{3, 4}));
+  const std::string good = gz(h + "\x03\x04");
+  write_text(dir.file("junk.inr.gz"), good + "garbage!");
+  std::string e = input_error([&] { load_input(dir.file("junk.inr.gz")); });
+  EXPECT_TRUE(contains(e, "junk.inr.gz: gzip member 1: ends at byte " + std::to_string(good.size()) +
+                              " but 8 bytes follow it that are not another gzip member")) << e;
+  std::string bad = good;
+  bad[bad.size() - 6] ^= 0x5a;  // the CRC-32
+  write_text(dir.file("crc.inr.gz"), bad);
+  e = input_error([&] { load_input(dir.file("crc.inr.gz")); });
+  EXPECT_TRUE(contains(e, "crc.inr.gz: gzip member 1: corrupt near compressed byte")) << e;
+  EXPECT_TRUE(contains(e, "does not match the member's CRC-32")) << e;
+  EXPECT_EQ(e.find(dir.file("crc.inr.gz")), e.rfind(dir.file("crc.inr.gz"))) << e;  // the path once
+  write_text(dir.file("cut.inr.gz"), good.substr(0, good.size() - 3));
+  e = input_error([&] { load_input(dir.file("cut.inr.gz")); });
+  EXPECT_TRUE(contains(e, "cut.inr.gz: gzip member 1: file ends inside the compressed data")) << e;
 }
