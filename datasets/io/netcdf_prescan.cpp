@@ -77,8 +77,12 @@ class HeaderWalk {
  private:
   // The record count against the bytes the records can have: VTK's Exodus reader sizes its
   // time steps by a truncated count and the netCDF library reads them all (one changed
-  // byte of a CDF-5 count crashed it in ncx_getn_double_double). A last record written in
-  // part (no-fill mode) is allowed.
+  // byte of a CDF-5 count crashed it in ncx_getn_double_double). Then the last record must
+  // be whole: netCDF pads a file written in no-fill mode to its full size when it is closed
+  // (NC3_close, to NC_calcsize), and the library reads what lies past a cut file as zeros or
+  // fill values (a file cut inside its last record read a nodal variable as zeros). Up to 3
+  // bytes may be missing: the size NC_calcsize gives leaves out the padding of a lone record
+  // variable's odd-sized record, which the header's vsize counts.
   void check_numrecs(uint64_t numrecs, const RecordVars& r) const {
     const uint64_t streaming = version_ == 5 ? UINT64_MAX : 0xFFFFFFFFu;
     if (numrecs == streaming || r.vars == 0 || r.size == 0 || r.clamped) return;
@@ -87,6 +91,14 @@ class HeaderWalk {
       throw InputError(path_, "header", "record count " + std::to_string(numrecs) + " of " + std::to_string(r.size) +
                                             "-byte records cannot fit in the file's " +
                                             std::to_string(file_size_) + " bytes");
+    constexpr uint64_t kPadding = 3;
+    const uint64_t end = r.begin + numrecs * r.size;  // no overflow: numrecs <= room
+    if (numrecs > 0 && end > file_size_ + kPadding)
+      throw InputError(path_, "record " + std::to_string(numrecs - 1),
+                       "the last of " + std::to_string(numrecs) + " records of " + std::to_string(r.size) +
+                           " bytes ends at byte " + std::to_string(end) + ", past the file's " +
+                           std::to_string(file_size_) + " bytes (the file is cut; a closed netCDF file holds its "
+                           "records whole)");
   }
   uint32_t u32() {
     need(4, "header");
