@@ -2,6 +2,7 @@
 
 #include <cfloat>
 #include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -46,6 +47,8 @@ struct Walker {
   int64_t max_ref[3] = {0, 0, 0};
   int max_line[3] = {0, 0, 0};
   int face_form = -1, face_form_line = 0;  // the first face's form (bit 1: vt, bit 2: vn) and line
+  int64_t last_vertex = 0;                 // the last reference's vertex, resolved (1-based)
+  ObjFaces* faces = nullptr;               // filled when the faces carry texture or normal indices
 
   [[noreturn]] void fail(const std::string& reason) const {
     throw InputError(path, "line " + std::to_string(line), reason);
@@ -88,6 +91,7 @@ struct Walker {
       max_ref[k] = v;
       max_line[k] = line;
     }
+    if (k == 0) last_vertex = v < 0 ? counts[0] + v + 1 : v;
   }
 
   // A reference of a face, line or point: "v", "v/vt", "v/vt/vn" or "v//vn". Returns its form
@@ -141,8 +145,10 @@ struct Walker {
         fail(std::string(key == "f" ? "face" : key == "l" ? "line" : "point") + " statement has " + std::to_string(n - 1) +
              " references (at least " + std::to_string(min) + ")");
       int form = -1;
+      std::vector<int32_t> ids;
       for (size_t i = 1; i < n; ++i) {
         const int f = reference(w[i]);
+        ids.push_back(last_vertex > INT32_MAX ? -1 : int32_t(last_vertex - 1));  // past the vertices: refused below
         if (key == "p" && f != 0) fail(q(w[i]) + ": a point statement takes vertex indices only");
         if (key == "l" && (f & 2)) fail(q(w[i]) + ": a line statement takes no normals");
         if (form >= 0 && f != form)
@@ -157,6 +163,11 @@ struct Walker {
           fail(std::string("a face ") + ((form ^ face_form) & form ? "with " : "without ") + what + " after one " +
                ((form ^ face_form) & form ? "without" : "with") + " them on line " + std::to_string(face_form_line) +
                " (VTK's OBJ reader skips faces that differ so)");
+        }
+        if (form != 0) {
+          faces->corner_points = true;
+          faces->start.push_back(faces->vertex.size());
+          faces->vertex.insert(faces->vertex.end(), ids.begin(), ids.end());
         }
       }
     } else if (key == "g" || key == "o" || key == "s" || key == "usemtl" || key == "mtllib" || key == "usemap" ||
@@ -174,12 +185,14 @@ struct Walker {
 };
 }  // namespace
 
-void prescan_obj(const std::string& path) {
+ObjFaces prescan_obj(const std::string& path) {
+  ObjFaces faces;
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "file", "cannot be read");
   const std::string text((std::istreambuf_iterator<char>(in)), {});
   Walker w;
   w.path = path;
+  w.faces = &faces;
   std::string joined;  // a statement continued over lines ending in '\'
   int line_no = 0;
   size_t pos = 0;
@@ -220,6 +233,8 @@ void prescan_obj(const std::string& path) {
       throw InputError(path, "line " + std::to_string(w.max_line[k]),
                        std::string(names[k]) + " index " + std::to_string(w.max_ref[k]) + " is out of range (the file has " +
                            std::to_string(w.counts[k]) + " " + lists[k] + ")");
+  if (faces.corner_points) faces.start.push_back(faces.vertex.size());
+  return faces;
 }
 
 }  // namespace vob

@@ -14,11 +14,24 @@
 // references or all lack them (VTK skips the faces that differ); lines of at most 262,144 bytes (VTK's
 // limit); statements other than v vt vn f l p g o s usemtl mtllib and OBJ's display
 // attributes are refused. A `\` at a line's end continues the statement, as in VTK.
+//
+// VTK gives each face corner a point of its own when faces carry texture or normal indices
+// (unless those equal the vertex indices): its surface has no shared points, so a closed
+// file looked open. For such files the faces' vertex indices are returned, to share the
+// points again.
 #pragma once
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace vob {
 
-void prescan_obj(const std::string& path);
+struct ObjFaces {
+  bool corner_points = false;  // the faces carry texture or normal indices; then:
+  std::vector<size_t> start;    // face f's vertices: vertex[start[f] .. start[f + 1])
+  std::vector<int32_t> vertex;  // 0-based, negative ones resolved
+};
+
+ObjFaces prescan_obj(const std::string& path);
 
 }  // namespace vob

@@ -7,6 +7,7 @@
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 
+#include <algorithm>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -68,6 +69,7 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
   const std::string ext = file_extension(path);
   vtkSmartPointer<vtkPolyData> pd;
   size_t stl_triangles = 0;
+  ObjFaces obj;
   if (ext == ".stl") {
     stl_triangles = check_stl(path);
     pd = read_with<vtkSTLReader>(path);
@@ -79,7 +81,7 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
     prescan_ply(path);
     pd = read_with<vtkPLYReader>(path);
   } else if (ext == ".obj") {
-    prescan_obj(path);
+    obj = prescan_obj(path);
     pd = read_with<vtkOBJReader>(path);
   } else {
     throw InputError(path, "file", "not a surface extension (.stl .ply .obj)");
@@ -99,6 +101,9 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
   const auto iter = vtk::TakeSmartPointer(polys->NewIterator());
   vtkIdType face = 0;
   std::vector<int32_t> ids32;
+  // OBJ faces with texture or normal indices: VTK's point of each corner -> the file's vertex.
+  std::vector<int32_t> file_vertex(obj.corner_points ? size_t(np) : 0, -1);
+  const size_t obj_faces = obj.corner_points ? obj.start.size() - 1 : 0;
   for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++face) {
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
@@ -109,6 +114,43 @@ TriangleSoup read_surface(const std::string& path, std::string* note) {
         throw InputError(path, "face " + std::to_string(face), "vertex index " + std::to_string(ids[q]) + " is out of range");
     ids32.assign(ids, ids + n);
     append_polygon(s, ids32.data(), ids32.size(), path, "face " + std::to_string(face));
+    if (obj.corner_points) {
+      if (size_t(face) >= obj_faces || obj.start[face + 1] - obj.start[face] != size_t(n))
+        throw InputError(path, "face " + std::to_string(face), "VTK's OBJ reader gave it other points than the file");
+      for (vtkIdType q = 0; q < n; ++q) {
+        const int32_t v = obj.vertex[obj.start[face] + q];
+        if (file_vertex[ids[q]] >= 0 && file_vertex[ids[q]] != v)
+          throw InputError(path, "face " + std::to_string(face), "VTK's OBJ reader gave it other points than the file");
+        file_vertex[ids[q]] = v;
+      }
+    }
+  }
+  if (obj.corner_points) {
+    // The corners share their file's vertices again (numbered in file order, the vertices no
+    // face uses left out, as VTK leaves them out): a closed surface stays closed.
+    if (size_t(face) != obj_faces)
+      throw InputError(path, "faces", "VTK's OBJ reader read " + std::to_string(face) + " of the file's " +
+                                          std::to_string(obj_faces));
+    std::vector<int32_t> index(*std::max_element(obj.vertex.begin(), obj.vertex.end()) + size_t(1), -1);
+    for (const int32_t v : file_vertex)
+      if (v >= 0) index[v] = 0;
+    int32_t next = 0;
+    for (int32_t& i : index)
+      if (i == 0) i = next++;
+    std::vector<Vec3> points(static_cast<size_t>(next));
+    std::vector<char> seen(static_cast<size_t>(next), 0);
+    for (vtkIdType g = 0; g < np; ++g) {
+      if (file_vertex[g] < 0) continue;
+      const int32_t to = index[file_vertex[g]];
+      if (seen[to] && (points[to].x != s.points[g].x || points[to].y != s.points[g].y || points[to].z != s.points[g].z))
+        throw InputError(path, "vertex " + std::to_string(file_vertex[g] + 1),
+                         "VTK's OBJ reader gave its corners different coordinates");
+      points[to] = s.points[g];
+      seen[to] = 1;
+    }
+    for (auto& t : s.tris)
+      for (int32_t& v : t) v = index[file_vertex[v]];
+    s.points = std::move(points);
   }
   if (s.tris.empty()) throw InputError(path, "faces", "the file has no triangles or polygons");
   const vtkIdType other = pd->GetNumberOfVerts() + pd->GetNumberOfLines();

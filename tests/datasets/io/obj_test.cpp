@@ -70,3 +70,20 @@ TEST(DatasetIO, ObjReferencesAsVtkResolvesThem) {
   EXPECT_EQ(load_input(dir.file("cont.obj")).soup().tris.size(), 4u);
   EXPECT_TRUE(contains(error("cont_bad.obj", p4 + kFaces + "f 2 3 \\\n 9\n"), "cont_bad.obj: line 8: vertex index 9 is out of range"));
 }
+
+// Faces with texture and normal indices: VTK gives each corner a point of its own, so the
+// closed tetrahedron below was refused for --tetrahedralize as "not closed". The corners
+// share the file's vertices again (the unused fifth vertex left out, as VTK leaves it out).
+TEST(DatasetIO, ObjFacesWithTexturesShareTheirPoints) {
+  TempDir dir;
+  write_text(dir.file("tex.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 9 9 9\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n"
+                                  "f 1/1/1 3/2/1 2/3/1\nf 1/2/1 2/1/1 4/3/1\nf 1/3/1 4/1/1 3/2/1\nf -4/1/1 -3/3/1 4/2/1\n");
+  const TriangleSoup s = load_input(dir.file("tex.obj")).soup();
+  ASSERT_EQ(s.points.size(), 4u);
+  EXPECT_EQ(s.points[3].z, 1.0);
+  const std::vector<std::array<int32_t, 3>> tris{{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  EXPECT_EQ(s.tris, tris);
+  InputOptions opt;
+  opt.tetrahedralize = true;
+  EXPECT_GE(load_input(dir.file("tex.obj"), opt).mesh().num_cells(), 1u);
+}
