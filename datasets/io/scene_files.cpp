@@ -93,6 +93,12 @@ Scene load_unguarded(const std::string& path, const InputOptions& opt) {
   if (is_surface(ext)) {
     TriangleSoup soup = ext == ".off" ? read_off(path) : read_surface(path, &note);
     validate_triangle_soup(soup, path);
+    if (soup.warped_polygons > 0) {
+      char text[200];
+      std::snprintf(text, sizeof text, "%zu polygons are not planar (the worst %.2g of its size off its plane): each split as a fan from its first corner",
+                    soup.warped_polygons, soup.worst_warp);
+      note += (note.empty() ? "" : "; ") + std::string(text);
+    }
     if (!opt.tetrahedralize) return told(Scene::from_soup(name, std::move(soup), params), path, note);
     check_closed_surface(soup, path);
     params["tetgen"] = opt.tetgen_switches.empty() ? kDefaultTetgenSwitches : opt.tetgen_switches;
