@@ -8,6 +8,7 @@
 
 #include "datasets/datasets.h"
 #include "harness/bench/context.h"
+#include "harness/bench/record.h"
 #include "harness/bench/results.h"
 
 namespace vob {
@@ -123,7 +124,7 @@ KnownRecords KnownRecords::read(const std::string& results_path) {
         r["context"].is_object() && r["context"].contains("git_sha") && r["context"]["git_sha"].is_string())
       run_revision.emplace(r["run_id"].get<std::string>(), r["context"]["git_sha"].get<std::string>());
   for (const auto& r : lines) {
-    if (!r.is_object() || is_context_line(r)) continue;
+    if (!r.is_object() || is_meta_line(r)) continue;
     if (r.contains("key") && r["key"].is_string()) {
       k.keys.insert(r["key"].get<std::string>());
       if (r.contains("run_id") && r["run_id"].is_string()) {
@@ -190,6 +191,15 @@ PlannedJob planned(const SuiteSpec& suite, const Job& j, double primitives, cons
   pj.pixels = pj.probe ? 0 : double(j.w) * j.h;
   pj.done = known.keys.count(j.key) > 0;
   pj.cost = job_cost(suite, j, primitives);
+  if (pj.probe) {
+    pj.probe_label = j.probe->name;  // what its record says in "probe"
+  } else {
+    pj.algorithm = j.spec;
+    pj.w = j.w;
+    pj.h = j.h;
+    pj.view_index = j.view_index;
+  }
+  pj.threads = effective_threads(j.threads);
   return pj;
 }
 }  // namespace
@@ -210,6 +220,8 @@ RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords
   for (const DatasetPlan& dp : plan_datasets(suite)) {
     PlannedDataset pd;
     pd.label = dp.dataset.label();
+    pd.row = dp.dataset.row_label();
+    pd.dataset_spec = dp.dataset.to_json();
     pd.kind = dataset_kind(dp.dataset);
     const auto it = known.primitives.find(pd.label);
     if (it != known.primitives.end()) {
@@ -231,6 +243,41 @@ RunPlan plan_run(const SuiteSpec& suite, const RunTags& tags, const KnownRecords
   if (!sceneless.jobs.empty()) plan.datasets.push_back(std::move(sceneless));
   return plan;
 }
+
+nlohmann::json plan_line(const std::string& run_id, const std::string& suite_name, const RunTags& tags,
+                         const RunPlan& plan) {
+  nlohmann::json jobs = nlohmann::json::array();
+  for (const PlannedDataset& d : plan.datasets)
+    for (const PlannedJob& j : d.jobs) {
+      nlohmann::json o = {{"key", j.key},
+                          {"dataset", d.label.empty() ? nlohmann::json() : nlohmann::json(d.label)},
+                          {"dataset_spec", d.dataset_spec}};
+      if (!d.row.empty()) o["row"] = d.row;
+      if (j.probe) {
+        o["probe"] = j.probe_label;
+      } else {
+        o["algorithm"] = j.algorithm;
+        o["w"] = j.w;
+        o["h"] = j.h;
+        o["view_index"] = j.view_index;
+      }
+      o["threads"] = j.threads;
+      jobs.push_back(std::move(o));
+    }
+  nlohmann::json line = {{"key", "plan|" + run_id + "|" + suite_name},
+                         {"type", "plan"},
+                         {"run_id", run_id},
+                         {"schema_version", kSchemaVersion},
+                         {"suite", suite_name}};
+  if (!tags.reproduction.empty()) line["reproduction"] = tags.reproduction;
+  line["scale"] = tags.scale;
+  line["jobs"] = std::move(jobs);
+  return line;
+}
+
+bool is_plan_line(const nlohmann::json& j) { return j.is_object() && j.contains("type") && j["type"] == "plan"; }
+
+bool is_meta_line(const nlohmann::json& j) { return is_context_line(j) || is_plan_line(j); }
 
 std::map<std::string, size_t> done_by_other_revisions(const RunPlan& plan, const KnownRecords& known,
                                                       const std::string& current, const PlannedJobFilter& take) {

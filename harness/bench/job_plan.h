@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "harness/bench/jobs.h"
 #include "harness/bench/suite.h"
 
@@ -49,6 +51,10 @@ struct PlannedJob {
   double pixels = 0;      // orderer jobs; 0 for probes
   bool probe = false, done = false;  // done: its key is in the results file
   double cost = 0;
+  // What the plan line (plan_line) says of it: orderer spec or probe label, size, view, and
+  // the effective thread count its key and record carry.
+  std::string algorithm, probe_label;
+  int w = 0, h = 0, view_index = 0, threads = 0;
 };
 
 struct PlannedDataset {
@@ -57,6 +63,8 @@ struct PlannedDataset {
   double primitives = 0;
   std::string size_from;     // "records", "parameters", "file size (a guess)", "unknown (1e5 assumed)"
   std::string views_note;    // non-empty: how the view count was found
+  std::string row;              // the records' "row" (DatasetSpec::row_label)
+  nlohmann::json dataset_spec;  // the records' "dataset_spec"; null for the sceneless probes
   std::vector<PlannedJob> jobs;
   size_t to_do() const;
   double cost_to_do() const;
@@ -81,6 +89,16 @@ std::map<std::string, size_t> done_by_other_revisions(const RunPlan& plan, const
 // measure them again (`to_measure_again`: "--force", "another -o").
 std::string other_revisions_note(const std::map<std::string, size_t>& others, const std::string& current,
                                  const std::string& to_measure_again);
+// The suite's plan line of the results file (docs/pipeline.md "Incomplete data"):
+// {"key": "plan|RUN_ID|SUITE", "type": "plan", "run_id", "schema_version", "suite", "reproduction" (when any),
+// "scale", "jobs": [{"key", "dataset", "dataset_spec", "algorithm" or "probe", "w", "h",
+// "view_index", "threads"}, ...]}: every job of the suite, done or not, so a report can say
+// which planned jobs have no record.
+nlohmann::json plan_line(const std::string& run_id, const std::string& suite_name, const RunTags& tags,
+                         const RunPlan& plan);
+bool is_plan_line(const nlohmann::json& j);
+// A context or a plan line: a line of the results file that is not a record.
+bool is_meta_line(const nlohmann::json& j);
 // A dataset's part of the plan again once its scene is made: its real jobs and size.
 PlannedDataset plan_made(const SuiteSpec& suite, const std::string& label, const std::vector<Job>& jobs,
                          double primitives, const KnownRecords& known);

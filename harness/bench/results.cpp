@@ -18,6 +18,7 @@
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
+#include "harness/bench/job_plan.h"
 #include "harness/bench/json_input.h"
 #include "harness/scene/input_error.h"
 
@@ -92,7 +93,7 @@ std::vector<nlohmann::json> ResultsFile::read_all_lines(const std::string& path,
 
 std::vector<nlohmann::json> ResultsFile::read_all(const std::string& path, bool torn_tail_ok) {
   std::vector<nlohmann::json> out = read_all_lines(path, torn_tail_ok);
-  out.erase(std::remove_if(out.begin(), out.end(), [](const nlohmann::json& r) { return is_context_line(r); }),
+  out.erase(std::remove_if(out.begin(), out.end(), [](const nlohmann::json& r) { return is_meta_line(r); }),
             out.end());
   return out;
 }

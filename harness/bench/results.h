@@ -38,8 +38,8 @@ class ResultsFile {
   // Appends the record (it must carry a string "key") unless a record with its key is in
   // the file already; returns whether it was written.
   bool append(const nlohmann::json& record);
-  // Takes out the records for which `drop` holds and returns them; context lines and every
-  // other record stay, in file order. The only rewrite of a results file (`--force` on one
+  // Takes out the records and plan lines for which `drop` holds and returns them; context
+  // lines and every other line stay, in file order. The only rewrite of a results file (`--force` on one
   // reproduction of a shared folder): under the lock the kept lines go to a new file that
   // is renamed over this one, so a reader sees the old file or the new one, and a writer
   // holding the old one finds it replaced at its next lock and reads the new one.
@@ -49,12 +49,12 @@ class ResultsFile {
   const std::string& path() const { return path_; }
 
   // Every record of a results file, in file order, without the runs' context lines
-  // (context.h). InputError for a line that is not JSON.
+  // (context.h) and the suites' plan lines (job_plan.h). InputError for a line that is not JSON.
   // `torn_tail_ok`: a last line without its newline that is not JSON (a writer killed
   // mid-line; the next ResultsFile removes it) is left out instead of refused, for the
   // readers that plan a run before its writer opens the file.
   static std::vector<nlohmann::json> read_all(const std::string& path, bool torn_tail_ok = false);
-  // The same with the context lines, where they stand.
+  // The same with the context and plan lines, where they stand.
   static std::vector<nlohmann::json> read_all_lines(const std::string& path, bool torn_tail_ok = false);
 
  private:

@@ -15,6 +15,8 @@
 #include "harness/bench/context.h"
 #include "harness/bench/external_orderer.h"
 #include "harness/bench/job_partition.h"
+#include "harness/bench/job_plan.h"
+#include "harness/bench/results.h"
 #include "harness/bench/reporters.h"
 #include "harness/scene/cell_overlap.h"
 #include "harness/scene/input_error.h"
@@ -140,6 +142,10 @@ RunSummary run_suite(const SuiteSpec& suite, const RunOptions& opt) {
         }
     tracker.add(jobs, cost);
   }
+  // The plan line before the jobs (and again on a resume with jobs left): a report can then
+  // tell which planned jobs have no record, even of datasets the run never reached.
+  if (file_sink && opt.write_plan && planned.to_do() > 0)
+    ResultsFile(opt.results_path).append(plan_line(run_id, suite_name, opt.tags, planned));
   const ConsoleReporter console(with_status(opt.progress, tracker));
   Record base = base_record(suite, opt, run_id);
   base.placement = opt.placement.is_null() ? lone_placement() : opt.placement;

@@ -56,6 +56,10 @@ struct RunOptions {
   // The records' placement fields (record.h); null: this host, rank 0 of 1, alone.
   nlohmann::json placement;
   SceneCache* scene_cache = nullptr;
+  // Whether the run writes its suite's plan line (job_plan.h plan_line) into the results
+  // file before its jobs when any of them is still to do; false when the caller wrote it
+  // (reproduce writes every suite's plan first). Never with a sink.
+  bool write_plan = true;
 };
 struct RunSummary {
   int written = 0;             // records this run appended

@@ -15,6 +15,7 @@
 
 #include "harness/bench/atomic_file.h"
 #include "harness/bench/context.h"
+#include "harness/bench/job_plan.h"
 #include "harness/bench/json_input.h"
 #include "harness/cli/commands.h"
 #include "harness/scene/input_error.h"
@@ -116,7 +117,7 @@ Command add_merge_command(CLI::App& app) {
     };
     std::map<std::string, const Line*> first;  // key -> the record kept
     std::vector<const Line*> kept;
-    size_t duplicates = 0, conflicts = 0, measured_again = 0;
+    size_t duplicates = 0, conflicts = 0, measured_again = 0, plan_lines = 0;
     for (const auto& f : files)
       for (const Line& l : f) {
         if (is_context_line(l.j)) continue;
@@ -124,8 +125,10 @@ Command add_merge_command(CLI::App& app) {
         const auto [it, fresh] = first.emplace(key, &l);
         if (fresh) {
           kept.push_back(&l);
+          if (is_plan_line(l.j)) ++plan_lines;
           continue;
         }
+        if (is_plan_line(l.j)) continue;  // a suite's plan line (job_plan.h), in two files: kept once
         ++duplicates;
         const nlohmann::json& a = it->second->j;
         if (a.value("run_id", "") == l.j.value("run_id", "") && a == l.j) continue;  // the same record twice
@@ -153,7 +156,7 @@ Command add_merge_command(CLI::App& app) {
       text += l->text + "\n";
     }
     write_file_atomically(*out, text);
-    std::cerr << "merge: " << kept.size() << " records from " << inputs->size() << " files, " << duplicates
+    std::cerr << "merge: " << kept.size() - plan_lines << " records and " << plan_lines << " suite plans from " << inputs->size() << " files, " << duplicates
               << " duplicate keys dropped (" << conflicts << " conflicting), " << measured_again
               << " measured again by another run on the same host (the first kept), " << context_lines
               << " run contexts -> " << *out << "\n";

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "harness/bench/context.h"
+#include "harness/bench/job_plan.h"
 #include "harness/bench/json_input.h"
 #include "harness/scene/input_error.h"
 
@@ -119,6 +120,11 @@ void check_report_inputs(const std::vector<std::string>& paths) {
       if (is_context_line(r)) {  // a run's context (docs/pipeline.md "Records"), not a record
         if (!r.contains("context") || !r["context"].is_object() || !r.contains("run_id") || !r["run_id"].is_string())
           throw InputError(path, where, "context line needs a string 'run_id' and an object 'context'");
+        continue;
+      }
+      if (is_plan_line(r)) {  // a suite's plan (job_plan.h): the jobs it meant to measure
+        if (!r.contains("suite") || !r["suite"].is_string() || !r.contains("jobs") || !r["jobs"].is_array())
+          throw InputError(path, where, "plan line needs a string 'suite' and an array 'jobs'");
         continue;
       }
       const std::string problem = report_record_problem(r);

@@ -5,9 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <set>
 
 #include "harness/bench/atomic_file.h"
+#include "harness/bench/context.h"
 #include "harness/bench/job_partition.h"
 #include "harness/bench/job_plan.h"
 #include "harness/bench/resources.h"
@@ -109,9 +111,18 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
   size_t done = 0;
   const std::string revision = source_revision();
   std::map<std::string, size_t> others;  // done jobs of other builds, per revision
+  // Every suite's plan line before the first job (docs/pipeline.md "Incomplete data"): a run
+  // stopped in its first suite still tells the report what the later ones would have measured.
+  std::vector<std::string> run_ids;
+  std::optional<ResultsFile> plan_file;
   for (const SuiteSpec& suite : suites) {
     const RunPlan plan = plan_run(suite, tags, known);
     const std::string suite_name = tags.suite_name(suite);
+    run_ids.push_back(new_run_id());
+    if (plan.to_do() > 0) {
+      if (!plan_file) plan_file.emplace(results);
+      plan_file->append(plan_line(run_ids.back(), suite_name, tags, plan));
+    }
     const PartCount c = count_part(plan, suite_name, part);
     tracker.add(c.jobs, c.cost);
     done += c.jobs - c.to_do;
@@ -143,9 +154,12 @@ int run_suites_into(const std::vector<SuiteSpec>& suites, const std::string& nam
     else
       std::fprintf(stderr, "[%6.1f s] %s\n", s, line.c_str());
   };
+  opt.write_plan = false;  // written above
   int vtk_failure = 0;  // vobench-vtk's failing status: reported after every suite
-  for (const SuiteSpec& suite : suites) {
+  for (size_t si = 0; si < suites.size(); ++si) {
+    const SuiteSpec& suite = suites[si];
     std::fprintf(stderr, "suite %s\n", suite.name.c_str());
+    opt.run_id = run_ids[si];
     const RunSummary r = run_suite(suite, opt);
     std::cerr << suite.name << ": " << r.written << " records written, " << r.skipped << " kept, ";
     if (r.written_elsewhere) std::cerr << r.written_elsewhere << " written meanwhile by another run, ";

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "harness/bench/context.h"
+#include "harness/bench/job_plan.h"
 #include "harness/bench/results.h"
 #include "harness/mpi/farm.h"
 #include "harness/mpi/farm_messages.h"
@@ -21,7 +22,12 @@ int coordinate(const FarmRequest& req, int ranks, const nlohmann::json& placemen
   // Opened first: it repairs a last line a killed farm left half-written, before it is read.
   ResultsFile results(req.results_path);
   const std::string costs = req.costs_path.empty() ? req.results_path : req.costs_path;
-  std::vector<JobGroup> groups = plan_groups(req.suites, KnownRecords::read(req.results_path), RecordedTimes::read(costs));
+  const KnownRecords known = KnownRecords::read(req.results_path);
+  std::vector<JobGroup> groups = plan_groups(req.suites, known, RecordedTimes::read(costs));
+  // Each suite's plan line before any job (docs/pipeline.md "Incomplete data").
+  for (const FarmSuite& fs : req.suites)
+    if (const RunPlan plan = plan_run(fs.suite, fs.tags, known); plan.to_do() > 0)
+      results.append(plan_line(new_run_id(), fs.tags.suite_name(fs.suite), fs.tags, plan));
   std::erase_if(groups, [](const JobGroup& g) { return g.done.size() == g.keys.size(); });
   std::stable_sort(groups.begin(), groups.end(),
                    [](const JobGroup& a, const JobGroup& b) { return a.cost_to_do > b.cost_to_do; });

@@ -155,11 +155,18 @@ TEST(Cli, RunWritesRecordsAndSkipsThemOnRerun) {
   ASSERT_EQ(r.code, 0) << r.out;
   std::ifstream in(results);
   std::string line;
-  int n = 0, contexts = 0;
+  int n = 0, contexts = 0, plans = 0;
   std::string run_id;
   while (std::getline(in, line)) {
     const auto j = nlohmann::json::parse(line);
     EXPECT_EQ(j["schema_version"], 2);
+    if (j.value("type", "") == "plan") {  // one per suite run, before its jobs
+      EXPECT_EQ(n, 0);
+      EXPECT_EQ(contexts, 0);
+      EXPECT_EQ(j["jobs"].size(), 4u);
+      ++plans;
+      continue;
+    }
     if (j.value("type", "") == "context") {  // one per run, before its records
       EXPECT_EQ(n, 0);
       ++contexts;
@@ -178,6 +185,7 @@ TEST(Cli, RunWritesRecordsAndSkipsThemOnRerun) {
   }
   EXPECT_EQ(n, 4);
   EXPECT_EQ(contexts, 1);
+  EXPECT_EQ(plans, 1);
   r = vobench("run " + suite.string() + " -o " + results.string());
   ASSERT_EQ(r.code, 0) << r.out;
   EXPECT_NE(r.out.find("0 records written, 4 already present"), std::string::npos) << r.out;

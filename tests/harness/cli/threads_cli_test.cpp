@@ -53,7 +53,7 @@ std::vector<json> records(const fs::path& results, std::vector<json>* contexts =
     json j = json::parse(line);
     if (j.value("type", "") == "context") {
       if (contexts) contexts->push_back(j["context"]);
-    } else {
+    } else if (j.value("type", "") != "plan") {
       out.push_back(j);
     }
   }
