@@ -65,6 +65,8 @@ def load(path):
             if r.get("type") == "context":
                 ctx[r.get("run_id")] = r.get("context") or {}
                 continue
+            if r.get("type") == "plan":  # a suite's plan (the jobs it meant to measure), not a record
+                continue
             if "probe" in r:
                 continue
             total = r.get("total")

@@ -80,7 +80,7 @@ def main():
                 return 2
             if r.get("type") == "context":
                 ctx = r.get("context") or {}
-            elif "probe" not in r and isinstance(r.get("total"), dict):
+            elif r.get("type") != "plan" and "probe" not in r and isinstance(r.get("total"), dict):
                 recs.append(r)
     doc = {"context": gbench_context(ctx, a.results), "benchmarks": benchmarks(recs)}
     tmp = a.output + ".tmp"

@@ -7,20 +7,24 @@ sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from vobtables import load_records  # noqa: E402
 
 
-def load(paths):
+def load(paths, plans=None, keys=None):
     """(orderer records, probe count). Context lines (`"type": "context"`, one per run) are
-    attached to their run's records as `context`, whether or not the loader did it already."""
+    attached to their run's records as `context`, whether or not the loader did it already.
+    `plans` (optional list) receives the files' plan lines (vobtables.plan), `keys`
+    (optional set) the key of every record, probes' too."""
     recs, probes = [], 0
     for path in paths:
         base = os.path.dirname(os.path.abspath(path))
         contexts = {}
-        rows = load_records(path, who="report")
+        rows = load_records(path, who="report", plans=plans)
         for r in rows:
             if r.get("type") == "context":
                 contexts[r.get("run_id")] = r.get("context") or {}
         for r in rows:
             if r.get("type") == "context":
                 continue
+            if keys is not None:
+                keys.add(r.get("key"))
             if "probe" in r:  # probes feed the paper tables, not this report
                 probes += 1
                 continue

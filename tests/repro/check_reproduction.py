@@ -42,7 +42,7 @@ for c in doc.get("claims", []):
         fail(f"claim {c.get('claim')!r}: no criterion")
 with open(os.path.join(DIR, "results.jsonl")) as f:
     # Context lines (one per run) are not records (docs/pipeline.md "Records").
-    recs = [r for r in (json.loads(line) for line in f if line.strip()) if r.get("type") != "context"]
+    recs = [r for r in (json.loads(line) for line in f if line.strip()) if r.get("type") not in ("context", "plan")]
 if not recs:
     fail("no records")
 for r in recs:

@@ -30,7 +30,7 @@ def main():
             if not os.path.isfile(res):
                 continue
             lines = [ln for ln in open(res) if ln.strip()]
-            recs = [r for r in map(json.loads, lines) if r.get("type") != "context"]  # runs' context lines
+            recs = [r for r in map(json.loads, lines) if r.get("type") not in ("context", "plan")]  # runs' context lines
             if not recs or not recs[0].get("paper"):
                 continue  # reproductions without a paper have no claims
             if any(r.get("scale") != "tiny" for r in recs):

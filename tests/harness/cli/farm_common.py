@@ -35,7 +35,7 @@ def run(cmd, who, codes=(0,)):
 
 def records(path):
     lines = [json.loads(ln) for ln in open(path) if ln.strip()]
-    return [r for r in lines if r.get("type") != "context"], lines
+    return [r for r in lines if r.get("type") not in ("context", "plan")], lines
 
 
 def by_key(who, path):
@@ -45,6 +45,8 @@ def by_key(who, path):
     for r in lines:
         if r.get("type") == "context":
             runs.add(r["run_id"])
+            continue
+        if r.get("type") == "plan":  # a suite's plan, before any record
             continue
         if r["key"] in seen:
             fail(who, f"{path}: key {r['key']} twice")
