@@ -48,7 +48,8 @@ def main():
     path = os.path.join(args.dir, "results.jsonl")
     if not os.path.exists(path):
         sys.exit(f"tables: {path}: no results file")
-    recs = load_records(path)
+    plans = []
+    recs = load_records(path, plans=plans)
     by_repro = {}
     for r in recs:
         name = r.get("reproduction")
@@ -64,6 +65,8 @@ def main():
             sys.exit(f"tables: reports/papers/{paper}.py has no table for '{name}'")
         doc = Doc(name, name, context=rs[0].get("context"), out_dir=args.dir)
         doc.conditions = conditions(rs, numbers)
+        doc.row_of = getattr(mod, "ROW_OF", None)  # how the script labels a data set's row
+        doc.set_plan(rs, plans, name)  # planned jobs without a record (vobtables.plan)
         build(rs, numbers, doc)
         print(f"tables: wrote {doc.write()}", file=sys.stderr)
         built.append((paper, doc))

@@ -18,6 +18,7 @@ from generic import figures, limits, sections, vtk_render  # noqa: E402
 from generic.load import load, revision  # noqa: E402
 from generic.page import Page, anchor  # noqa: E402
 from generic.rows import summarise  # noqa: E402
+from vobtables import plan as vplan  # noqa: E402
 import signal  # noqa: E402
 
 # Ctrl-C during `vobench reproduce` stops the script as it stops vobench, without a traceback.
@@ -31,7 +32,12 @@ def scene_file(k):
 
 
 def build(a):
-    recs, probes = load(a.results)
+    plans, keys = [], set()
+    recs, probes = load(a.results, plans, keys)
+    # Planned jobs without a record (docs/pipeline.md "Incomplete data"): the runs' plan lines
+    # of this reproduction (--name), or of every run.
+    planned = vplan.planned_jobs(plans, a.name or None)
+    missing = [j for j in planned if j.get("key") not in keys]
     if not recs and not probes:
         sys.exit("report: no records")
     if not recs:
@@ -54,6 +60,14 @@ def build(a):
                   + (f" ({probes} probe records are left to the paper tables)." if probes else "."))
         for text in includes:
             page.para(text)
+        if missing:
+            lost = sorted({vplan.job_row(j) for j in missing} - {r.get("row") or r.get("dataset") for r in recs})
+            page.para("Conditions. Incomplete: " + vplan.describe(missing, planned)
+                      + (f" Not measured at all (no scene section): {', '.join(lost)}." if lost else "")
+                      + " Rows and figures below cover only the jobs that have a record.",
+                      md="**Conditions.** Incomplete: " + vplan.describe(missing, planned)
+                      + (f" Not measured at all (no scene section): {', '.join(lost)}." if lost else "")
+                      + " Rows and figures below cover only the jobs that have a record.")
         sections.runs_header(page, recs)
         page.heading(2, "How to read the tables")
         page.para(sections.VERDICT_NOTE)

@@ -11,6 +11,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from . import plan as _plan  # noqa: E402
+
 
 def fmt(v):
     """A table cell: 3 significant digits, integers as integers, None as '-'."""
@@ -115,17 +117,88 @@ class Doc:
         self.out_dir = out_dir
         self.conditions = ""  # machines, threads, repeats and warm-up, stand-ins (vobtables.conditions)
         self.tables, self.claims, self.figures = [], [], []
+        # The reproduction's planned jobs and those without a record (set_plan); a claim whose
+        # scope covers one of the missing is "not measured" (claim), a data set with no record
+        # at all still gets its row (_finish), and the Conditions say which are missing.
+        self.planned, self.missing, self.records = [], [], []
+        self.row_of = None  # a record's or planned job's row label (None: its "row", else its data set)
+        self._finished = False
+
+    def set_plan(self, records, plans, reproduction=None):
+        """The reproduction's records and the results file's plan lines (vobtables.plan)."""
+        self.records = list(records)
+        self.planned = _plan.planned_jobs(plans, reproduction)
+        self.missing = _plan.missing_jobs(records, plans, reproduction)
+
+    def row_label(self, r):
+        if self.row_of is not None:
+            try:
+                return self.row_of(r)
+            except (KeyError, TypeError, ValueError):
+                pass
+        return _plan.job_row(r)
+
+    def missing_in(self, scope=None):
+        """The planned jobs without a record that fall in `scope` (vobtables.plan.in_scope)."""
+        return [j for j in self.missing if _plan.in_scope(j, scope, self.row_label)]
+
+    def missing_rows(self):
+        """Row labels of planned data sets with no record at all, in plan order."""
+        have = {self.row_label(r) for r in self.records}
+        out = []
+        for j in self.missing:
+            row = self.row_label(j)
+            if row not in have and row not in out:
+                out.append(row)
+        return out
+
+    def _finish(self):
+        """Once, before writing: the Conditions say which planned jobs have no record, and each
+        table whose rows are our data sets gets a "not measured" row for a planned data set
+        with no record."""
+        if self._finished:
+            return
+        self._finished = True
+        if not self.missing:
+            return
+        text = _plan.describe(self.missing, self.planned, self.row_label)
+        self.conditions = (self.conditions.rstrip() + " " if self.conditions else "") + (
+            "Incomplete: " + text + " Claims over them are not measured.")
+        rows = self.missing_rows()
+        have = {self.row_label(r) for r in self.records}
+        for t in self.tables:
+            if not t.rows or len(t.columns) < 2:
+                continue
+            firsts = [r[0] for r in t.rows if isinstance(r[0], str)]
+            if any(f in have for f in firsts):
+                prefix = ""
+            elif any(f.startswith("ours: ") and f[6:] in have for f in firsts):
+                prefix = "ours: "
+            else:
+                continue
+            for row in rows:
+                if prefix + row not in firsts:
+                    t.rows.append([prefix + row, "not measured"] + [None] * (len(t.columns) - 2))
 
     def table(self, title, columns, notes="", decimals=None):
         t = Table(title, columns, notes, decimals)
         self.tables.append(t)
         return t
 
-    def claim(self, claim, ours, paper, criterion, holds):
+    def claim(self, claim, ours, paper, criterion, holds, scope=None):
         """`holds` is computed from the numbers by `criterion` (a bool), or None when a
-        record it needs is missing ("not measured")."""
+        record it needs is missing ("not measured"). `scope`: what the claim is about (a dict
+        of row, orderer, view, size, threads; vobtables.plan.in_scope), None for the whole
+        reproduction; when a planned job in it has no record the claim is not measured, its
+        `ours` left out, and the criterion says which jobs are missing."""
         if holds is not None and not isinstance(holds, bool):
             raise TypeError(f"claim '{claim}': holds must be a bool or None, not {type(holds).__name__}")
+        lost = self.missing_in(scope)
+        if lost:
+            rows = sorted({self.row_label(j) for j in lost})
+            criterion = (f"{criterion}; not measured: {len(lost)} planned job(s) without a record "
+                         f"({', '.join(rows[:6])}{' ...' if len(rows) > 6 else ''})")
+            holds, ours = None, None
         self.claims.append({"claim": claim, "holds": holds, "ours": _clean(ours),
                             "paper": _clean(paper), "criterion": criterion})
 
@@ -167,6 +240,7 @@ class Doc:
     # --- writing ---------------------------------------------------------------------------
 
     def to_json(self):
+        self._finish()
         return {"reproduction": self.name, "title": self.title, "intro": self.intro,
                 "conditions": self.conditions, "context": self.context,
                 "tables": [{"title": t.title, "columns": t.columns,
@@ -175,6 +249,7 @@ class Doc:
                 "claims": self.claims, "figures": self.figures}
 
     def to_markdown(self):
+        self._finish()
         out = [f"# {self.title}", ""]
         if self.intro:
             out += [self.intro, ""]
@@ -204,6 +279,7 @@ class Doc:
     def to_html(self):
         """The page: a table of contents, tables, claims, then each figure at full column width
         linked to its full-size file."""
+        self._finish()
         e = html.escape
         sections = [(_anchor(k, t.title), t.title) for k, t in enumerate(self.tables)]
         sections += [("claims", "Claims")] if self.claims else []
