@@ -188,7 +188,7 @@ def table2(records, paper, doc):
                   f"(maxima over the views: {k6} of {frag})", None if share is None else 100 * share,
                   f"{100 * shares[worst_p]:.3f}% at most ({rows[worst_p]['k_gt_6']} of {rows[worst_p]['fragments']}, "
                   f"{worst_p})", f"ours <= {100 * shares[worst_p]:.3f} (%, the paper's largest share)",
-                  None if share is None else share <= shares[worst_p])
+                  None if share is None else share <= shares[worst_p], scope={"row": r.get('row')})
     paper_rows(doc, paper, "table2", ["fragments", "max_a", "max_k", "k_gt_2", "k_gt_6"],
                ["fragments", "Max A", "Max k", "k > 2", "k > 6"])
 
@@ -255,7 +255,7 @@ def table34(records, paper, doc):
                   "-" if pq is None else f"{pq:.2f} ({paper_name(row)}; paper range {lo:.2f} to {hi:.2f})",
                   f"{lo:.2f} <= ours <= {hi:.2f} (the range of Table 3's fps(k=2) / fps(k=6) over its five meshes)"
                   + (f"; not measured: {missing}" if missing else ""),
-                  None if q is None else lo <= q <= hi)
+                  None if q is None else lo <= q <= hi, scope={"row": row})
     # 'between one and six million cells per second': every mesh of the paper's, each over all its views.
     rates = {row: ratio(values[row][0], values[row][1][2]) for row, _ in meshes}
     have = [x for x in rates.values() if x is not None]

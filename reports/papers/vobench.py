@@ -134,7 +134,7 @@ def speed_targets(records, numbers, doc):
             doc.claim(f"{ISSUE}: {t['what']}: {t['target']}. On {row}"
                       + (f", the worst of {len(vals)} views" if len(vals) > 1 else ", one view" if vals else ""),
                       ours=decisive, paper=f"{ISSUE}: {bound_text(t)}",
-                      criterion=f"every view {bound_text(t)}{why}", holds=meets(t, decisive))
+                      criterion=f"every view {bound_text(t)}{why}", holds=meets(t, decisive), scope={"row": row})
 
 
 TABLES = {"speed-targets": speed_targets}

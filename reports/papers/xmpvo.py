@@ -306,7 +306,7 @@ def cook_table2(records, paper, doc):
                   "smallest image / BSP-XMPVO, seconds per view)", ours=q,
                   paper="-" if pq is None else f"{pr['sxmpvo'][0]} / {pr['bsp_xmpvo']} = {pq:.2f} (different machines)",
                   criterion="ours < 1" + (f"; not measured: {'; '.join(lacking)}" if lacking else ""),
-                  holds=None if q is None else q < 1)
+                  holds=None if q is None else q < 1, scope={"row": row})
     win = window_text(bsp_all) if bsp_all else "-"
     full = records[0].get("scale") == "full"
     sx_any = of(orderer_recs, "sxmpvo")
