@@ -1,5 +1,6 @@
 #include "harness/cli/reproduce.h"
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -85,8 +86,9 @@ void drop_records_of(const std::set<std::string>& names, const std::vector<Suite
     }
     std::string what;
     for (const std::string& n : names) what += (what.empty() ? "" : ", ") + n;
-    std::fprintf(stderr, "--force: %zu records of %s removed from %s; %zu records of others kept\n",
-                 removed.size(), what.c_str(), results.c_str(), kept);
+    const size_t plans = size_t(std::count_if(removed.begin(), removed.end(), is_plan_line));
+    std::fprintf(stderr, "--force: %zu records and %zu plan lines of %s removed from %s; %zu records of others kept\n",
+                 removed.size() - plans, plans, what.c_str(), results.c_str(), kept);
   }
   for (const SuiteSpec& suite : suites)
     if (suite.vtk_render) {

@@ -27,7 +27,7 @@ def missing_jobs(records, plans, reproduction=None):
     out = []
     for suite, p in latest_plans(plans, reproduction).items():
         for j in p["jobs"]:
-            if isinstance(j, dict) and j.get("key") not in have:
+            if isinstance(j, dict) and isinstance(j.get("key"), str) and j["key"] not in have:
                 out.append(dict(j, suite=suite))
     return out
 
@@ -35,17 +35,17 @@ def missing_jobs(records, plans, reproduction=None):
 def planned_jobs(plans, reproduction=None):
     """Every job of the latest plans (as missing_jobs, with or without records)."""
     return [dict(j, suite=s) for s, p in latest_plans(plans, reproduction).items() for j in p["jobs"]
-            if isinstance(j, dict)]
+            if isinstance(j, dict) and isinstance(j.get("key"), str)]
 
 
 def job_row(j):
     """The row a job's records would have: its "row", else its data set (probes without a
     scene: the probe)."""
-    return j.get("row") or j.get("dataset") or (f"probe {j['probe']}" if j.get("probe") else "?")
+    return str(j.get("row") or j.get("dataset") or (f"probe {j['probe']}" if j.get("probe") else "?"))
 
 
 def job_unit(j):
-    return j.get("algorithm") or (f"probe {j['probe']}" if j.get("probe") else "?")
+    return str(j.get("algorithm") or (f"probe {j['probe']}" if j.get("probe") else "?"))
 
 
 def _ranges(nums):
@@ -73,8 +73,8 @@ def describe(missing, planned=None, row_of=job_row):
     parts = []
     for row, js in groups.items():
         units = sorted({job_unit(j) for j in js})
-        views = [j["view_index"] for j in js if isinstance(j.get("view_index"), int)]
-        sizes = sorted({f"{j['w']}x{j['h']}" for j in js if j.get("w")})
+        views = [j["view_index"] for j in js if type(j.get("view_index")) is int]
+        sizes = sorted({f"{j.get('w')}x{j.get('h')}" for j in js if j.get("w")})
         of = per_row.get(row)
         head = (f"all {len(js)} jobs" if of == len(js) else f"{len(js)} of {of} jobs") if of else f"{len(js)} jobs"
         what = ", ".join(units[:4]) + (f" and {len(units) - 4} more" if len(units) > 4 else "")
