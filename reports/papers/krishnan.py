@@ -76,7 +76,7 @@ def _gl_rule_claim(doc, records, what, paper_words):
               ours=None if not judged else failing, paper=paper_words,
               criterion=f"ours == 0 (frames failing under --raster gl, of {judged} judged"
                         + (f"; {faults} not judged: their snapped cells overlap" if faults else "") + ")",
-              holds=None if not judged else failing == 0)
+              holds=None if not judged else failing == 0, scope={"suite": {r.get("suite") for r in records}})
 
 
 # --- Table 1 ------------------------------------------------------------------------------

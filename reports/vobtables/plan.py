@@ -95,11 +95,20 @@ def _as_set(v):
 
 
 def in_scope(j, scope, row_of=job_row):
-    """Whether a planned job falls in a claim's scope: a dict of "row" (or "dataset"),
-    "orderer" (an orderer name or spec), "view", "size" ("WxH") and "threads", each one value
-    or a collection; a key left out covers everything. None: the whole reproduction."""
+    """Whether a planned job falls in a claim's scope: a dict of "suite" (REPRO/SUITE or
+    SUITE), "row" (or "dataset"), "orderer" (an orderer name or spec: orderer jobs only),
+    "probe" (a probe name: probe jobs only), "view", "size" ("WxH") and "threads", each one
+    value or a collection; a key left out covers everything. None: the whole reproduction."""
     if scope is None:
         return True
+    suites = _as_set(scope.get("suite"))
+    if suites is not None:
+        s = str(j.get("suite") or "")
+        if s not in suites and s.split("/")[-1] not in suites:
+            return False
+    probes = _as_set(scope.get("probe"))
+    if probes is not None and j.get("probe") not in probes:
+        return False
     rows = _as_set(scope.get("row", scope.get("dataset")))
     if rows is not None and row_of(j) not in rows and j.get("dataset") not in rows:
         return False

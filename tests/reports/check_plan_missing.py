@@ -95,8 +95,13 @@ doc.set_plan(partial, [plan], "cook-table3")
 doc.claim("about the helix", 1, 1, "ours == 1", True, scope={"row": "helix 0.002M"})
 doc.claim("about the zoo", 1, 1, "ours == 1", True, scope={"row": "zoo"})
 doc.claim("about every mesh", 1, 1, "ours == 1", True)
+doc.claim("about a probe", 1, 1, "ours == 1", True, scope={"probe": "havs-sorts"})
+doc.claim("about another suite", 1, 1, "ours == 1", True, scope={"suite": "table3-207k"})
+doc.claim("about this suite", 1, 1, "ours == 1", True, scope={"suite": "table3"})
+doc.claim("about sxmpvo", 1, 1, "ours == 1", True, scope={"orderer": "sxmpvo"})
 got = [H.verdict(c) for c in doc.claims]
-check(got == ["holds", "not measured", "not measured"], f"scoped claims: {got}")
+want = ["holds", "not measured", "not measured", "holds", "holds", "not measured", "not measured"]
+check(got == want, f"scoped claims: {got}, expected {want}")
 
 # The latest plan of a suite counts: an older plan with a job since dropped is ignored.
 old = plan_of(complete + [dict(complete[0], key=complete[0]["key"] + "|gone")], run_id="old-run")
