@@ -78,16 +78,17 @@ if len(kept) != len(serial) or kept[rec["key"]]["repeats"] != serial[rec["key"]]
 
 # The same job measured on another machine: a conflict naming the host (every key once:
 # its record cannot share the file); measured again on the same host: counted, exit 0.
+first_ctx = next(r for r in lines if r.get("type") == "context")  # the plan line comes first
 other_host = dict(lines[lines.index(next(r for r in lines if r.get("type") != "context" and "oracle" in r))],
-                  run_id=lines[0]["run_id"], host="another-machine")
+                  run_id=first_ctx["run_id"], host="another-machine")
 with open(out("host"), "w") as f:
-    f.write(json.dumps(lines[0]) + "\n" + json.dumps(other_host) + "\n")
+    f.write(json.dumps(first_ctx) + "\n" + json.dumps(other_host) + "\n")
 p = run([VOBENCH, "merge", out("merged"), out("host"), "-o", out("hosts")], WHO, codes=(1,))
 if "host" not in p.stderr or "another-machine" not in p.stderr:
     fail(WHO, f"another host's record was dropped without a word:\n{p.stderr[-1500:]}")
 again = dict(other_host, host=rec.get("host"), run_id="again-run", total=dict(rec["total"], median=1.0))
 with open(out("again"), "w") as f:
-    f.write(json.dumps(dict(lines[0], run_id="again-run", key="context|again-run")) + "\n" + json.dumps(again) + "\n")
+    f.write(json.dumps(dict(first_ctx, run_id="again-run", key="context|again-run")) + "\n" + json.dumps(again) + "\n")
 p = run([VOBENCH, "merge", out("merged"), out("again"), "-o", out("agains")], WHO)
 if "1 measured again by another run on the same host" not in p.stderr:
     fail(WHO, f"a record measured again was not counted:\n{p.stderr[-1500:]}")
