@@ -75,7 +75,7 @@ void drop_records_of(const std::set<std::string>& names, const std::vector<Suite
       const size_t slash = key.find('/');
       const bool ours = names.count(r.value("reproduction", "")) > 0 ||
                         (slash != std::string::npos && names.count(key.substr(0, slash)) > 0);
-      kept += !ours;
+      kept += !ours && !is_plan_line(r);
       return ours;
     });
     for (const nlohmann::json& r : removed) {
@@ -87,8 +87,8 @@ void drop_records_of(const std::set<std::string>& names, const std::vector<Suite
     std::string what;
     for (const std::string& n : names) what += (what.empty() ? "" : ", ") + n;
     const size_t plans = size_t(std::count_if(removed.begin(), removed.end(), is_plan_line));
-    std::fprintf(stderr, "--force: %zu records and %zu plan lines of %s removed from %s; %zu records of others kept\n",
-                 removed.size() - plans, plans, what.c_str(), results.c_str(), kept);
+    std::fprintf(stderr, "--force: %zu records of %s removed from %s (and %zu plan lines); %zu records of others kept\n",
+                 removed.size() - plans, what.c_str(), results.c_str(), plans, kept);
   }
   for (const SuiteSpec& suite : suites)
     if (suite.vtk_render) {
