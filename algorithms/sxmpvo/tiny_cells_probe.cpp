@@ -15,7 +15,7 @@ namespace {
 int64_t tiny_cells(const Scene& s, const Camera& cam) {
   const SampleFrame frame(cam, 1);
   const ProjectedPoints proj = project_points(frame, s.mesh().points);
-  CellClipper clip(frame, s.mesh(), proj, kMinSegmentRelative * s.bounds().radius());
+  CellClipper clip(frame, s.mesh(), proj, oracle_min_segment(s.bounds(), cam));
   int64_t tiny = 0;
   for (int32_t c = 0; c < static_cast<int32_t>(s.mesh().num_cells()); ++c) {
     const SampleRect r = clip.bounds(c).intersect(frame.bounds());

@@ -146,7 +146,7 @@ OracleResult check_ordering(const Scene& scene, const Camera& view,
   const double tie = kDepthTieRelative *
                      (scene.bounds().radius() + length(view.eye - scene.bounds().center()));
   const size_t max_examples = static_cast<size_t>(opt.max_examples);
-  const double overlap_tol = kOverlapRelative * scene.bounds().radius();
+  const double overlap_tol = 0.5 * collector.min_segment();  // oracle.h: half the shortest segment
 
   // Per sample (bands write disjoint rows), folded to pixels at the end.
   std::vector<uint8_t> sample_mask(opt.violation_mask ? frame.num_samples() : 0, 0);

@@ -2,7 +2,8 @@
 // back-to-front order at the pixel centres (or S x S samples per pixel); per sample it keeps
 // the nearest depth drawn so far; a fragment that lands behind it is a violation.
 // Fragments (harness/raster): cells -> ray segment [t_in, t_out] at t >= 0 longer than
-// kMinSegmentRelative of the scene radius (cell_clip.h); triangles -> hit depth at covered
+// oracle_min_segment (kMinSegmentRelative of the scene radius, more for a far eye;
+// cell_clip.h); triangles -> hit depth at covered
 // samples, top-left fill rule (polygon_raster.h); voxels -> splat footprint at the eye
 // distance of the voxel centre (splat.h).
 #pragma once
@@ -43,8 +44,8 @@ struct OracleResult {
   int max_list = 0;                 // longest per-sample fragment list (HAVS "Max A")
   std::vector<int64_t> k_histogram;  // samples by their k (index = k)
   nlohmann::json examples = nlohmann::json::array();
-  // Cells only: distinct cell pairs whose segments overlap by more than kOverlapRelative of
-  // the scene radius at some sample. Such cells interpenetrate: the input has no visibility
+  // Cells only: distinct cell pairs whose segments overlap by more than half the shortest
+  // kept segment (kOverlapRelative of the scene radius unless the eye is far) at some sample. Such cells interpenetrate: the input has no visibility
   // order, so their violations are the input's fault, not the orderer's.
   int64_t overlapping_pairs = 0;
   nlohmann::json overlap_examples = nlohmann::json::array();  // {cells, pixel, segments}
@@ -84,8 +85,8 @@ struct OracleResult {
 // Violation rules (k_metric.h counts k with the same comparisons, so k > 0 <=> violation):
 // - cells: a fragment violates when its segment midpoint lies behind the nearest t_in drawn
 //   so far at the sample. Segments of non-overlapping convex cells do not overlap, so the
-//   midpoint separates them with a margin of half a segment (>= kMinSegmentRelative / 2
-//   of the scene radius), far above rounding noise.
+//   midpoint separates them with a margin of half a segment (>= half the floor), far
+//   above rounding noise.
 // - triangles and voxels: a fragment violates when its depth exceeds the nearest depth drawn
 //   so far by more than kDepthTieRelative * (scene radius + eye distance to its centre).
 //   Equal depths (coplanar triangles, voxels at the same distance) are ties, not violations:
@@ -94,8 +95,10 @@ struct OracleResult {
 //   one's: what a GL depth test cannot tell apart is a tie.
 // The blocking primitive of a violation is the one holding the nearest depth (or t_in).
 // Overlap (cells): at every sample the segments, sorted by t_in, are swept for pairs that
-// overlap by more than kOverlapRelative * scene radius. Face neighbours compute the shared
-// face's crossing from bit-identical planes (cell_clip.h), so their segments meet exactly;
+// overlap by more than half the segment floor (kOverlapRelative * scene radius, or half
+// kMinSegmentFarRelative of the largest t when the eye is more than about 100 radii away:
+// t is known to about 1e-15 of itself, and an eye 1e9 away resolves it to 1e-7). Face
+// neighbours compute the shared face's crossing from bit-identical planes (cell_clip.h), so their segments meet exactly;
 // cells touching through duplicated nodes, an edge or a vertex meet within the rounding
 // noise of t (about 1e-15 of the eye distance), the noise kMinSegmentRelative is set far
 // above. The threshold is half the shortest kept segment because that is the smallest

@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include "harness/scene/cell_types.h"
+#include "harness/scene/input_error.h"
 
 namespace vob {
 
@@ -22,6 +23,18 @@ ProjectedPoints project_points(const SampleFrame& frame, const std::vector<Vec3>
     for (size_t i = 0; i < n; ++i)
       if (!(p.zc[i] > 0)) p.all_in_front = false;
   return p;
+}
+
+double oracle_min_segment(const Aabb& bounds, const Camera& view) {
+  const double r = bounds.radius();
+  const double t_far = length(view.eye - bounds.center()) + r;
+  if (t_far > kMaxEyeRadii * r)
+    throw InputError("camera", "eye", "is " + short_number(t_far / r) +
+                                           " scene radii from the scene, beyond " +
+                                           short_number(kMaxEyeRadii) +
+                                           ": depths from it are known to 1e-15 of themselves, "
+                                           "coarser than 1e-4 of the scene");
+  return std::max(kMinSegmentRelative * r, kMinSegmentFarRelative * t_far);
 }
 
 CellClipper::CellClipper(const SampleFrame& frame, const CellMesh& mesh,

@@ -14,8 +14,9 @@
 // a cell gives [0, t_out]; orthographic rays start on the eye plane, so geometry behind the
 // eye plane is dropped (the same rule the polygon rasterizer applies). Segments not longer
 // than min_length are dropped: they are rays grazing an edge or vertex, whose length is
-// rounding noise. The oracle uses min_length = kMinSegmentRelative * scene bounding radius
-// (kMinSegmentRelative is defined with the cell model, cell_planes.h).
+// rounding noise. The oracle uses min_length = oracle_min_segment(scene bounds, view):
+// kMinSegmentRelative * scene bounding radius, more when the eye is far (the constants are
+// defined with the cell model, cell_planes.h).
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -36,6 +37,13 @@ struct ProjectedPoints {
   bool all_in_front = true;  // perspective: every zc > 0
 };
 ProjectedPoints project_points(const SampleFrame& frame, const std::vector<Vec3>& points);
+
+// The oracle's min_length for a scene with bounding box `bounds` seen by `view`:
+// kMinSegmentRelative of the radius, or kMinSegmentFarRelative of the largest t a segment
+// can have (eye to the far side of the bounding sphere) when the eye is so far away that
+// t's rounding would come near the first (cell_planes.h). InputError ("camera", "eye")
+// when the eye is more than kMaxEyeRadii from the scene.
+double oracle_min_segment(const Aabb& bounds, const Camera& view);
 
 class CellClipper {
  public:

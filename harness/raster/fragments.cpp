@@ -59,7 +59,7 @@ FragmentCollector::FragmentCollector(const Scene& scene, const Camera& view,
       throw InputError("order", "position " + std::to_string(i),
                        "voxel " + std::to_string(id) + " is not significant (value <= threshold)");
   }
-  min_segment_ = kMinSegmentRelative * scene.bounds().radius();
+  if (scene.kind() == SceneKind::Cells) min_segment_ = oracle_min_segment(scene.bounds(), view);
   if (scene.kind() == SceneKind::Cells) projected_ = project_points(frame_, scene.mesh().points);
 
   // Bounds of every primitive, then the band lists in drawing order.

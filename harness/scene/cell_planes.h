@@ -23,11 +23,23 @@
 namespace vob {
 
 // Far below any real cell's extent (a cell 1e-10 of the scene across is degenerate), far
-// above the rounding noise of t (about 1e-15 of the eye distance). The oracle drops
-// segments not longer than this times the scene radius (cell_clip.h).
+// above the rounding noise of t (about 1e-15 of the eye distance) while the eye is within
+// about 100 radii. The oracle drops segments not longer than this times the scene radius
+// (cell_clip.h), or than kMinSegmentFarRelative times the largest t of the view when
+// that is more.
 constexpr double kMinSegmentRelative = 1e-10;
-// The oracle reports cells whose segments overlap by more than this times the scene
-// radius (oracle.h says why half the shortest segment).
+// t is measured from the eye (the eye plane), so it is known only to about 1e-15 of
+// itself: an eye 1e9 away resolves t to 1e-7, far above 1e-10 of a small scene's radius.
+// 100 times above that noise, the floor follows it (oracle_min_segment, cell_clip.h); for
+// views from within 1000 radii (every view set with zoom >= 0.004) kMinSegmentRelative
+// decides.
+constexpr double kMinSegmentFarRelative = 1e-13;
+// Beyond this many radii from the scene the floor would exceed 1e-4 of the scene: the
+// oracle refuses such a view (cell scenes) rather than judge it on what is left.
+constexpr double kMaxEyeRadii = 1e9;
+// `vobench validate` reports warped cells whose model overlaps by more than this times the
+// scene radius; the oracle, by more than half its segment floor (oracle.h says why half
+// the shortest segment), which is this times the radius unless the eye is far.
 constexpr double kOverlapRelative = 0.5 * kMinSegmentRelative;
 
 struct CellPlanes {

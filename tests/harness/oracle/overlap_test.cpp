@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "datasets/datasets.h"
 #include "harness/oracle/oracle.h"
 #include "harness/raster/fragments.h"
 #include "harness/scene/cell_overlap.h"
+#include "harness/scene/input_error.h"
 #include "harness/scene/mesh_faces.h"
 #include "harness/view/view_set.h"
 #include "tests/support/test_meshes.h"
@@ -140,4 +142,31 @@ TEST(OracleOverlap, WarpedNeighboursAreThePairsValidateReports) {
   const Scene block = scene_of(rotated(hex_block(3), {0.3, 0.5, 0.8}, 0.651));
   EXPECT_TRUE(check_overlapping_cells(block.mesh(), block.faces()).pairs.empty());
   EXPECT_EQ(max_overlapping_pairs(block, views(block, 8, 128)), 0);
+}
+
+// A far eye with a narrow field of view (the block 1e6 and 1e9 away, filling the image):
+// t is about the eye distance, so it is known only to its ulp (1.2e-7 at 1e9), while a
+// floor of 1e-10 of the scene radius is 5e-10. Edge neighbours then "overlapped" by one
+// ulp and the exact order was blamed on the input (36 pairs at 1e9). The segment floor and
+// the overlap threshold follow t's resolution: no pair, and the exact order passes. The
+// eye lies in grid planes (y = 3, z = 3), so many rays graze edges. An eye 1e12 away
+// (2e11 radii) is refused: the floor would be 1e-4 of the scene there.
+TEST(OracleOverlap, FarEyeGivesNoRoundingOverlaps) {
+  const CellMesh m = kuhn_block(6);
+  const Scene scene = scene_of(m);
+  for (double d : {1e6, 1e9, 1e12}) {
+    for (bool ortho : {false, true}) {
+      Camera cam = test_camera({d, 3, 3}, {3, 3, 3}, 256, 256, ortho, 10.0);
+      cam.fov_deg = 2 * std::atan(5.0 / d) * 180 / 3.14159265358979323846;
+      const std::vector<int32_t> order = tet_block_exact_order(m, 6, cam);
+      if (d > 1e10) {
+        EXPECT_THROW(check_ordering(scene, cam, order), InputError);
+        continue;
+      }
+      const OracleResult r = check_ordering(scene, cam, order);
+      EXPECT_EQ(r.overlapping_pairs, 0) << "d " << d << " ortho " << ortho << " " << r.overlap_examples.dump();
+      EXPECT_EQ(r.violating_fragments, 0) << "d " << d << " ortho " << ortho << " " << r.examples.dump();
+      EXPECT_GT(r.covered_pixels, 256 * 256 / 4) << "d " << d << " ortho " << ortho;
+    }
+  }
 }
