@@ -3,6 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "harness/geometry/predicates.h"
 #include "harness/scene/cell_types.h"
 #include "harness/scene/input_error.h"
 
@@ -75,21 +76,70 @@ SampleRect CellClipper::bounds(int32_t c) const {
   return r;
 }
 
+namespace {
+// Far above the rounding of n.v (relative to |n| |v|) and of the Newell normal's direction,
+// far below any real angle: beyond it the double sign is the exact one.
+constexpr double kSideFilter = 1e-12;
+int sign_of(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+}  // namespace
+
+int CellClipper::edge_side(int k, const Vec3& x) const {
+  if (frame_.ortho()) {
+    const double v = dot(n_[k], x - o_[k]);
+    if (std::fabs(v) > kSideFilter * nlen_[k] * (length(x - o_[k]) + length(o_[k])))
+      return sign_of(v);
+    return orient3d(qa_[k], qb_[k], qc_[k], x);
+  }
+  const double v = dot(n_[k], x);
+  if (std::fabs(v) > kSideFilter * nlen_[k] * length(x)) return sign_of(v);
+  return orient_direction(qa_[k], qb_[k], qc_[k], x);
+}
+
 void CellClipper::setup(int32_t c) {
   CellPlanes planes;
   cell_face_planes(mesh_, c, planes);
   nf_ = planes.count;
+  const int32_t* p = mesh_.cell_points(c);
+  const LocalFaces& lf = cell_local_faces(mesh_.types[c]);
+  const Vec3 eye = frame_.eye(), fwd = frame_.forward();
   for (int f = 0; f < nf_; ++f) {
     const Vec3 nrm = planes.n[f];
     n_[f] = nrm;
     o_[f] = planes.o[f];
-    k_[f] = frame_.ortho() ? dot(nrm, frame_.forward()) : -dot(nrm, frame_.eye() - planes.o[f]);
+    nlen_[f] = length(nrm);
+    k_[f] = frame_.ortho() ? dot(nrm, fwd) : -dot(nrm, eye - planes.o[f]);
     // A ray lying in the plane runs along the boundary of the cells on both sides; it
     // counts as inside the one whose outward normal's first non-zero component is
     // negative. Coplanar faces of other cells decide the same way, so along such a ray all
     // segments come from cells on one side of the plane.
     const double lead = nrm.x != 0 ? nrm.x : (nrm.y != 0 ? nrm.y : nrm.z);
     own_[f] = lead < 0;
+    // Edge-on (cell_clip.h): only when k is within rounding of 0, then decided exactly on
+    // the face's points (a warped quad is never edge-on: no plane holds its points).
+    edge_[f] = false;
+    const double scale = frame_.ortho()
+                             ? length(fwd)
+                             : length(eye - planes.o[f]) + length(eye) + length(planes.o[f]);
+    if (std::fabs(k_[f]) > kSideFilter * nlen_[f] * scale) continue;
+    const Vec3 q0 = mesh_.points[p[lf.v[f][0]]], q1 = mesh_.points[p[lf.v[f][1]]],
+               q2 = mesh_.points[p[lf.v[f][2]]];
+    const bool quad = lf.size[f] == 4;
+    const Vec3 q3 = quad ? mesh_.points[p[lf.v[f][3]]] : q0;
+    if (frame_.ortho()) {
+      if (orient_direction(q0, q1, q2, fwd) != 0 || (quad && orient_direction(q0, q2, q3, fwd) != 0))
+        continue;
+    } else if (orient3d(q0, q1, q2, eye) != 0 || (quad && orient3d(q0, q2, q3, eye) != 0)) {
+      continue;
+    }
+    edge_[f] = true;
+    k_[f] = 0;
+    qa_[f] = q0, qb_[f] = q1, qc_[f] = q2;
+    // The exact normal's first non-zero component, from the points (the Newell normal's
+    // components of a slanted plane like x = y carry rounding where they should be 0).
+    const int sx = orient2d(q0.y, q0.z, q1.y, q1.z, q2.y, q2.z);
+    const int sy = orient2d(q0.z, q0.x, q1.z, q1.x, q2.z, q2.x);
+    const int sz = orient2d(q0.x, q0.y, q1.x, q1.y, q2.x, q2.y);
+    own_[f] = (sx != 0 ? sx : (sy != 0 ? sy : sz)) < 0;
   }
 }
 

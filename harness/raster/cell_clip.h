@@ -68,6 +68,19 @@ class CellClipper {
   Vec3 o_[6];     // a point of each face plane (its canonical first vertex)
   double k_[6];   // perspective: -n.(eye - o); orthographic: n.forward
   bool own_[6];   // a ray lying in the face plane counts as inside (see setup)
+  // Edge-on faces: the eye lies exactly in the plane of the face's points (orthographic:
+  // the view direction is parallel to it). Rays can lie in such a plane, and whether they
+  // do must not depend on rounding: n.(eye - o) and n.D of a plane like x = y are rounding
+  // noise, not zero, so cells on either side would get the ray at random (a slanted
+  // plane's cells on one side here, on the other side there). For these faces k is 0 and
+  // the side of each ray comes from exact predicates on the face's points qa, qb, qc (an
+  // outward loop), own_ from the exact normal's sign.
+  bool edge_[6];
+  Vec3 qa_[6], qb_[6], qc_[6];
+  double nlen_[6];  // |n|
+  // The side of sample vector x (D or O) relative to edge-on face k: the sign of n.D
+  // (perspective) or of n.(O - o) (orthographic), exact.
+  int edge_side(int k, const Vec3& x) const;
 };
 
 template <class Emit>
@@ -81,7 +94,11 @@ void CellClipper::scan(const SampleRect& clip, Emit&& emit) const {
       double lo = 0, hi = std::numeric_limits<double>::infinity();
       for (int k = 0; k < nf_ && lo < hi; ++k) {
         double num, den;
-        if (ortho) {
+        if (edge_[k]) {  // exact side; a ray in the plane gets num == den == 0
+          const int side = edge_side(k, x);
+          num = ortho ? -side : 0.0;
+          den = ortho ? 0.0 : side;
+        } else if (ortho) {
           num = -dot(n_[k], x - o_[k]);
           den = k_[k];
         } else {
