@@ -360,7 +360,10 @@ class BspXmpvoOrderer final : public Orderer {
       bm.po[0] = x[0];
       for (int j = 0; j < 3; ++j) {
         const Vec3 a = x[j], b2 = x[(j + 1) % 3];
-        const Vec3 n = g_.ortho ? cross(g_.dir, b2 - a) : cross(a - g_.eye, b2 - g_.eye);
+        // (a - eye) x (b - a), not (a - eye) x (b - eye): the same normal, but two long
+        // nearly parallel vectors of a far eye cancel to a few digits (the cull below then
+        // separated boxes the beam meets); one long and one short vector keep full precision.
+        const Vec3 n = g_.ortho ? cross(g_.dir, b2 - a) : cross(a - g_.eye, b2 - a);
         bm.pn[j + 1] = n * static_cast<double>(bm.edge_side[j]);
         bm.po[j + 1] = g_.ortho ? a : g_.eye;
       }
