@@ -1,5 +1,8 @@
 #include "harness/raster/cell_clip.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -81,6 +84,8 @@ namespace {
 // far below any real angle: beyond it the double sign is the exact one.
 constexpr double kSideFilter = 1e-12;
 int sign_of(double v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
+double max_abs(Vec3 v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+double sum_abs(Vec3 v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
 }  // namespace
 
 int CellClipper::edge_side(int k, const Vec3& x) const {
@@ -102,11 +107,11 @@ void CellClipper::setup(int32_t c) {
   const int32_t* p = mesh_.cell_points(c);
   const LocalFaces& lf = cell_local_faces(mesh_.types[c]);
   const Vec3 eye = frame_.eye(), fwd = frame_.forward();
+  any_edge_ = false;
   for (int f = 0; f < nf_; ++f) {
     const Vec3 nrm = planes.n[f];
     n_[f] = nrm;
     o_[f] = planes.o[f];
-    nlen_[f] = length(nrm);
     k_[f] = frame_.ortho() ? dot(nrm, fwd) : -dot(nrm, eye - planes.o[f]);
     // A ray lying in the plane runs along the boundary of the cells on both sides; it
     // counts as inside the one whose outward normal's first non-zero component is
@@ -116,11 +121,11 @@ void CellClipper::setup(int32_t c) {
     own_[f] = lead < 0;
     // Edge-on (cell_clip.h): only when k is within rounding of 0, then decided exactly on
     // the face's points (a warped quad is never edge-on: no plane holds its points).
+    // (Max-norm bounds, no square roots: |n.v| <= |n|_1 |v|_inf; this runs for every face.)
     edge_[f] = false;
-    const double scale = frame_.ortho()
-                             ? length(fwd)
-                             : length(eye - planes.o[f]) + length(eye) + length(planes.o[f]);
-    if (std::fabs(k_[f]) > kSideFilter * nlen_[f] * scale) continue;
+    const double scale = frame_.ortho() ? max_abs(fwd)
+                                        : max_abs(eye - planes.o[f]) + max_abs(eye) + max_abs(planes.o[f]);
+    if (std::fabs(k_[f]) > kSideFilter * sum_abs(nrm) * scale) continue;
     const Vec3 q0 = mesh_.points[p[lf.v[f][0]]], q1 = mesh_.points[p[lf.v[f][1]]],
                q2 = mesh_.points[p[lf.v[f][2]]];
     const bool quad = lf.size[f] == 4;
@@ -131,8 +136,9 @@ void CellClipper::setup(int32_t c) {
     } else if (orient3d(q0, q1, q2, eye) != 0 || (quad && orient3d(q0, q2, q3, eye) != 0)) {
       continue;
     }
-    edge_[f] = true;
+    edge_[f] = any_edge_ = true;
     k_[f] = 0;
+    nlen_[f] = length(nrm);
     qa_[f] = q0, qb_[f] = q1, qc_[f] = q2;
     // The exact normal's first non-zero component, from the points (the Newell normal's
     // components of a slanted plane like x = y carry rounding where they should be 0).

@@ -76,6 +76,7 @@ class CellClipper {
   // the side of each ray comes from exact predicates on the face's points qa, qb, qc (an
   // outward loop), own_ from the exact normal's sign.
   bool edge_[6];
+  bool any_edge_ = false;  // some edge_[k] (almost never: the scan's common path skips them)
   Vec3 qa_[6], qb_[6], qc_[6];
   double nlen_[6];  // |n|
   // The side of sample vector x (D or O) relative to edge-on face k: the sign of n.D
@@ -94,7 +95,7 @@ void CellClipper::scan(const SampleRect& clip, Emit&& emit) const {
       double lo = 0, hi = std::numeric_limits<double>::infinity();
       for (int k = 0; k < nf_ && lo < hi; ++k) {
         double num, den;
-        if (edge_[k]) {  // exact side; a ray in the plane gets num == den == 0
+        if (any_edge_ && edge_[k]) {  // exact side; a ray in the plane gets num == den == 0
           const int side = edge_side(k, x);
           num = ortho ? -side : 0.0;
           den = ortho ? 0.0 : side;
