@@ -50,7 +50,8 @@ helix = [{"name": "helix", "set": {"cells": 2000}, "label": "helix"}]
 d1 = os.path.join(out, "one")
 r = run(["run", suite("one", helix, 1), "-o", os.path.join(d1, "results.jsonl")])
 assert r.returncode == 0
-assert len(lines(os.path.join(d1, "results.jsonl"))) == 3  # context line and two records
+kinds = [json.loads(l).get("type", "record") for l in lines(os.path.join(d1, "results.jsonl"))]
+assert sorted(kinds) == ["context", "plan", "record", "record"], kinds  # the run's context and plan, two records
 render = json.load(open(os.path.join(d1, "vtk", "helix-160x120", "render.json")))
 assert [v["view_index"] for v in render["views"]] == [3, 8] and "Xvfb" in render["x_server"], render["x_server"]
 assert json.load(open(os.path.join(d1, "vtk", "status-one.json")))["state"] == "done"
@@ -86,7 +87,8 @@ os.kill(p.pid, signal.SIGTERM)
 err = p.communicate(timeout=300)[1]
 print(err[-3000:])
 assert p.returncode == 143, p.returncode
-assert len(lines(os.path.join(d3, "results.jsonl"))) == 5  # context and four records: all of them
+kinds = [json.loads(l).get("type", "record") for l in lines(os.path.join(d3, "results.jsonl"))]
+assert kinds.count("record") == 4 and kinds.count("context") == 1, kinds  # four records: all of them
 assert os.path.exists(first) and not os.path.exists(os.path.join(d3, "vtk", "helix3k-160x120"))
 assert not glob.glob(os.path.join(d3, "vtk", "*.partial")), os.listdir(os.path.join(d3, "vtk"))
 assert json.load(open(os.path.join(d3, "vtk", "status-two.json")))["state"] == "interrupted"
