@@ -226,15 +226,28 @@ void check_ascii_cells(const std::string& path, const std::string& name, std::st
   check_cell_count(path, name, n, cells);
 }
 
+// An image's point or cell array must hold one tuple per point or cell of its Piece's
+// extent: VTK read 10 ASCII values into 8 points and ignored the rest, silently.
+void check_image_values(const std::string& path, const std::string& element, const std::string& parent,
+                        double held, double want, const char* what) {
+  if (held != want)
+    throw InputError(path, element, "holds " + std::to_string(uint64_t(held)) + " " + what + ", but its Piece's extent has " +
+                                        std::to_string(uint64_t(want)) + " (" +
+                                        (parent == "PointData" ? "points" : "cells") + " times components)");
+}
+
 struct AppendedArray {
   std::string element, name;  // element as errors name it; a Cells array's name
   uint64_t offset, value_bytes;
   int64_t cells;  // for "offsets" and "types": the Piece's NumberOfCells; else -1
+  std::string parent;  // the tag it sits in
+  double image_values;  // an image's point or cell array: the values its extent needs; else -1
 };
 
 // Arrays in <AppendedData> (which starts at byte `at`): each one's header read at its offset
 // past the '_', raw or base64 as the section's encoding says, checked against the bytes
-// after it and, for counted Cells arrays, NumberOfCells.
+// after it and, for counted Cells arrays, NumberOfCells; an image's point and cell arrays
+// against the values its extent needs, as inline ones.
 void check_appended(const std::string& path, uint64_t at, const BinaryLayout& layout,
                     const std::vector<AppendedArray>& arrays) {
   const uint64_t size = file_size(path);
@@ -262,6 +275,9 @@ void check_appended(const std::string& path, uint64_t at, const BinaryLayout& la
     uint64_t bytes = 0;
     if (a.cells >= 0 && data_bytes(head, layout, bytes))
       check_cell_count(path, a.name, bytes / a.value_bytes, uint64_t(a.cells));
+    if (a.image_values >= 0 && a.value_bytes > 0 && data_bytes(head, layout, bytes))
+      check_image_values(path, a.element, a.parent, double(bytes / a.value_bytes), a.image_values,
+                         "values (by its header)");
   }
 }
 
@@ -280,15 +296,6 @@ double extent_points(const std::string& path, const std::string& element, const 
   return n;
 }
 
-// An image's point or cell array must hold one tuple per point or cell of its Piece's
-// extent: VTK read 10 ASCII values into 8 points and ignored the rest, silently.
-void check_image_values(const std::string& path, const std::string& element, const std::string& parent,
-                        double held, double want, const char* what) {
-  if (held != want)
-    throw InputError(path, element, "holds " + std::to_string(uint64_t(held)) + " " + what + ", but its Piece's extent has " +
-                                        std::to_string(uint64_t(want)) + " (" +
-                                        (parent == "PointData" ? "points" : "cells") + " times components)");
-}
 }  // namespace
 
 void prescan_vtk_xml(const std::string& path, const std::string& expected_type) {
@@ -392,7 +399,8 @@ void prescan_vtk_xml(const std::string& path, const std::string& expected_type) 
       } else if (f->second == "appended" && tag.attrs.count("offset")) {
         int64_t offset = 0;
         if (parse_int(tag.attrs.at("offset"), offset) && offset >= 0)
-          appended.push_back({element, name, uint64_t(offset), each, counted ? piece_cells : -1});
+          appended.push_back({element, name, uint64_t(offset), each, counted ? piece_cells : -1, parent,
+                              image_values(parent, comps)});
       }
     }
     if (tag.name == "ImageData" || tag.name == "Piece") {

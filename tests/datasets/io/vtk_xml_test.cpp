@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <zlib.h>
+
 #include "datasets/io/vtk_io.h"
 #include "tests/datasets/io/io_test_util.h"
 
@@ -227,4 +229,53 @@ TEST(DatasetIO, VtiArraysAndPieceMatchTheExtent) {
   EXPECT_TRUE(contains(e, "cells.vti: CellData DataArray 'v': holds 2 values, but its Piece's extent has 1")) << e;
   e = input_error([&] { load_input(vti("piece.vti", "0 1 0 1 0 2", "1 2 3 4 5 6 7 8")); });
   EXPECT_TRUE(contains(e, "piece.vti: Piece Extent: '0 1 0 1 0 2' is not the WholeExtent '0 1 0 1 0 1'")) << e;
+}
+
+namespace {
+// A .vti over WholeExtent 0 1 0 1 0 1 (8 points) whose point array 'v' (Float32) is appended
+// with `values` values, raw or base64, zlib-compressed (one block) or not.
+std::string appended_vti(size_t values, bool base64_encoded, bool compressed) {
+  std::string data;
+  for (size_t i = 0; i < values; ++i) {
+    const float f = float(i);
+    data.append(reinterpret_cast<const char*>(&f), sizeof f);
+  }
+  std::string head = le(data.size(), 4);
+  if (compressed) {
+    std::string z(compressBound(uLong(data.size())), '\0');
+    uLongf zn = uLongf(z.size());
+    EXPECT_EQ(compress2(reinterpret_cast<Bytef*>(z.data()), &zn, reinterpret_cast<const Bytef*>(data.data()),
+                        uLong(data.size()), 6), Z_OK);
+    z.resize(zn);
+    head = le(1, 4) + le(32768, 4) + le(data.size(), 4) + le(z.size(), 4);
+    data = z;
+  }
+  return std::string("<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+                     "header_type=\"UInt32\"") + (compressed ? " compressor=\"vtkZLibDataCompressor\"" : "") +
+         ">\n<ImageData WholeExtent=\"0 1 0 1 0 1\" Origin=\"0 0 0\" Spacing=\"1 1 1\">\n"
+         "<Piece Extent=\"0 1 0 1 0 1\">\n<PointData Scalars=\"v\">\n"
+         "<DataArray type=\"Float32\" Name=\"v\" format=\"appended\" offset=\"0\"/>\n</PointData>\n</Piece>\n"
+         "</ImageData>\n<AppendedData encoding=\"" + (base64_encoded ? "base64" : "raw") + "\">\n_" +
+         (base64_encoded ? base64(head) + base64(data) : head + data) + "\n</AppendedData>\n</VTKFile>\n";
+}
+}  // namespace
+
+// An appended image array is counted against the extent as an inline one: VTK read 10
+// appended values into 8 points silently (and 6 with "Error reading extent", naming no array).
+TEST(DatasetIO, VtiAppendedArraysMatchTheExtent) {
+  TempDir dir;
+  for (const bool b64 : {false, true})
+    for (const bool z : {false, true}) {
+      const std::string stem = std::string(b64 ? "b64" : "raw") + (z ? "_z" : "");
+      write_text(dir.file(stem + "_8.vti"), appended_vti(8, b64, z));
+      EXPECT_EQ(load_input(dir.file(stem + "_8.vti")).grid().num_voxels(), 8u) << stem;
+      for (const size_t n : {10, 6}) {
+        const std::string f = stem + "_" + std::to_string(n) + ".vti";
+        write_text(dir.file(f), appended_vti(n, b64, z));
+        const std::string e = input_error([&] { load_input(dir.file(f)); });
+        EXPECT_TRUE(contains(e, f + ": PointData DataArray 'v': holds " + std::to_string(n) +
+                                    " values (by its header), but its Piece's extent has 8 (points times components)"))
+            << e;
+      }
+    }
 }
