@@ -86,3 +86,28 @@ TEST(DatasetIO, PolygonsAreFanSplitOnlyInsideThemselves) {
     EXPECT_EQ(load_input(dir.file(std::string("tilted") + ext)).soup().tris.size(), 2u) << ext;
   }
 }
+
+// Whether a fan triangle faces with the polygon is decided exactly: a quad whose point 1 lies
+// within rounding of the diagonal (0, 2) was judged in doubles either way, a concave one
+// (point 1 a hair inside the diagonal) fanned outside itself and a convex one refused.
+TEST(DatasetIO, PolygonConvexityIsDecidedExactly) {
+  TempDir dir;
+  const auto quad = [&](const char* name, const char* pts) {
+    write_text(dir.file(name), std::string("OFF\n4 1 0\n") + pts + "4 0 1 2 3\n");
+    return dir.file(name);
+  };
+  // Exactly (rationals): triangle (0, 1, 2) faces against the polygon; in doubles it faced with it.
+  const std::string e = input_error([&] {
+    load_input(quad("concave.off",
+                    "0.29607267308315155 0.4997999222368016 0\n1.2220872083243697 1.7339979922452624 0\n"
+                    "1.3253456548759963 1.8716215074235552 0\n2.9740994358560524 0.7827003757293756 0\n"));
+  });
+  EXPECT_TRUE(contains(e, "concave.off: face 0 (line 7): polygon of 4 points is not convex: its fan triangle "
+                          "(corners 0, 1, 2: points 0, 1, 2) faces against the polygon"))
+      << e;
+  // Exactly: both triangles face with the polygon; in doubles (0, 1, 2) faced against it.
+  const Scene convex = load_input(quad("convex.off",
+                                       "0.6630161884986934 0.38970192767534384 0\n1.284118264496736 1.403366465747911 0\n"
+                                       "1.6310630237160113 1.9695948083687032 0\n0.24309173409213014 1.1203681914199144 0\n"));
+  EXPECT_EQ(convex.soup().tris.size(), 2u);
+}
