@@ -142,6 +142,16 @@ class Doc:
         """The planned jobs without a record that fall in `scope` (vobtables.plan.in_scope)."""
         return [j for j in self.missing if _plan.in_scope(j, scope, self.row_label)]
 
+    def row_labels(self, where=None):
+        """Row labels of the records and the planned jobs (those passing `where`), records' first:
+        a claim over all rows lists them in its scope, a row planned but never reached included."""
+        out = []
+        for r in self.records + self.planned:
+            row = self.row_label(r)
+            if row not in out and (where is None or where(row)):
+                out.append(row)
+        return out
+
     def missing_rows(self):
         """Row labels of planned data sets with no record at all, in plan order."""
         have = {self.row_label(r) for r in self.records}

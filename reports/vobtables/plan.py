@@ -5,6 +5,7 @@ view and threads of every job of the suite. A run stopped early (Ctrl-C, a kille
 leaves jobs of the plan without a record, even whole data sets or suites it never reached;
 `missing_jobs` finds them, so a page says so and a claim over them is "not measured" instead
 of being judged on the rest."""
+import re
 
 
 def latest_plans(plans, reproduction=None):
@@ -94,11 +95,35 @@ def _as_set(v):
     return {v}
 
 
+def _key_size(j):
+    """The suite's size entry "WxH" in a job's key: with fitted windows ("fit") the job's w and h
+    are its view's window, the key keeps the entry the tables name."""
+    for part in str(j.get("key") or "").split("|"):
+        if re.fullmatch(r"\d+x\d+", part):
+            return part
+    return None
+
+
+def _spec_parts(spec):
+    """'name:k=v,k2=v2' -> ('name', {('k', 'v'), ('k2', 'v2')})."""
+    name, _, params = str(spec).partition(":")
+    return name, {tuple(p.split("=", 1)) for p in params.split(",") if "=" in p}
+
+
+def _spec_covers(scope_spec, job_spec):
+    """An orderer in a scope covers a job's spec of that orderer with at least its parameters
+    ('havs:k=2' covers 'havs:analyze=false,k=2'; 'havs' every havs job), in any order."""
+    (a, pa), (b, pb) = _spec_parts(scope_spec), _spec_parts(job_spec)
+    return a == b and pa <= pb
+
+
 def in_scope(j, scope, row_of=job_row):
     """Whether a planned job falls in a claim's scope: a dict of "suite" (REPRO/SUITE or
-    SUITE), "row" (or "dataset"), "orderer" (an orderer name or spec: orderer jobs only),
-    "probe" (a probe name: probe jobs only), "view", "size" ("WxH") and "threads", each one
-    value or a collection; a key left out covers everything. None: the whole reproduction."""
+    SUITE), "row" (or "dataset"), "orderer" (an orderer name or spec; a spec covers the jobs of
+    that orderer with at least its parameters: orderer jobs only), "probe" (a probe name: probe
+    jobs only), "view", "size" ("WxH": the window or, fitted, the suite's entry) and "threads",
+    each one value or a collection; a key left out covers everything. None: the whole
+    reproduction."""
     if scope is None:
         return True
     suites = _as_set(scope.get("suite"))
@@ -115,13 +140,13 @@ def in_scope(j, scope, row_of=job_row):
     ords = _as_set(scope.get("orderer"))
     if ords is not None:
         spec = j.get("algorithm") or ""
-        if spec not in ords and spec.split(":")[0] not in ords:
+        if spec not in ords and not any(_spec_covers(o, spec) for o in ords):
             return False
     views = _as_set(scope.get("view"))
     if views is not None and j.get("view_index") not in views:
         return False
     sizes = _as_set(scope.get("size"))
-    if sizes is not None and f"{j.get('w')}x{j.get('h')}" not in sizes:
+    if sizes is not None and f"{j.get('w')}x{j.get('h')}" not in sizes and _key_size(j) not in sizes:
         return False
     threads = _as_set(scope.get("threads"))
     if threads is not None and j.get("threads") not in threads:
