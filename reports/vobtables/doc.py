@@ -111,6 +111,11 @@ def _md(text):
     return str(text).replace("|", "\\|")
 
 
+def _same_data_set(r):
+    """What a record and a planned job of one data set share: the suite's row and the recipe."""
+    return (r.get("row"), json.dumps(r.get("dataset_spec"), sort_keys=True))
+
+
 class Doc:
     def __init__(self, name, title, intro="", context=None, out_dir="."):
         self.name, self.title, self.intro, self.context = name, title, intro, context
@@ -135,8 +140,24 @@ class Doc:
             try:
                 return self.row_of(r)
             except (KeyError, TypeError, ValueError):
-                pass
+                # A planned job lacks what the script's label reads (cook's gap rows read n): the
+                # label of a record of the same data set, so a claim scoped to that row covers it.
+                same = self._record_labels().get(_same_data_set(r))
+                if same is not None:
+                    return same
         return _plan.job_row(r)
+
+    def _record_labels(self):
+        """{data set of a record (_same_data_set): its label}, once per set of records."""
+        if getattr(self, "_labels_of", (None,))[0] is not self.records:
+            labels = {}
+            for rec in self.records:
+                try:
+                    labels.setdefault(_same_data_set(rec), self.row_of(rec))
+                except (KeyError, TypeError, ValueError):
+                    pass
+            self._labels_of = (self.records, labels)
+        return self._labels_of[1]
 
     def missing_in(self, scope=None):
         """The planned jobs without a record that fall in `scope` (vobtables.plan.in_scope)."""
