@@ -37,7 +37,7 @@ OFF_CYCLES = {"avoidable_fragments": 2, "excess": 0, "unbounded": False, "cycle_
 
 def verdict(records):
     doc = Doc("t", "t")
-    krishnan._gl_rule_claim(doc, records, "claim", "paper")
+    krishnan._gl_rule_claim(doc, records, "claim", "paper", "table1-gl-rule")
     return doc.claims[0]["holds"], doc.claims[0]["ours"], doc.claims[0]["criterion"]
 
 
