@@ -268,7 +268,7 @@ def table34(records, paper, doc):
               + (f" on {len(have)} of {len(rates)} meshes" if lacking else ""), cps["printed"],
               "1 <= ours <= 6 for every mesh (million cells per second)"
               + (f"; not measured: {'; '.join(lacking)}" if lacking else ""),
-              None if not have or lacking else all(1e6 <= x <= 6e6 for x in have))
+              None if not have or lacking else all(1e6 <= x <= 6e6 for x in have), scope={"orderer": "havs:k=2"})
     paper_rows(doc, paper, "table3", ["cells", "k2_fps", "k2_cells_s", "k6_fps", "k6_cells_s"],
                ["cells", "k=2 fps", "k=2 cells/s", "k=6 fps", "k=6 cells/s"])
     paper_rows(doc, paper, "table4", ["cpu_ms", "gpu_ms", "total_ms", "fps", "cells_s"],
@@ -364,7 +364,7 @@ def k_tradeoff(records, paper, doc):
               "smallest, on every mesh (ours: largest increase, % of covered pixels)", worst,
               "Table 2: fewer pixels need k > 6 than k > 2 on every mesh",
               "ours <= 0" + (f"; not measured: {reason}" if reason else ""),
-              None if worst is None else worst <= 0)
+              None if worst is None else worst <= 0, scope={"orderer": "havs"})
 
 
 # --- havs-gl ----------------------------------------------------------------------------
@@ -462,11 +462,11 @@ def gl(records, paper, doc):
     renderer = m.get(ok[0], "result.gl_renderer") if ok else "the GL renderer"
     doc.claim(f"our check, not a claim of the paper: no race-changed pixel on {renderer} (ours: race-changed pixels over {tot_cov} covered "
               "pixel-frames; the paper's Fig. 5 shows races on its GPU)",
-              tot_race if ok else None, None, "ours == 0", (tot_race == 0) if ok else None)
+              tot_race if ok else None, None, "ours == 0", (tot_race == 0) if ok else None, scope={"probe": "havs-gl"})
     share = 100 * tot_ser / tot_cov if ok and tot_cov else None
     doc.claim("our check, not a claim of the paper: serialized GL k-buffer equals the software k-buffer at 8 bits on at least 99% of the covered "
               f"pixels (ours: % differing, {tot_ser} of {tot_cov})", share, None, "ours <= 1",
-              None if not ok else tot_ser * 100 <= tot_cov)
+              None if not ok else tot_ser * 100 <= tot_cov, scope={"probe": "havs-gl"})
 
 
 TABLES = {"havs-table1": table1, "havs-table2": table2, "havs-table3-4": table34,
