@@ -28,7 +28,7 @@ Command add_report_command(CLI::App& app) {
     if (results->size() == 1 && fs::is_directory(results->front(), ec)) {
       if (!out->empty()) throw InputError("--output", "'" + *out + "'", "does not apply to a results folder (tables go into it)");
       const std::string dir = results->front();
-      check_report_inputs({(fs::path(dir) / "results.jsonl").string()});
+      check_report_inputs({(fs::path(dir) / "results.jsonl").string()}, /*plans_suffice=*/true);
       return report_folder(dir, resource_path("datasets/suites")) == 0 ? 0 : 2;
     }
     for (const auto& r : *results)

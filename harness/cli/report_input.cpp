@@ -95,8 +95,8 @@ std::string report_record_problem(const nlohmann::json& r) {
   return {};
 }
 
-void check_report_inputs(const std::vector<std::string>& paths) {
-  size_t records = 0;
+void check_report_inputs(const std::vector<std::string>& paths, bool plans_suffice) {
+  size_t records = 0, plans = 0;
   for (const auto& path : paths) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path, "results", "cannot be read");
@@ -125,6 +125,7 @@ void check_report_inputs(const std::vector<std::string>& paths) {
       if (is_plan_line(r)) {  // a suite's plan (job_plan.h): the jobs it meant to measure
         if (!r.contains("suite") || !r["suite"].is_string() || !r.contains("jobs") || !r["jobs"].is_array())
           throw InputError(path, where, "plan line needs a string 'suite' and an array 'jobs'");
+        ++plans;
         continue;
       }
       const std::string problem = report_record_problem(r);
@@ -132,7 +133,7 @@ void check_report_inputs(const std::vector<std::string>& paths) {
       ++records;
     }
   }
-  if (records == 0)
+  if (records == 0 && !(plans_suffice && plans > 0))
     throw InputError(paths.empty() ? std::string("results") : paths.back(), "results",
                      "holds no records");
 }

@@ -11,8 +11,9 @@
 namespace vob {
 
 // InputError(path, "line N", reason) for the first bad record; also when no file holds a
-// record.
-void check_report_inputs(const std::vector<std::string>& paths);
+// record, unless `plans_suffice` and a file holds a plan line (a results folder whose run
+// stopped before its first record still gets its pages: every planned job missing).
+void check_report_inputs(const std::vector<std::string>& paths, bool plans_suffice = false);
 
 // The reason a record cannot be reported ("field 'total.median' must be a number"), or
 // empty when it can.

@@ -84,6 +84,20 @@ TEST(ReportInput, ContextLinesAreAcceptedButAreNoRecords) {
   std::filesystem::remove(path);
 }
 
+// A run stopped before its first record leaves plan lines alone: a results folder's pages say
+// every planned job is missing (plans_suffice); results files without a record stay refused.
+TEST(ReportInput, PlanLinesSufficeOnlyWhenAsked) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("vob_report_plan_" + std::to_string(getpid()) + ".jsonl");
+  std::ofstream(path) << R"({"key": "plan|r1|a/b", "type": "plan", "run_id": "r1", "suite": "a/b", "jobs": []})"
+                      << "\n";
+  EXPECT_NO_THROW(check_report_inputs({path.string()}, /*plans_suffice=*/true));
+  EXPECT_THROW(check_report_inputs({path.string()}), InputError);
+  std::ofstream(path) << R"({"key": "context|r1", "type": "context", "run_id": "r1", "context": {}})" << "\n";
+  EXPECT_THROW(check_report_inputs({path.string()}, /*plans_suffice=*/true), InputError);  // no plan either
+  std::filesystem::remove(path);
+}
+
 // A run killed mid-write leaves a last line without its newline: the report of its
 // finished records must still be possible (run, merge and the table scripts skip it too);
 // the same text with its newline, or anywhere else, stays bad input.
