@@ -20,6 +20,7 @@ sys.path.insert(0, HERE)
 from vobtables import Doc, load_records  # noqa: E402
 from vobtables.summary import write_summary  # noqa: E402
 from vobtables.conditions import conditions  # noqa: E402
+from vobtables.unmeasured import unmeasured  # noqa: E402
 import signal  # noqa: E402
 
 # Ctrl-C during `vobench reproduce` stops the script as it stops vobench, without a traceback.
@@ -38,6 +39,17 @@ def load_paper(paper):
         with open(base + ".json") as f:
             numbers = json.load(f)
     return mod, numbers
+
+
+def paper_of(reproduction):
+    """The paper whose script has a table for `reproduction` (a plan line does not name it), or
+    None: a reproduction without a paper (the generic report's)."""
+    for f in sorted(os.listdir(os.path.join(HERE, "papers"))):
+        if f.endswith(".py") and not f.startswith("_"):
+            mod, _ = load_paper(f[:-3])
+            if reproduction in getattr(mod, "TABLES", {}):
+                return f[:-3]
+    return None
 
 
 def main():
@@ -70,8 +82,24 @@ def main():
         build(rs, numbers, doc)
         print(f"tables: wrote {doc.write()}", file=sys.stderr)
         built.append((paper, doc))
+    # A reproduction planned but without a record (stopped before its first): a page saying so.
+    for name in sorted({p.get("reproduction") for p in plans if p.get("reproduction")} - {n for n, _ in by_repro}):
+        if args.only and name != args.only:
+            continue
+        paper = paper_of(name)
+        if paper is None:
+            print(f"tables: note: {name}: planned, no record, no paper script (the generic report needs records)",
+                  file=sys.stderr)
+            continue
+        doc = Doc(name, name, out_dir=args.dir)
+        doc.row_of = getattr(load_paper(paper)[0], "ROW_OF", None)
+        doc.set_plan([], plans, name)
+        unmeasured(doc, paper)
+        print(f"tables: wrote {doc.write()} (no record: every planned job missing)", file=sys.stderr)
+        built.append((paper, doc))
     if not args.only and len(built) > 1:
-        scale = next((r.get("scale") for rs in by_repro.values() for r in rs if r.get("scale")), "default")
+        scale = next((r.get("scale") for rs in by_repro.values() for r in rs if r.get("scale")), None) or \
+            next((p.get("scale") for p in plans if p.get("scale")), "default")
         print(f"tables: wrote {write_summary(built, args.dir, scale)}", file=sys.stderr)
     if args.only and not built:
         sys.exit(f"tables: {path}: no records of reproduction '{args.only}' with a paper")

@@ -193,6 +193,8 @@ class Doc:
         if not self.missing:
             return
         text = _plan.describe(self.missing, self.planned, self.row_label)
+        if not self.records:  # stopped before its first record
+            text = f"0 of {len(self.planned)} planned jobs have a record. " + text
         self.conditions = (self.conditions.rstrip() + " " if self.conditions else "") + (
             "Incomplete: " + text + " Claims over them are not measured.")
         rows = self.missing_rows()

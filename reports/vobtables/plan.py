@@ -49,7 +49,7 @@ def job_unit(j):
     return str(j.get("algorithm") or (f"probe {j['probe']}" if j.get("probe") else "?"))
 
 
-def _ranges(nums):
+def ranges(nums):
     """[0, 1, 2, 5, 7, 8] -> '0-2, 5, 7-8'."""
     nums, out = sorted(set(nums)), []
     for n in nums:
@@ -79,7 +79,7 @@ def describe(missing, planned=None, row_of=job_row):
         of = per_row.get(row)
         head = (f"all {len(js)} jobs" if of == len(js) else f"{len(js)} of {of} jobs") if of else f"{len(js)} jobs"
         what = ", ".join(units[:4]) + (f" and {len(units) - 4} more" if len(units) > 4 else "")
-        parts.append(f"{row} ({head}: {what}" + (f"; views {_ranges(views)}" if views else "")
+        parts.append(f"{row} ({head}: {what}" + (f"; views {ranges(views)}" if views else "")
                      + (f"; {', '.join(sizes)}" if len(sizes) > 1 else "") + ")")
     total = f" of {len(planned)}" if planned else ""
     shown = parts[:8] + ([f"{len(parts) - 8} more data sets"] if len(parts) > 8 else [])
@@ -95,7 +95,7 @@ def _as_set(v):
     return {v}
 
 
-def _key_size(j):
+def key_size(j):
     """The suite's size entry "WxH" in a job's key: with fitted windows ("fit") the job's w and h
     are its view's window, the key keeps the entry the tables name."""
     for part in str(j.get("key") or "").split("|"):
@@ -146,7 +146,7 @@ def in_scope(j, scope, row_of=job_row):
     if views is not None and j.get("view_index") not in views:
         return False
     sizes = _as_set(scope.get("size"))
-    if sizes is not None and f"{j.get('w')}x{j.get('h')}" not in sizes and _key_size(j) not in sizes:
+    if sizes is not None and f"{j.get('w')}x{j.get('h')}" not in sizes and key_size(j) not in sizes:
         return False
     threads = _as_set(scope.get("threads"))
     if threads is not None and j.get("threads") not in threads:
