@@ -52,12 +52,19 @@ def verdicts(claims, words):
     return out
 
 
+_complete = {}
+
+
 def check_drop(C, reports, work, name, complete, drop, gone, kept, why):
     """The complete records judge every claim of `gone` and `kept`; with the records `drop` picks
     taken out (their plan kept), each claim of `gone` reads "not measured" and each of `kept`
     keeps its verdict. `gone` and `kept`: words of claims (see verdicts)."""
     plans = plan_lines(complete)
-    rc, err, full = page(reports, os.path.join(work, "complete"), name, plans + complete)
+    # The complete page once per set of records (a check drops several jobs from one set).
+    cache = (name, json.dumps(complete, sort_keys=True))
+    if cache not in _complete:
+        _complete[cache] = page(reports, os.path.join(work, "complete"), name, plans + complete)
+    rc, err, full = _complete[cache]
     C.check(full is not None, f"{name}: complete records: build_tables.py exited {rc}: {err[-1500:]}")
     rest = [r for r in complete if not drop(r)]
     C.check(0 < len(complete) - len(rest) < len(complete), f"{name}, {why}: the drop takes {len(complete) - len(rest)} "
